@@ -1,0 +1,28 @@
+#pragma once
+// Scene JSON (spec/scene-and-cli.md) to Scene and back. Every error is an InputError naming the
+// file and the line:column (syntax) or the field path such as objects[2].radius (meaning).
+#include <string>
+#include <vector>
+
+#include "scene.h"
+
+namespace gloss {
+
+// Reads, validates and resolves (presets, meshes, teapot) a scene file. Warnings (such as
+// dropped degenerate triangles) are appended to *warnings when given.
+Scene load_scene(const std::string& path, std::vector<std::string>* warnings = nullptr);
+
+// The same from text; path is used for messages and relative file resolution.
+Scene parse_scene(const std::string& text, const std::string& path,
+                  std::vector<std::string>* warnings = nullptr);
+
+// Checks everything a render needs (sizes, spp, camera) and throws InputError naming the field.
+// load_scene calls it; gloss-cli calls it again after applying its overrides.
+void validate_scene(const Scene& scene);
+
+// The scene as JSON text that parse_scene reads back to an equal scene. save_scene writes it
+// atomically.
+std::string scene_to_json_text(const Scene& scene);
+void save_scene(const Scene& scene, const std::string& path);
+
+}  // namespace gloss

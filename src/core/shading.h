@@ -1,0 +1,92 @@
+#pragma once
+// The shading contract of spec/shading.md as functions over a scalar type T (float for the
+// renderer, double for the reference path). Every renderer path calls these; none re-derives them.
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "render_settings.h"
+
+namespace gloss {
+
+// What one point light contributes at one surface sample, before material constants and light
+// colours: diffuse = kd * Ld * diffuse_weight, specular = ks * Ls * spec_weight * c^alpha.
+template <class T>
+struct LightFactors {
+  T diffuse_weight = 0;  // ndl * att * vis, 0 when ndl <= 0
+  T spec_weight = 0;     // att * vis, 0 when ndl <= 0
+  T cos_phong = 0;       // R . V = dot(2 ndl n - l, v)
+  T cos_blinn = 0;       // N . H = dot(n, normalize(l + v))
+};
+
+// att = 1 / (c0 + c1 d + c2 d^2); the loader guarantees c >= 0, not all zero.
+template <class T>
+T attenuation(const glm::tvec3<T>& c, T d) {
+  return T(1) / (c.x + d * (c.y + d * c.z));
+}
+
+// Geometry part of the contract for one light at a surface point. p: point, n: unit shading
+// normal, v: unit direction to the eye, both already flipped to the viewer's side (two-sided).
+// vis: 1 or 0 from the shadow test. Returns zero factors for d = 0 or ndl <= 0.
+template <class T>
+LightFactors<T> light_factors(const glm::tvec3<T>& p, const glm::tvec3<T>& n,
+                              const glm::tvec3<T>& v, const glm::tvec3<T>& light_position,
+                              const glm::tvec3<T>& attenuation_coeffs, bool unit_attenuation,
+                              T vis) {
+  LightFactors<T> f;
+  const glm::tvec3<T> to_light = light_position - p;
+  const T d = glm::length(to_light);
+  if (!(d > T(0)) || !std::isfinite(d)) return f;  // light on the surface adds nothing
+  const glm::tvec3<T> l = to_light / d;
+  const T ndl = glm::dot(n, l);
+  if (!(ndl > T(0))) return f;
+  const T att = unit_attenuation ? T(1) : attenuation(attenuation_coeffs, d);
+  f.spec_weight = att * vis;
+  f.diffuse_weight = ndl * f.spec_weight;
+  f.cos_phong = glm::dot(T(2) * ndl * n - l, v);
+  const glm::tvec3<T> h = l + v;
+  const T h_len = glm::length(h);
+  // l = -v leaves no half vector; ndl > 0 there means n . v < 0, and no highlight is defined.
+  f.cos_blinn = h_len > std::numeric_limits<T>::min() * T(4) ? glm::dot(n, h) / h_len : T(0);
+  return f;
+}
+
+// c^alpha for c > 0, else 0 (alpha = 0 gives 1 wherever c > 0). c is clamped to 1 above (it can
+// exceed 1 by rounding only). Results below the normal range flush to 0 in render threads.
+template <class T>
+T specular_power(T c, T alpha) {
+  if (!(c > T(0))) return T(0);
+  if (c >= T(1)) return T(1);
+  if (alpha == T(0)) return T(1);
+  return std::pow(c, alpha);
+}
+
+// Fast approximate c^alpha = exp2(alpha * log2 c) with polynomial log2/exp2 (float only): a
+// speed-for-accuracy knob whose error is measured by gloss-cli tradeoff.
+float fast_specular_power(float c, float alpha);
+
+template <class T>
+T specular_power(T c, T alpha, PowMode mode) {
+  if constexpr (std::is_same_v<T, float>) {
+    if (mode == PowMode::fast) return fast_specular_power(c, alpha);
+  }
+  return specular_power(c, alpha);
+}
+
+// The cosine the model raises to alpha.
+template <class T>
+T model_cosine(const LightFactors<T>& f, ShadingModel model) {
+  return model == ShadingModel::phong ? f.cos_phong : f.cos_blinn;
+}
+
+// Optional energy normalisation of the specular lobe (off by default).
+template <class T>
+T energy_normalization(ShadingModel model, T alpha) {
+  const T pi = T(3.14159265358979323846);
+  return model == ShadingModel::phong ? (alpha + T(2)) / (T(2) * pi)
+                                      : (alpha + T(8)) / (T(8) * pi);
+}
+
+}  // namespace gloss
