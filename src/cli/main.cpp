@@ -1,0 +1,48 @@
+// gloss-cli: the headless renderer (spec/scene-and-cli.md). main is the only place that turns
+// errors into messages and exit codes: 0 success, 2 bad input or usage, 1 any other failure.
+// Every failure prints exactly one line on stderr that starts with "error:".
+#include <algorithm>
+#include <exception>
+#include <iostream>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.h"
+#include "error.h"
+
+namespace {
+
+// Messages can span lines (nlohmann, CLI11); the contract is one line.
+int report_error(std::string message, int status) {
+  std::replace(message.begin(), message.end(), '\n', ' ');
+  while (!message.empty() && message.back() == ' ') message.pop_back();
+  std::cerr << "error: " << message << "\n";
+  return status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Setup: every registered subcommand (render, presets, and those added by later files).
+  CLI::App app{"gloss-cli: renders gloss scene files (Phong / Blinn-Phong) without a window"};
+  app.set_version_flag("--version", std::string("gloss-cli ") + gloss::kGlossVersion);
+  app.require_subcommand(1);
+  for (gloss::AddCommand add : gloss::registered_commands()) add(app);
+
+  // Run: the chosen subcommand's callback runs inside parse.
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    // --help and --version arrive as "errors" with exit code 0; CLI11 prints them.
+    if (error.get_exit_code() == 0) return app.exit(error);
+    return report_error(error.what(), 2);
+  } catch (const gloss::InputError& error) {
+    return report_error(error.what(), 2);
+  } catch (const gloss::RuntimeFailure& error) {
+    return report_error(error.what(), 1);
+  } catch (const std::exception& error) {
+    return report_error(error.what(), 1);
+  }
+  return 0;
+}

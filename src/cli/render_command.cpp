@@ -1,0 +1,200 @@
+// gloss-cli render SCENE.json [-o OUT.png] [--pfm OUT.pfm] [--terms DIR] [--width N] [--height N]
+//                  [--spp N] [--model phong|blinn-phong] [--shadows on|off] [--srgb]
+// Options override the scene's render block; the result is validated again before rendering.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "commands.h"
+#include "error.h"
+#include "image_io.h"
+#include "renderer.h"
+#include "scene_loader.h"
+#include "text_distance.h"
+
+namespace gloss {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RenderArgs {
+  std::string scene;
+  std::string png, pfm, terms_dir;
+  long long width = 0, height = 0, spp = 0;
+  std::string model, shadows;
+  bool srgb = false;
+  CLI::Option *png_option = nullptr, *pfm_option = nullptr, *terms_option = nullptr;
+  CLI::Option *width_option = nullptr, *height_option = nullptr, *spp_option = nullptr;
+  CLI::Option *model_option = nullptr, *shadows_option = nullptr;
+};
+
+// A size option's value, refused before it reaches the scene (and before any allocation).
+int checked_option(const RenderArgs& args, const std::string& option, long long value,
+                   long long hi) {
+  if (value < 1 || value > hi) {
+    throw InputError(
+        args.scene,
+        "must be a whole number from 1 to " + std::to_string(hi) + ", got " + std::to_string(value),
+        0, 0, option);
+  }
+  return static_cast<int>(value);
+}
+
+void apply_overrides(const RenderArgs& args, Scene& scene) {
+  RenderSettings& render = scene.render;
+  if (*args.width_option) render.width = checked_option(args, "--width", args.width, kMaxImageSide);
+  if (*args.height_option) {
+    render.height = checked_option(args, "--height", args.height, kMaxImageSide);
+  }
+  if (*args.spp_option) render.spp = checked_option(args, "--spp", args.spp, kMaxSpp);
+  if (*args.model_option && !parse_shading_model(args.model, render.model)) {
+    throw InputError(args.scene,
+                     "unknown shading model '" + args.model + "' (did you mean '" +
+                         nearest_words(args.model, {"phong", "blinn-phong"}, 1).front() + "'?)",
+                     0, 0, "--model");
+  }
+  if (*args.shadows_option) {
+    if (args.shadows != "on" && args.shadows != "off") {
+      throw InputError(args.scene, "expected 'on' or 'off', got '" + args.shadows + "'", 0, 0,
+                       "--shadows");
+    }
+    render.shadows = args.shadows == "on";
+  }
+  if (args.srgb) render.srgb = true;
+  validate_scene(scene);
+}
+
+// Refuses an output folder that is missing or cannot take a new file, before the render runs.
+void check_writable_folder(const fs::path& folder, const std::string& output) {
+  const fs::path dir = folder.empty() ? fs::path(".") : folder;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) {
+    throw RuntimeFailure("cannot write " + output + ": folder " + dir.string() + " does not exist");
+  }
+  const fs::path probe = dir / (".gloss-cli-probe-" + std::to_string(::getpid()));
+  { std::ofstream(probe.string(), std::ios::binary); }
+  if (!fs::exists(probe, ec)) {
+    throw RuntimeFailure("cannot write " + output + ": folder " + dir.string() +
+                         " is not writable");
+  }
+  fs::remove(probe, ec);
+}
+
+std::string settings_summary(const RenderSettings& r) {
+  return std::to_string(r.width) + "x" + std::to_string(r.height) + ", " + std::to_string(r.spp) +
+         " spp, " + to_string(r.model) + ", shadows " + (r.shadows ? "on" : "off") +
+         ", energy_normalize " + (r.energy_normalize ? "on" : "off") + ", srgb " +
+         (r.srgb ? "on" : "off") + ", pow " + (r.pow == PowMode::exact ? "exact" : "fast") +
+         ", seed " + std::to_string(r.seed);
+}
+
+// Writes every requested file; if one fails, the ones already written by this run are removed
+// so that a failure leaves no output behind.
+class OutputWriter {
+ public:
+  explicit OutputWriter(const Scene& scene) : m_srgb(scene.render.srgb) {
+    m_text = {{"Software", std::string("gloss ") + kGlossVersion},
+              {"gloss:scene", scene_to_json_text(scene)},
+              {"gloss:settings", settings_summary(scene.render)}};
+  }
+  ~OutputWriter() {
+    if (m_committed) return;
+    std::error_code ec;
+    for (const std::string& path : m_written) fs::remove(path, ec);
+  }
+  void png(const std::string& path, const Image& image) {
+    write_png(path, image, m_srgb, m_text);
+    m_written.push_back(path);
+  }
+  void pfm(const std::string& path, const Image& image) {
+    write_pfm(path, image);
+    m_written.push_back(path);
+  }
+  const std::vector<std::string>& commit() {
+    m_committed = true;
+    return m_written;
+  }
+
+ private:
+  bool m_srgb;
+  TextChunks m_text;
+  std::vector<std::string> m_written;
+  bool m_committed = false;
+};
+
+void run_render(RenderArgs args) {
+  std::vector<std::string> warnings;
+  Scene scene = load_scene(args.scene, &warnings);
+  apply_overrides(args, scene);
+
+  if (!*args.png_option && !*args.pfm_option && !*args.terms_option) {
+    args.png = fs::path(args.scene).stem().string() + ".png";  // in the current folder
+  }
+  if (!args.png.empty()) check_writable_folder(fs::path(args.png).parent_path(), args.png);
+  if (!args.pfm.empty()) check_writable_folder(fs::path(args.pfm).parent_path(), args.pfm);
+  if (!args.terms_dir.empty()) {
+    std::error_code ec;
+    fs::create_directories(args.terms_dir, ec);
+    if (ec) throw RuntimeFailure("cannot create folder " + args.terms_dir + ": " + ec.message());
+    check_writable_folder(args.terms_dir, args.terms_dir);
+  }
+
+  RenderOptions options;
+  options.terms = !args.terms_dir.empty();
+  const auto start = std::chrono::steady_clock::now();
+  const TermImages images = render(scene, options);
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+  OutputWriter writer(scene);
+  if (!args.png.empty()) writer.png(args.png, images.total);
+  if (!args.pfm.empty()) writer.pfm(args.pfm, images.total);
+  if (!args.terms_dir.empty()) {
+    for (Term term : {Term::emissive, Term::ambient, Term::diffuse, Term::specular, Term::total}) {
+      const fs::path base = fs::path(args.terms_dir) / to_string(term);
+      writer.pfm(base.string() + ".pfm", term_image(images, term));
+      writer.png(base.string() + ".png", term_image(images, term));
+    }
+  }
+
+  char time_text[64];
+  std::snprintf(time_text, sizeof time_text, "%.1f ms", ms);
+  std::cout << "rendered " << args.scene << " (" << settings_summary(scene.render) << ") in "
+            << time_text << "\n";
+  for (const std::string& path : writer.commit()) std::cout << "wrote " << path << "\n";
+  for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand("render", "Render a scene file to PNG / PFM images");
+  auto args = std::make_shared<RenderArgs>();
+  sub->add_option("scene", args->scene, "Scene file (JSON, docs/scene-format.md)")->required();
+  args->png_option = sub->add_option(
+      "-o,--output", args->png,
+      "PNG output (8-bit, clamped); default <scene stem>.png when no output is given");
+  args->pfm_option = sub->add_option("--pfm", args->pfm, "PFM output (linear float, unclamped)");
+  args->terms_option = sub->add_option(
+      "--terms", args->terms_dir,
+      "Folder for emissive/ambient/diffuse/specular/total as .pfm and .png (created)");
+  args->width_option = sub->add_option("--width", args->width, "Image width in pixels");
+  args->height_option = sub->add_option("--height", args->height, "Image height in pixels");
+  args->spp_option = sub->add_option("--spp", args->spp, "Samples per pixel");
+  args->model_option = sub->add_option("--model", args->model, "phong or blinn-phong");
+  args->shadows_option = sub->add_option("--shadows", args->shadows, "on or off");
+  sub->add_flag("--srgb", args->srgb, "sRGB-encode the PNGs (default: clamp only)");
+  sub->callback([args] { run_render(*args); });
+}
+
+[[maybe_unused]] const bool render_registered = register_command(10, add_render_command);
+
+}  // namespace gloss
