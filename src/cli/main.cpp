@@ -21,6 +21,18 @@ int report_error(std::string message, int status) {
   return status;
 }
 
+// "FILE: " for the file argument CLI11 had read before a usage error, so the message names it.
+std::string parsed_file(const CLI::App& app) {
+  for (const CLI::App* sub : app.get_subcommands()) {
+    for (const CLI::Option* option : sub->get_options()) {
+      if (option->get_positional() && option->count() > 0) {
+        return option->as<std::string>() + ": ";
+      }
+    }
+  }
+  return "";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -36,7 +48,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     // --help and --version arrive as "errors" with exit code 0; CLI11 prints them.
     if (error.get_exit_code() == 0) return app.exit(error);
-    return report_error(error.what(), 2);
+    return report_error(parsed_file(app) + error.what(), 2);
   } catch (const gloss::InputError& error) {
     return report_error(error.what(), 2);
   } catch (const gloss::RuntimeFailure& error) {

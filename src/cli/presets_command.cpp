@@ -1,5 +1,6 @@
 // gloss-cli presets: the 24 OpenGL/VRML material presets as a table, in the table's order.
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 
@@ -16,6 +17,17 @@ std::string rgb_text(const glm::vec3& c) {
   return text;
 }
 
+// The shortest text that reads back as exactly value: the table's own digits ("0.6", not
+// "0.60000002").
+std::string shortest_text(float value) {
+  char text[32] = {};
+  for (int digits = 1; digits <= 9; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, static_cast<double>(value));
+    if (std::strtof(text, nullptr) == value) break;
+  }
+  return text;
+}
+
 void run_presets() {
   char line[256];
   std::snprintf(line, sizeof line, "%-16s %-19s  %-19s  %-19s  %-13s  %s", "name", "ka", "kd", "ks",
@@ -24,9 +36,9 @@ void run_presets() {
   for (const Preset& preset : preset_table()) {
     const Material& m = preset.material;
     // The exponent is shininess_raw x 128, as teapots.c passes it to GL_SHININESS.
-    std::snprintf(line, sizeof line, "%-16s %-19s  %-19s  %-19s  %-13.8g  %.6g",
-                  preset.name.c_str(), rgb_text(m.ambient).c_str(), rgb_text(m.diffuse).c_str(),
-                  rgb_text(m.specular).c_str(), static_cast<double>(preset.shininess_raw),
+    std::snprintf(line, sizeof line, "%-16s %-19s  %-19s  %-19s  %-13s  %.6g", preset.name.c_str(),
+                  rgb_text(m.ambient).c_str(), rgb_text(m.diffuse).c_str(),
+                  rgb_text(m.specular).c_str(), shortest_text(preset.shininess_raw).c_str(),
                   static_cast<double>(m.shininess));
     std::cout << line << "\n";
   }
