@@ -1,0 +1,219 @@
+#include "pixel_factors.h"
+
+#include <algorithm>
+
+#include <tbb/parallel_for.h>
+
+#include "parallel_tiles.h"
+
+namespace gloss {
+
+namespace {
+// Running sums of one material inside one pixel.
+struct Group {
+  std::int32_t material;
+  int count;
+};
+
+struct TileExtras {
+  std::vector<std::uint32_t> pixel;
+  std::vector<std::int32_t> material;
+  std::vector<float> weight, diffuse, specular;
+};
+
+// Material constants folded with the light colours and the scene ambient, per material.
+struct MaterialTerms {
+  glm::vec3 emissive, ambient;   // ke, ka * (A_scene + sum La)
+  std::vector<glm::vec3> kd_ld;  // kd * Ld_i, per planned light
+  std::vector<glm::vec3> ks_ls;  // ks * Ls_i (* energy normalisation), per planned light
+};
+
+std::vector<MaterialTerms> fold_materials(const RenderContext& ctx) {
+  const Scene& scene = *ctx.scene;
+  glm::vec3 ambient_light = scene.ambient;
+  for (const PointLight& light : scene.lights) ambient_light += light.ambient;
+  std::vector<MaterialTerms> out(scene.materials.size());
+  for (std::size_t m = 0; m < scene.materials.size(); ++m) {
+    const Material& mat = scene.materials[m];
+    MaterialTerms& t = out[m];
+    t.emissive = mat.emission;
+    t.ambient = mat.ambient * ambient_light;
+    const float norm = scene.render.energy_normalize
+                           ? energy_normalization(scene.render.model, mat.shininess)
+                           : 1.0f;
+    for (int index : ctx.plan.lights) {
+      const PointLight& light = scene.lights[static_cast<std::size_t>(index)];
+      t.kd_ld.push_back(mat.diffuse * light.diffuse);
+      t.ks_ls.push_back(mat.specular * norm * light.specular);
+    }
+  }
+  return out;
+}
+}  // namespace
+
+std::size_t PixelFactors::bytes() const {
+  return material.size() * sizeof(std::int32_t) + (weight.size() + background.size()) * 4 +
+         (diffuse.size() + specular.size()) * 4 + extra_pixel.size() * 8 +
+         (extra_weight.size() + extra_diffuse.size() + extra_specular.size()) * 4;
+}
+
+bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, PixelFactors& out) {
+  const Scene& scene = *ctx.scene;
+  const std::size_t pixels = cache.pixel_count();
+  const std::size_t lights = ctx.plan.lights.size();
+  const int n = cache.samples();
+  out.width = cache.width;
+  out.height = cache.height;
+  out.samples = n;
+  out.lights = lights;
+  out.material.resize(pixels);
+  out.weight.resize(pixels);
+  out.background.resize(pixels);
+  out.diffuse.resize(pixels * lights);
+  out.specular.resize(pixels * lights);
+  const int tiles_x = (cache.width + kTileSize - 1) / kTileSize;
+  const int tiles_y = (cache.height + kTileSize - 1) / kTileSize;
+  std::vector<TileExtras> extras(static_cast<std::size_t>(tiles_x * tiles_y));
+  const float inv_n = n > 0 ? 1.0f / static_cast<float>(n) : 0.0f;
+  const ShadingModel model = scene.render.model;
+  const PowMode pow_mode = scene.render.pow;
+
+  const bool done =
+      parallel_tiles(cache.width, cache.height, ctx.cancel, [&](int x0, int y0, int x1, int y1) {
+        TileExtras& tile_extras =
+            extras[static_cast<std::size_t>((y0 / kTileSize) * tiles_x + x0 / kTileSize)];
+        tile_extras = TileExtras{};
+        std::vector<Group> groups;
+        std::vector<float> sums;  // [group * 2 * lights + 2 * light + {0: diffuse, 1: specular}]
+        for (int y = y0; y < y1; ++y) {
+          for (int x = x0; x < x1; ++x) {
+            const std::size_t idx = static_cast<std::size_t>(y) * cache.width + x;
+            groups.clear();
+            sums.clear();
+            int misses = 0;
+            for (int s = 0; s < n; ++s) {
+              const SamplePlane& plane = cache.planes[static_cast<std::size_t>(s)];
+              const std::int32_t object = plane.object[idx];
+              if (object < 0) {
+                ++misses;
+                continue;
+              }
+              const Object& obj = scene.objects[static_cast<std::size_t>(object)];
+              std::size_t g = 0;
+              while (g < groups.size() && groups[g].material != obj.material) ++g;
+              if (g == groups.size()) {
+                groups.push_back({obj.material, 0});
+                sums.resize(sums.size() + 2 * lights, 0.0f);
+              }
+              ++groups[g].count;
+              const float alpha = scene.materials[static_cast<std::size_t>(obj.material)].shininess;
+              float* acc = sums.data() + g * 2 * lights;
+              for (std::size_t li = 0; li < lights; ++li) {
+                const LightFactors<float>& f = plane.lights[li][idx];
+                acc[2 * li] += f.diffuse_weight;
+                acc[2 * li + 1] +=
+                    f.spec_weight * specular_power(model_cosine(f, model), alpha, pow_mode);
+              }
+            }
+            out.background[idx] = static_cast<float>(misses) * inv_n;
+            out.material[idx] = groups.empty() ? -1 : groups[0].material;
+            out.weight[idx] = groups.empty() ? 0.0f : static_cast<float>(groups[0].count) * inv_n;
+            for (std::size_t li = 0; li < lights; ++li) {
+              out.diffuse[li * pixels + idx] = groups.empty() ? 0.0f : sums[2 * li] * inv_n;
+              out.specular[li * pixels + idx] = groups.empty() ? 0.0f : sums[2 * li + 1] * inv_n;
+            }
+            for (std::size_t g = 1; g < groups.size(); ++g) {
+              tile_extras.pixel.push_back(static_cast<std::uint32_t>(idx));
+              tile_extras.material.push_back(groups[g].material);
+              tile_extras.weight.push_back(static_cast<float>(groups[g].count) * inv_n);
+              for (std::size_t li = 0; li < lights; ++li) {
+                tile_extras.diffuse.push_back(sums[g * 2 * lights + 2 * li] * inv_n);
+                tile_extras.specular.push_back(sums[g * 2 * lights + 2 * li + 1] * inv_n);
+              }
+            }
+          }
+        }
+      });
+  if (!done) return false;
+  out.extra_pixel.clear();
+  out.extra_material.clear();
+  out.extra_weight.clear();
+  out.extra_diffuse.clear();
+  out.extra_specular.clear();
+  for (const TileExtras& t : extras) {  // tile order: deterministic whatever the thread count
+    out.extra_pixel.insert(out.extra_pixel.end(), t.pixel.begin(), t.pixel.end());
+    out.extra_material.insert(out.extra_material.end(), t.material.begin(), t.material.end());
+    out.extra_weight.insert(out.extra_weight.end(), t.weight.begin(), t.weight.end());
+    out.extra_diffuse.insert(out.extra_diffuse.end(), t.diffuse.begin(), t.diffuse.end());
+    out.extra_specular.insert(out.extra_specular.end(), t.specular.begin(), t.specular.end());
+  }
+  return true;
+}
+
+void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermImages& out,
+                   bool terms) {
+  const std::vector<MaterialTerms> folded = fold_materials(ctx);
+  const glm::vec3 background = ctx.scene->background;
+  const int w = factors.width, h = factors.height;
+  const std::size_t pixels = static_cast<std::size_t>(w) * h;
+  const std::size_t lights = factors.lights;
+  auto fit = [&](Image& image) {
+    if (image.width != w || image.height != h) image = Image(w, h);
+  };
+  fit(out.total);
+  if (terms) {
+    fit(out.emissive);
+    fit(out.ambient);
+    fit(out.diffuse);
+    fit(out.specular);
+  }
+  // One material's contribution to one pixel, from its weight and per-light factor means.
+  auto contribution = [&](std::int32_t material, float weight, const float* diffuse,
+                          const float* specular, std::size_t stride, glm::vec3 term[4]) {
+    const MaterialTerms& mt = folded[static_cast<std::size_t>(material)];
+    term[0] = weight * mt.emissive;
+    term[1] = weight * mt.ambient;
+    term[2] = glm::vec3(0.0f);
+    term[3] = glm::vec3(0.0f);
+    for (std::size_t li = 0; li < lights; ++li) {
+      term[2] += mt.kd_ld[li] * diffuse[li * stride];
+      term[3] += mt.ks_ls[li] * specular[li * stride];
+    }
+  };
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, pixels, 16384),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        DenormalsOff denormals_off;
+        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+          glm::vec3 term[4] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
+          const std::int32_t m = factors.material[i];
+          if (m >= 0) {
+            contribution(m, factors.weight[i], &factors.diffuse[i], &factors.specular[i], pixels,
+                         term);
+          }
+          out.total.pixels[i] =
+              term[0] + term[1] + term[2] + term[3] + factors.background[i] * background;
+          if (terms) {
+            out.emissive.pixels[i] = term[0];
+            out.ambient.pixels[i] = term[1];
+            out.diffuse.pixels[i] = term[2];
+            out.specular.pixels[i] = term[3];
+          }
+        }
+      });
+  for (std::size_t e = 0; e < factors.extra_pixel.size(); ++e) {
+    glm::vec3 term[4];
+    contribution(factors.extra_material[e], factors.extra_weight[e],
+                 &factors.extra_diffuse[e * lights], &factors.extra_specular[e * lights], 1, term);
+    const std::size_t i = factors.extra_pixel[e];
+    out.total.pixels[i] += term[0] + term[1] + term[2] + term[3];
+    if (terms) {
+      out.emissive.pixels[i] += term[0];
+      out.ambient.pixels[i] += term[1];
+      out.diffuse.pixels[i] += term[2];
+      out.specular.pixels[i] += term[3];
+    }
+  }
+}
+
+}  // namespace gloss

@@ -1,0 +1,45 @@
+#pragma once
+// Per-pixel factors: the shading contract is linear in ka, kd, ks, ke and the light colours, so
+// the samples of a pixel are summed once per material they hit into
+//   weight     = share of samples on that material
+//   diffuse_i  = mean over those samples of ndl * att * vis       (per planned light i)
+//   specular_i = mean over those samples of att * vis * c^alpha    (per planned light i)
+// and any edit of constants or colours is a cheap recombination (combine_terms) with no rays.
+// A pixel keeps its first material in the dense arrays; further materials (silhouettes) go to
+// a short list of extras. Bytes per pixel: 12 + 8 per planned light, plus the extras.
+#include <cstdint>
+#include <vector>
+
+#include "image.h"
+#include "render_context.h"
+#include "sample_cache.h"
+
+namespace gloss {
+
+struct PixelFactors {
+  int width = 0, height = 0;
+  int samples = 0;                       // samples per pixel summed in
+  std::size_t lights = 0;                // planned lights
+  std::vector<std::int32_t> material;    // first material hit, -1 when none
+  std::vector<float> weight;             // share of samples on it
+  std::vector<float> background;         // share of samples that missed
+  std::vector<float> diffuse, specular;  // [light * pixels + pixel]
+  // Further materials of mixed pixels, in pixel order.
+  std::vector<std::uint32_t> extra_pixel;
+  std::vector<std::int32_t> extra_material;
+  std::vector<float> extra_weight;
+  std::vector<float> extra_diffuse, extra_specular;  // [extra * lights + light]
+
+  std::size_t bytes() const;
+};
+
+// Sums the cache's planes into per-pixel factors with the scene's exponents, model and pow mode.
+// false when cancelled (the factors are then incomplete).
+bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, PixelFactors& out);
+
+// Recombines factors with the scene's material constants, light colours, ambient and background
+// into out.total (and the four term images when terms is set). out is resized as needed.
+void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermImages& out,
+                   bool terms);
+
+}  // namespace gloss

@@ -1,0 +1,23 @@
+#pragma once
+// Everything a render stage reads: the scene, its Embree twin, the plan and the camera frame for
+// the image being computed, plus the cancellation flag and ray counter of the caller.
+#include <atomic>
+
+#include "camera.h"
+#include "embree_scene.h"
+#include "render_plan.h"
+#include "scene.h"
+
+namespace gloss {
+
+struct RenderContext {
+  const Scene* scene = nullptr;
+  const EmbreeScene* embree = nullptr;
+  RenderPlan plan;
+  const std::atomic<bool>* cancel = nullptr;  // stages return false soon after it turns true
+  std::atomic<long long>* rays = nullptr;     // primary + shadow rays traced, when not null
+
+  bool cancelled() const { return cancel != nullptr && cancel->load(std::memory_order_relaxed); }
+};
+
+}  // namespace gloss

@@ -1,0 +1,50 @@
+#pragma once
+// Per-sample cache of one image: the primary hit of every sample and, per planned light, the
+// geometry factors of the shading contract (shading.h LightFactors). Stored plane by plane
+// (plane s holds sample s of every pixel), so progressive passes append planes.
+// Bytes per sample: 20 for the hit + 16 per planned light.
+#include <cstdint>
+#include <vector>
+
+#include "camera.h"
+#include "render_context.h"
+#include "shading.h"
+
+namespace gloss {
+
+struct SamplePlane {
+  std::vector<std::int32_t> object;  // object index (= Embree geomID), -1 when the ray missed
+  std::vector<std::uint32_t> prim;   // triangle index; 0 for spheres
+  std::vector<float> t, u, v;        // hit distance (unit direction) and barycentrics
+  std::vector<std::vector<LightFactors<float>>> lights;  // [planned light][pixel]
+};
+
+struct SampleCache {
+  int width = 0, height = 0;  // of the region cached: full width, rows [row0, row0 + height)
+  int image_height = 0;       // of the whole image (the camera's aspect)
+  int row0 = 0;               // first image row of the region
+  int target_spp = 1;         // the stratification the sample positions belong to
+  std::uint32_t seed = 0;
+  CameraFrame camera;
+  std::vector<SamplePlane> planes;
+
+  int samples() const { return static_cast<int>(planes.size()); }
+  std::size_t pixel_count() const { return static_cast<std::size_t>(width) * height; }
+  std::size_t bytes() const;
+};
+
+// An empty cache for scene.camera and a width x height image, with the scene's seed, covering
+// rows [row0, row0 + rows) (rows < 0: all of them). One-shot renders go band by band to bound
+// memory; the progressive engine caches whole images.
+SampleCache make_sample_cache(const Scene& scene, int width, int height, int target_spp,
+                              int row0 = 0, int rows = -1);
+
+// Traces planes [samples(), samples() + count) and computes their light factors. On
+// cancellation the new planes are dropped and false is returned; the cache stays consistent.
+bool add_samples(SampleCache& cache, const RenderContext& ctx, int count);
+
+// Recomputes the light factors (shadow rays included) of every plane for the context's scene
+// and plan, reusing the primary hits. false when cancelled (the factors are then stale).
+bool recompute_light_factors(SampleCache& cache, const RenderContext& ctx);
+
+}  // namespace gloss
