@@ -90,9 +90,13 @@ TEST(SceneLoaderErrors, TruncatedFileIsReportedJustPastItsEnd) {
   EXPECT_EQ(error.column(), 22);
 }
 
-TEST(SceneLoaderErrors, NumberBeyondDoubleRangeIsRefused) {
-  const InputError error = error_of(with_light(R"({"position": [0, 1e999, 0]})"));
-  EXPECT_NE(std::string(error.what()).find("bad.json"), std::string::npos) << error.what();
+TEST(SceneLoaderErrors, NumberBeyondDoubleRangeIsReportedWhereItStarts) {
+  // Line 3: 2 spaces, "lights": [{"position": [0, then 1e999 starts at column 31.
+  const InputError error =
+      error_of("{\n  \"objects\": [],\n  \"lights\": [{\"position\": [0, 1e999, 0]}]\n}\n");
+  EXPECT_EQ(error.line(), 3);
+  EXPECT_EQ(error.column(), 31);
+  EXPECT_EQ(std::string(error.what()).rfind("bad.json:3:31: ", 0), 0u) << error.what();
   EXPECT_NE(std::string(error.what()).find("1e999"), std::string::npos) << error.what();
 }
 

@@ -15,6 +15,49 @@ namespace gloss {
 
 namespace {
 
+// A SAX pass that only records where parsing stops and on which token. json_location reports
+// syntax errors; this finds values nlohmann refuses after lexing them, such as 1e999 (number
+// overflow, an out_of_range exception without a position).
+class ErrorLocator : public nlohmann::json_sax<nlohmann::json> {
+ public:
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(number_integer_t) override { return true; }
+  bool number_unsigned(number_unsigned_t) override { return true; }
+  bool number_float(number_float_t, const string_t&) override { return true; }
+  bool string(string_t&) override { return true; }
+  bool binary(binary_t&) override { return true; }
+  bool start_object(std::size_t) override { return true; }
+  bool key(string_t&) override { return true; }
+  bool end_object() override { return true; }
+  bool start_array(std::size_t) override { return true; }
+  bool end_array() override { return true; }
+  bool parse_error(std::size_t position, const std::string& token,
+                   const nlohmann::detail::exception&) override {
+    // position counts the characters read, up to the end of the offending token.
+    start = position >= token.size() ? position - token.size() : 0;
+    found = true;
+    return false;
+  }
+  std::size_t start = 0;
+  bool found = false;
+};
+
+nlohmann::json parse_scene_json(const std::string& text, const std::string& path) {
+  try {
+    return parse_json_text(text, path);
+  } catch (const nlohmann::json::exception& error) {
+    const std::string what = error.what();
+    const std::size_t prefix = what.find("] ");
+    const std::string message = prefix == std::string::npos ? what : what.substr(prefix + 2);
+    ErrorLocator locator;
+    nlohmann::json::sax_parse(text, &locator);
+    int line = 0, column = 0;
+    if (locator.found) byte_offset_to_line_column(text, locator.start, line, column);
+    throw InputError(path, message, line, column);
+  }
+}
+
 const std::vector<std::string> kShadingModelNames = {"phong", "blinn-phong"};
 const std::vector<std::string> kPowModeNames = {"exact", "fast"};
 
@@ -116,15 +159,7 @@ void resolve_materials(const std::string& file, const MaterialMap& materials,
 
 Scene parse_scene(const std::string& text, const std::string& path,
                   std::vector<std::string>* warnings) {
-  nlohmann::json root;
-  try {
-    root = parse_json_text(text, path);
-  } catch (const nlohmann::json::exception& error) {
-    // Not a syntax error but a value nlohmann refuses while parsing, such as 1e999.
-    const std::string what = error.what();
-    const std::size_t prefix = what.find("] ");
-    throw InputError(path, prefix == std::string::npos ? what : what.substr(prefix + 2));
-  }
+  const nlohmann::json root = parse_scene_json(text, path);
   const JsonObjectReader top(
       root, path, "",
       {"camera", "background", "ambient", "lights", "materials", "objects", "render"});
@@ -142,8 +177,7 @@ Scene parse_scene(const std::string& text, const std::string& path,
   if (!objects.is_array()) top.fail("objects", "expected an array of objects");
   ObjectReadContext context;
   context.file = path;
-  context.base_dir = std::filesystem::path(path).parent_path().string();
-  if (context.base_dir.empty()) context.base_dir = ".";
+  context.base_dir = std::filesystem::path(path).parent_path().string();  // "" = current folder
   context.warnings = warnings;
   std::vector<PendingObject> pending;
   for (std::size_t i = 0; i < objects.size(); ++i) {

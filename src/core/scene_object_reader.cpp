@@ -105,7 +105,7 @@ void read_mesh(const JsonObjectReader& reader, const ObjectReadContext& context,
   ShapeParams& params = prototype.params;
   const std::string material_field = reader.path("material");
   const std::filesystem::path file_path(params.file);
-  const std::string resolved = file_path.is_absolute()
+  const std::string resolved = file_path.is_absolute() || context.base_dir.empty()
                                    ? params.file
                                    : (std::filesystem::path(context.base_dir) / file_path).string();
   ObjModel model;

@@ -21,7 +21,7 @@ inline const char* const kDefaultMaterialName = "default";
 
 struct ObjectReadContext {
   std::string file;      // the scene file, for messages
-  std::string base_dir;  // the folder relative paths resolve against
+  std::string base_dir;  // the folder relative paths resolve against; empty: the current one
   std::vector<std::string>* warnings = nullptr;
 };
 
