@@ -1,0 +1,39 @@
+#version 330 core
+// The viewport's display transform (spec/shading.md, "Output encodings"): linear RGB times the
+// exposure gain, clamped to [0, 1], then written as is (the classic look) or sRGB-encoded.
+// Modes: 0 shows u_a; 1 shows u_a + u_b (emissive + ambient); 2 shows the largest per-channel
+// |u_a - u_b| on the heat ramp, where u_heat_scale (linear units) maps to the ramp's top.
+in vec2 v_uv;
+out vec4 frag_colour;
+
+uniform sampler2D u_a;
+uniform sampler2D u_b;
+uniform int u_mode;
+uniform float u_gain;         // 2^exposure, exposure in stops
+uniform bool u_srgb;
+uniform float u_heat_scale;   // > 0
+uniform vec3 u_heat_ramp[5];  // display colours at t = 0, 1/4, 1/2, 3/4, 1
+
+vec3 encode_srgb(vec3 c) {
+  vec3 curve = 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055;
+  return mix(c * 12.92, curve, step(vec3(0.0031308), c));
+}
+
+vec3 heat(float t) {
+  float x = clamp(t, 0.0, 1.0) * 4.0;
+  int i = min(int(floor(x)), 3);
+  return mix(u_heat_ramp[i], u_heat_ramp[i + 1], x - float(i));
+}
+
+void main() {
+  vec3 a = texture(u_a, v_uv).rgb;
+  if (u_mode == 2) {
+    vec3 d = abs(a - texture(u_b, v_uv).rgb);
+    frag_colour = vec4(heat(max(d.r, max(d.g, d.b)) / u_heat_scale), 1.0);
+    return;
+  }
+  if (u_mode == 1) a += texture(u_b, v_uv).rgb;
+  vec3 c = clamp(a * u_gain, 0.0, 1.0);
+  if (u_srgb) c = encode_srgb(c);
+  frag_colour = vec4(c, 1.0);
+}

@@ -1,0 +1,66 @@
+#pragma once
+// Scripted mode: `gloss SCENE.json --script FILE` replays a text file of commands, one per line,
+// through the command layer. '#' starts a comment; blank lines are skipped. The line grammar is in
+// docs/editor.md. Document lines become Commands; the rest (wait, screenshot, view, quit ...) are
+// actions the editor's frame loop or the headless runner carry out.
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "command.h"
+#include "view_settings.h"
+
+namespace gloss {
+
+class CommandLayer;
+
+struct UndoAction {};
+struct RedoAction {};
+struct WaitAction {
+  double timeout_s = 300.0;  // a render that has not converged by then is an error
+};
+struct ScreenshotAction {
+  std::string path;  // a folder (existing, or ending in '/') gets a timestamped name inside it
+  ScreenshotKind kind = ScreenshotKind::viewport;
+};
+struct ViewAction {
+  ViewMode mode = ViewMode::render;
+  TermView term = TermView::total;  // for ViewMode::single
+};
+struct ExposureAction {
+  float stops = 0.0f;
+};
+struct EncodingAction {
+  bool srgb = false;
+};
+struct SelectAction {
+  int object = 0;
+};
+struct StatsAction {};  // prints the editor's frame and latency measurements on stdout
+struct QuitAction {};
+
+using ScriptAction =
+    std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction, ViewAction,
+                 ExposureAction, EncodingAction, SelectAction, StatsAction, QuitAction>;
+
+struct ScriptLine {
+  int line = 0;  // 1-based line number in the file
+  std::string text;
+  ScriptAction action;
+};
+
+struct Script {
+  std::string file;  // for messages
+  std::vector<ScriptLine> lines;
+};
+
+// Parses every line first, so a typo anywhere fails before anything runs. Throws InputError
+// naming the file and the line ("FILE:LINE: MESSAGE").
+Script parse_script(const std::string& text, const std::string& file);
+Script load_script(const std::string& path);
+
+// Runs a command, undo or redo line through layer and returns true; returns false for any other
+// action. A failing command (no such object, nothing to undo) throws InputError naming the line.
+bool run_document_line(const ScriptLine& line, CommandLayer& layer, const std::string& file);
+
+}  // namespace gloss

@@ -1,0 +1,9 @@
+#pragma once
+// The display shaders of shaders/, compiled into the binary at build time (embed_shaders.cmake).
+
+namespace gloss {
+
+extern const char* const kDisplayVertexShader;
+extern const char* const kDisplayFragmentShader;
+
+}  // namespace gloss

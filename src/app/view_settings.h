@@ -1,0 +1,39 @@
+#pragma once
+// How the editor shows the document: view mode, display transform, preview quality. These are
+// preferences of the window, not part of the document, so they are not undone.
+#include <string>
+
+namespace gloss {
+
+// render: the total image; terms: emissive+ambient, diffuse, specular and total in a 2x2 sheet;
+// single: one term alone; ab: Phong against Blinn-Phong with a difference heat map.
+enum class ViewMode { render, terms, single, ab };
+const char* to_string(ViewMode mode);
+bool parse_view_mode(const std::string& name, ViewMode& mode);
+
+// The images a pane can show. emissive_ambient is the sum of those two term buffers.
+enum class TermView { emissive_ambient, emissive, ambient, diffuse, specular, total };
+const char* to_string(TermView term);
+const char* display_name(TermView term);  // "emissive + ambient"
+bool parse_term_view(const std::string& name, TermView& term);
+
+enum class ScreenshotKind { viewport, terms, window };
+const char* to_string(ScreenshotKind kind);
+bool parse_screenshot_kind(const std::string& name, ScreenshotKind& kind);
+
+struct ViewSettings {
+  ViewMode mode = ViewMode::render;
+  TermView single = TermView::specular;  // shown by ViewMode::single
+  float exposure = 0.0f;                 // stops: displayed value = linear * 2^exposure
+  bool srgb = false;                     // false: clamp only (the classic look); true: sRGB
+  bool heat_auto_scale = true;           // heat scale = largest difference of the shown pair
+  float heat_scale = 0.1f;               // linear difference at the top of the heat ramp, > 0
+  float preview_scale = 1.0f;            // render pixels per screen pixel, 0.25..1
+  bool keep_highlight_size = true;       // model switch and A/B rescale exponents (document.h)
+  bool orbit_light = false;              // animate the selected light about the target's y axis
+  float orbit_speed = 45.0f;             // degrees per second
+  ScreenshotKind screenshot_kind = ScreenshotKind::viewport;  // what Ctrl+S saves
+  std::string screenshot_dir = ".";  // where Ctrl+S writes its timestamped files
+};
+
+}  // namespace gloss
