@@ -31,12 +31,6 @@ CameraFrame make_camera_frame(const Camera& camera, int width, int height) {
   return frame;
 }
 
-glm::vec3 primary_direction(const CameraFrame& frame, float px, float py, int width, int height) {
-  const float sx = (2.0f * px / static_cast<float>(width) - 1.0f) * frame.scale_x;
-  const float sy = (1.0f - 2.0f * py / static_cast<float>(height)) * frame.scale_y;
-  return glm::normalize(frame.forward + sx * frame.right + sy * frame.up);
-}
-
 Camera orbit_camera(const Camera& camera, float yaw_deg, float pitch_deg) {
   const glm::vec3 offset = camera.eye - camera.target;
   const float radius = glm::length(offset);

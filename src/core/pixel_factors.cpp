@@ -88,6 +88,28 @@ bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pix
         for (int y = y0; y < y1; ++y) {
           for (int x = x0; x < x1; ++x) {
             const std::size_t idx = static_cast<std::size_t>(y) * cache.width + x;
+            if (n == 1) {
+              // One sample: no grouping, same arithmetic as the general path (x * 1.0f).
+              const SamplePlane& plane = cache.planes[0];
+              const std::int32_t object = plane.object[idx];
+              const int material =
+                  object < 0 ? -1 : scene.objects[static_cast<std::size_t>(object)].material;
+              out.material[idx] = material;
+              out.weight[idx] = object < 0 ? 0.0f : 1.0f;
+              out.background[idx] = object < 0 ? 1.0f : 0.0f;
+              const float alpha =
+                  material < 0 ? 0.0f
+                               : scene.materials[static_cast<std::size_t>(material)].shininess;
+              for (std::size_t li = 0; li < lights; ++li) {
+                const LightFactors<float>& f = plane.lights[li][idx];
+                out.diffuse[li * pixels + idx] = object < 0 ? 0.0f : 0.0f + f.diffuse_weight;
+                out.specular[li * pixels + idx] =
+                    object < 0 ? 0.0f
+                               : 0.0f + f.spec_weight *
+                                            specular_power(model_cosine(f, model), alpha, pow_mode);
+              }
+              continue;
+            }
             groups.clear();
             sums.clear();
             int misses = 0;

@@ -13,6 +13,7 @@
 #include "image.h"
 #include "render_context.h"
 #include "sample_cache.h"
+#include "uninitialized_buffer.h"
 
 namespace gloss {
 

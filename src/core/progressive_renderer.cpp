@@ -141,7 +141,7 @@ void ProgressiveRenderer::Impl::start_level(int new_level) {
   const int shift = options.preview_levels - level;  // 3, 2, 1 -> 1/8, 1/4, 1/2
   const int w = std::max(1, r.width >> shift), h = std::max(1, r.height >> shift);
   const int target = level == options.preview_levels ? r.spp : 1;
-  cache = make_sample_cache(*scene, w, h, target);
+  reset_sample_cache(cache, *scene, w, h, target);  // keeps the memory of the last image
 }
 
 // One unit of work, then a publication; false when cancelled by a newer scene. A cancelled

@@ -13,15 +13,15 @@
 namespace gloss {
 
 struct FrameInfo {
-  std::uint64_t generation = 0;  // counts set_scene() calls that changed something
-  int pass = 0;                  // passes published for this generation so far, from 0
-  int width = 0, height = 0;     // size of this pass's images (coarse passes are smaller)
-  int spp = 0;                   // samples per pixel in these images
-  int target_spp = 0;            // scene.render.spp
-  double pass_ms = 0;            // compute time of this pass
-  double since_change_ms = 0;    // from the set_scene() of this generation to publication
-  long long rays = 0;            // primary + shadow rays traced for this pass
-  bool converged = false;        // nothing more will be computed for this scene
+  std::uint64_t generation = 0;           // counts set_scene() calls that changed something
+  int pass = 0;                           // passes published for this generation so far, from 0
+  int width = 0, height = 0;              // size of this pass's images (coarse passes are smaller)
+  int spp = 0;                            // samples per pixel in these images
+  int target_spp = 0;                     // scene.render.spp
+  double pass_ms = 0;                     // compute time of this pass
+  double since_change_ms = 0;             // from the set_scene() of this generation to publication
+  long long rays = 0;                     // primary + shadow rays traced for this pass
+  bool converged = false;                 // nothing more will be computed for this scene
   ChangeClass cause = ChangeClass::full;  // what the edit that led here invalidated
 };
 

@@ -1,5 +1,6 @@
 #include "sample_cache.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -12,15 +13,37 @@
 namespace gloss {
 
 namespace {
-constexpr int kPacketSide = 4;  // 4 x 4 = 16 rays per Embree packet
+constexpr int kLanes = 16;  // one Embree packet: a 4 x 4 block of pixels
 
-// The pixels of one 4 x 4 packet, clipped to the tile.
-struct Block {
+// One 4 x 4 block of the cached region, clipped to it, and what its 16 lanes share.
+struct Packet {
   int x0, y0, x1, y1;
-  bool lane(int i, int& x, int& y) const {
-    x = x0 + i % kPacketSide;
-    y = y0 + i / kPacketSide;
-    return x < x1 && y < y1;
+  alignas(64) int valid[kLanes];  // Embree mask, -1 inside the region; Embree wants 64-B alignment
+  std::size_t index[kLanes];      // pixel index in the region (0 for invalid lanes)
+  glm::vec3 dir[kLanes];
+
+  Packet(const SampleCache& cache, int bx, int by, int bx1, int by1)
+      : x0(bx), y0(by), x1(bx1), y1(by1) {
+    for (int i = 0; i < kLanes; ++i) {
+      const int x = x0 + (i & 3), y = y0 + (i >> 2);
+      valid[i] = x < x1 && y < y1 ? -1 : 0;
+      index[i] = valid[i] ? static_cast<std::size_t>(y) * cache.width + x : 0;
+    }
+  }
+
+  // Directions of sample `stratum` for every lane (y is a region row; the pattern and the
+  // camera use image rows). Two loops: the offsets (integer hashing), then the vector maths.
+  void compute_directions(const SampleCache& cache, const SamplePattern& pattern, int stratum) {
+    float px[kLanes], py[kLanes];
+    for (int i = 0; i < kLanes; ++i) {
+      const int x = x0 + (i & 3), row = y0 + (i >> 2) + cache.row0;
+      const SampleOffset o = sample_offset(pattern, stratum, x, row);
+      px[i] = static_cast<float>(x) + o.dx;
+      py[i] = static_cast<float>(row) + o.dy;
+    }
+    for (int i = 0; i < kLanes; ++i) {
+      dir[i] = primary_direction(cache.camera, px[i], py[i], cache.width, cache.image_height);
+    }
   }
 };
 
@@ -31,30 +54,17 @@ RTCIntersectContext coherent_context() {
   return context;
 }
 
-// y is a row of the cached region; the sample pattern and the camera use image rows.
-glm::vec3 sample_direction(const SampleCache& cache, int x, int y, int s) {
-  const int row = y + cache.row0;
-  const SampleOffset o = sample_offset(cache.seed, x, row, s, cache.target_spp);
-  return primary_direction(cache.camera, static_cast<float>(x) + o.dx,
-                           static_cast<float>(row) + o.dy, cache.width, cache.image_height);
-}
-
 long long trace_primary(const SampleCache& cache, const RenderContext& ctx, SamplePlane& plane,
-                        int s, const Block& block) {
+                        const Packet& packet) {
   RTCRayHit16 rh;
-  int valid[16];
-  int lanes = 0;
-  for (int i = 0; i < 16; ++i) {
-    int x, y;
-    valid[i] = block.lane(i, x, y) ? -1 : 0;
-    const glm::vec3 dir = valid[i] ? sample_direction(cache, x, y, s) : glm::vec3(0, 0, 1);
-    lanes += valid[i] ? 1 : 0;
-    rh.ray.org_x[i] = cache.camera.eye.x;
-    rh.ray.org_y[i] = cache.camera.eye.y;
-    rh.ray.org_z[i] = cache.camera.eye.z;
-    rh.ray.dir_x[i] = dir.x;
-    rh.ray.dir_y[i] = dir.y;
-    rh.ray.dir_z[i] = dir.z;
+  const glm::vec3 eye = cache.camera.eye;
+  for (int i = 0; i < kLanes; ++i) {
+    rh.ray.org_x[i] = eye.x;
+    rh.ray.org_y[i] = eye.y;
+    rh.ray.org_z[i] = eye.z;
+    rh.ray.dir_x[i] = packet.dir[i].x;
+    rh.ray.dir_y[i] = packet.dir[i].y;
+    rh.ray.dir_z[i] = packet.dir[i].z;
     rh.ray.tnear[i] = 0.0f;
     rh.ray.tfar[i] = std::numeric_limits<float>::infinity();
     rh.ray.time[i] = 0.0f;
@@ -65,11 +75,12 @@ long long trace_primary(const SampleCache& cache, const RenderContext& ctx, Samp
     rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
   }
   RTCIntersectContext context = coherent_context();
-  rtcIntersect16(valid, ctx.embree->handle(), &context, &rh);
-  for (int i = 0; i < 16; ++i) {
-    int x, y;
-    if (!block.lane(i, x, y)) continue;
-    const std::size_t idx = static_cast<std::size_t>(y) * cache.width + x;
+  rtcIntersect16(packet.valid, ctx.embree->handle(), &context, &rh);
+  long long rays = 0;
+  for (int i = 0; i < kLanes; ++i) {
+    if (!packet.valid[i]) continue;
+    ++rays;
+    const std::size_t idx = packet.index[i];
     if (rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) {
       plane.object[idx] = -1;
       plane.prim[idx] = 0;
@@ -77,62 +88,64 @@ long long trace_primary(const SampleCache& cache, const RenderContext& ctx, Samp
       continue;
     }
     const auto object = static_cast<std::int32_t>(rh.hit.geomID[i]);
-    float t = rh.ray.tfar[i];
     const Object& obj = ctx.scene->objects[static_cast<std::size_t>(object)];
-    if (obj.type == ObjectType::sphere) {
-      const glm::vec3 dir(rh.ray.dir_x[i], rh.ray.dir_y[i], rh.ray.dir_z[i]);
-      t = refine_sphere_hit(obj, cache.camera.eye, dir, t);
-    }
+    float t = rh.ray.tfar[i];
+    if (obj.type == ObjectType::sphere) t = refine_sphere_hit(obj, eye, packet.dir[i], t);
     plane.object[idx] = object;
     plane.prim[idx] = rh.hit.primID[i];
     plane.t[idx] = t;
     plane.u[idx] = rh.hit.u[i];
     plane.v[idx] = rh.hit.v[i];
   }
-  return lanes;
+  return rays;
 }
 
+// Surfaces, shadow rays and light factors of one packet's samples in one plane.
 long long shade_geometry(const SampleCache& cache, const RenderContext& ctx, SamplePlane& plane,
-                         int s, const Block& block) {
-  Surface surf[16];
-  float t[16];
-  bool hit[16];
-  std::size_t index[16];
-  for (int i = 0; i < 16; ++i) {
-    int x, y;
-    hit[i] = false;
-    if (!block.lane(i, x, y)) continue;
-    index[i] = static_cast<std::size_t>(y) * cache.width + x;
-    const std::int32_t object = plane.object[index[i]];
-    if (object < 0) continue;
-    hit[i] = true;
-    t[i] = plane.t[index[i]];
-    surf[i] = surface_at(ctx.scene->objects[static_cast<std::size_t>(object)], plane.prim[index[i]],
-                         plane.u[index[i]], plane.v[index[i]], cache.camera.eye,
-                         sample_direction(cache, x, y, s), t[i]);
+                         const Packet& packet) {
+  HitGeometry geometry[kLanes];
+  float t[kLanes];
+  bool hit[kLanes];
+  for (int i = 0; i < kLanes; ++i) {  // gather: scattered loads from the objects
+    const std::int32_t object = packet.valid[i] ? plane.object[packet.index[i]] : -1;
+    hit[i] = object >= 0;
+    if (!hit[i]) {
+      geometry[i] = HitGeometry{};
+      geometry[i].sphere = true;  // any valid input: the lane's result is discarded
+      t[i] = 1.0f;
+      continue;
+    }
+    const std::size_t idx = packet.index[i];
+    t[i] = plane.t[idx];
+    geometry[i] = hit_geometry(ctx.scene->objects[static_cast<std::size_t>(object)],
+                               plane.prim[idx], plane.u[idx], plane.v[idx]);
+  }
+  Surface surf[kLanes];
+  for (int i = 0; i < kLanes; ++i) {
+    surf[i] = surface_from(geometry[i], cache.camera.eye, packet.dir[i], t[i]);
   }
   long long rays = 0;
   RTCIntersectContext context = coherent_context();
   for (std::size_t li = 0; li < ctx.plan.lights.size(); ++li) {
     const PointLight& light = ctx.scene->lights[static_cast<std::size_t>(ctx.plan.lights[li])];
     const bool unit_att = ctx.plan.unit_attenuation[li];
-    float vis[16];
-    int valid[16];
-    for (int i = 0; i < 16; ++i) {
-      vis[i] = 1.0f;
-      valid[i] = hit[i] && glm::dot(surf[i].n, light.position - surf[i].p) > 0.0f ? -1 : 0;
+    alignas(64) int lit[kLanes];  // Embree mask, 64-byte aligned
+    for (int i = 0; i < kLanes; ++i) {
+      lit[i] = hit[i] && glm::dot(surf[i].n, light.position - surf[i].p) > 0.0f ? -1 : 0;
     }
+    float vis[kLanes];
+    std::fill(vis, vis + kLanes, 1.0f);
     if (ctx.plan.shadow_rays) {
       RTCRay16 ray;
-      for (int i = 0; i < 16; ++i) {
-        const glm::vec3 org = valid[i] ? shadow_ray_origin(surf[i], t[i]) : glm::vec3(0.0f);
-        const glm::vec3 dir = valid[i] ? light.position - org : glm::vec3(0, 0, 1);
+      for (int i = 0; i < kLanes; ++i) {
+        const glm::vec3 org = shadow_ray_origin(surf[i], t[i]);
+        const glm::vec3 to = light.position - org;
         ray.org_x[i] = org.x;
         ray.org_y[i] = org.y;
         ray.org_z[i] = org.z;
-        ray.dir_x[i] = dir.x;
-        ray.dir_y[i] = dir.y;
-        ray.dir_z[i] = dir.z;
+        ray.dir_x[i] = to.x;
+        ray.dir_y[i] = to.y;
+        ray.dir_z[i] = to.z;
         ray.tnear[i] = 0.0f;
         // The segment ends just short of the light: a light resting on a surface still lights
         // the side it is on.
@@ -141,42 +154,58 @@ long long shade_geometry(const SampleCache& cache, const RenderContext& ctx, Sam
         ray.mask[i] = 0xffffffffu;
         ray.id[i] = static_cast<unsigned>(i);
         ray.flags[i] = 0;
-        rays += valid[i] ? 1 : 0;
+        rays += lit[i] ? 1 : 0;
       }
-      rtcOccluded16(valid, ctx.embree->handle(), &context, &ray);
-      for (int i = 0; i < 16; ++i) {
-        if (valid[i] && ray.tfar[i] == -std::numeric_limits<float>::infinity()) vis[i] = 0.0f;
+      rtcOccluded16(lit, ctx.embree->handle(), &context, &ray);
+      for (int i = 0; i < kLanes; ++i) {
+        if (lit[i] && ray.tfar[i] == -std::numeric_limits<float>::infinity()) vis[i] = 0.0f;
       }
     }
-    std::vector<LightFactors<float>>& out = plane.lights[li];
-    for (int i = 0; i < 16; ++i) {
-      int x, y;
-      if (!block.lane(i, x, y)) continue;
-      out[index[i]] = valid[i]
-                          ? light_factors<float>(surf[i].p, surf[i].n, surf[i].v, light.position,
-                                                 light.attenuation, unit_att, vis[i])
-                          : LightFactors<float>{};
+    // Two copies of the loop, so each sees a constant attenuation switch and vectorizes; the
+    // (1, 0, 0) copy does no attenuation maths.
+    LightFactors<float> factors[kLanes];
+    if (unit_att) {
+      for (int i = 0; i < kLanes; ++i) {
+        factors[i] = light_factors<float>(surf[i].p, surf[i].n, surf[i].v, light.position,
+                                          light.attenuation, true, vis[i]);
+      }
+    } else {
+      for (int i = 0; i < kLanes; ++i) {
+        factors[i] = light_factors<float>(surf[i].p, surf[i].n, surf[i].v, light.position,
+                                          light.attenuation, false, vis[i]);
+      }
+    }
+    auto& out = plane.lights[li];
+    for (int i = 0; i < kLanes; ++i) {
+      if (packet.valid[i]) out[packet.index[i]] = lit[i] ? factors[i] : LightFactors<float>{};
     }
   }
   return rays;
 }
 
-void allocate_lights(SamplePlane& plane, std::size_t lights, std::size_t pixels) {
-  plane.lights.resize(lights);
-  for (auto& l : plane.lights) l.resize(pixels);
-}
-
 template <class F>
-bool for_each_block(const SampleCache& cache, const RenderContext& ctx, F&& f) {
+bool for_each_packet(const SampleCache& cache, const RenderContext& ctx, F&& f) {
   return parallel_tiles(cache.width, cache.height, ctx.cancel, [&](int x0, int y0, int x1, int y1) {
     long long rays = 0;
-    for (int by = y0; by < y1; by += kPacketSide) {
-      for (int bx = x0; bx < x1; bx += kPacketSide) {
-        rays += f(Block{bx, by, std::min(bx + kPacketSide, x1), std::min(by + kPacketSide, y1)});
+    for (int by = y0; by < y1; by += 4) {
+      for (int bx = x0; bx < x1; bx += 4) {
+        Packet packet(cache, bx, by, std::min(bx + 4, x1), std::min(by + 4, y1));
+        rays += f(packet);
       }
     }
     if (ctx.rays != nullptr) ctx.rays->fetch_add(rays, std::memory_order_relaxed);
   });
+}
+
+// Sizes a plane for pixels and lights; buffers keep their capacity (no page faults on reuse).
+void size_plane(SamplePlane& plane, std::size_t pixels, std::size_t lights) {
+  plane.object.resize(pixels);
+  plane.prim.resize(pixels);
+  plane.t.resize(pixels);
+  plane.u.resize(pixels);
+  plane.v.resize(pixels);
+  plane.lights.resize(lights);
+  for (auto& l : plane.lights) l.resize(pixels);
 }
 }  // namespace
 
@@ -192,6 +221,14 @@ std::size_t SampleCache::bytes() const {
 SampleCache make_sample_cache(const Scene& scene, int width, int height, int target_spp, int row0,
                               int rows) {
   SampleCache cache;
+  reset_sample_cache(cache, scene, width, height, target_spp, row0, rows);
+  return cache;
+}
+
+void reset_sample_cache(SampleCache& cache, const Scene& scene, int width, int height,
+                        int target_spp, int row0, int rows) {
+  for (SamplePlane& plane : cache.planes) cache.spare.push_back(std::move(plane));
+  cache.planes.clear();
   cache.width = width;
   cache.image_height = height;
   cache.row0 = row0;
@@ -199,43 +236,50 @@ SampleCache make_sample_cache(const Scene& scene, int width, int height, int tar
   cache.target_spp = target_spp;
   cache.seed = scene.render.seed;
   cache.camera = make_camera_frame(scene.camera, width, height);
-  return cache;
 }
 
 bool add_samples(SampleCache& cache, const RenderContext& ctx, int count) {
   const int first = cache.samples();
   const std::size_t pixels = cache.pixel_count();
-  cache.planes.resize(static_cast<std::size_t>(first + count));
   for (int s = first; s < first + count; ++s) {
-    SamplePlane& plane = cache.planes[static_cast<std::size_t>(s)];
-    plane.object.resize(pixels);
-    plane.prim.resize(pixels);
-    plane.t.resize(pixels);
-    plane.u.resize(pixels);
-    plane.v.resize(pixels);
-    allocate_lights(plane, ctx.plan.lights.size(), pixels);
+    if (!cache.spare.empty()) {
+      cache.planes.push_back(std::move(cache.spare.back()));
+      cache.spare.pop_back();
+    } else {
+      cache.planes.emplace_back();
+    }
+    size_plane(cache.planes.back(), pixels, ctx.plan.lights.size());
   }
-  const bool done = for_each_block(cache, ctx, [&](const Block& block) {
+  const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
+  const bool done = for_each_packet(cache, ctx, [&](Packet& packet) {
     long long rays = 0;
     for (int s = first; s < first + count; ++s) {
       SamplePlane& plane = cache.planes[static_cast<std::size_t>(s)];
-      rays += trace_primary(cache, ctx, plane, s, block);
-      rays += shade_geometry(cache, ctx, plane, s, block);
+      packet.compute_directions(cache, pattern, sample_stratum(pattern, s));
+      rays += trace_primary(cache, ctx, plane, packet);
+      rays += shade_geometry(cache, ctx, plane, packet);
     }
     return rays;
   });
-  if (!done) cache.planes.resize(static_cast<std::size_t>(first));
+  if (!done) {
+    while (cache.samples() > first) {
+      cache.spare.push_back(std::move(cache.planes.back()));
+      cache.planes.pop_back();
+    }
+  }
   return done;
 }
 
 bool recompute_light_factors(SampleCache& cache, const RenderContext& ctx) {
   for (SamplePlane& plane : cache.planes) {
-    allocate_lights(plane, ctx.plan.lights.size(), cache.pixel_count());
+    size_plane(plane, cache.pixel_count(), ctx.plan.lights.size());
   }
-  return for_each_block(cache, ctx, [&](const Block& block) {
+  const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
+  return for_each_packet(cache, ctx, [&](Packet& packet) {
     long long rays = 0;
     for (int s = 0; s < cache.samples(); ++s) {
-      rays += shade_geometry(cache, ctx, cache.planes[static_cast<std::size_t>(s)], s, block);
+      packet.compute_directions(cache, pattern, sample_stratum(pattern, s));
+      rays += shade_geometry(cache, ctx, cache.planes[static_cast<std::size_t>(s)], packet);
     }
     return rays;
   });

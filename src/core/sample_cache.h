@@ -9,14 +9,15 @@
 #include "camera.h"
 #include "render_context.h"
 #include "shading.h"
+#include "uninitialized_buffer.h"
 
 namespace gloss {
 
 struct SamplePlane {
-  std::vector<std::int32_t> object;  // object index (= Embree geomID), -1 when the ray missed
-  std::vector<std::uint32_t> prim;   // triangle index; 0 for spheres
-  std::vector<float> t, u, v;        // hit distance (unit direction) and barycentrics
-  std::vector<std::vector<LightFactors<float>>> lights;  // [planned light][pixel]
+  UninitializedBuffer<std::int32_t> object;  // object index (= geomID), -1 when the ray missed
+  UninitializedBuffer<std::uint32_t> prim;   // triangle index; 0 for spheres
+  UninitializedBuffer<float> t, u, v;        // hit distance (unit direction) and barycentrics
+  std::vector<UninitializedBuffer<LightFactors<float>>> lights;  // [planned light][pixel]
 };
 
 struct SampleCache {
@@ -27,6 +28,7 @@ struct SampleCache {
   std::uint32_t seed = 0;
   CameraFrame camera;
   std::vector<SamplePlane> planes;
+  std::vector<SamplePlane> spare;  // planes of an earlier image, reused to avoid page faults
 
   int samples() const { return static_cast<int>(planes.size()); }
   std::size_t pixel_count() const { return static_cast<std::size_t>(width) * height; }
@@ -38,6 +40,10 @@ struct SampleCache {
 // memory; the progressive engine caches whole images.
 SampleCache make_sample_cache(const Scene& scene, int width, int height, int target_spp,
                               int row0 = 0, int rows = -1);
+
+// Restarts the cache for a new image (camera, size or pattern) keeping its memory.
+void reset_sample_cache(SampleCache& cache, const Scene& scene, int width, int height,
+                        int target_spp, int row0 = 0, int rows = -1);
 
 // Traces planes [samples(), samples() + count) and computes their light factors. On
 // cancellation the new planes are dropped and false is returned; the cache stays consistent.

@@ -13,12 +13,14 @@ namespace gloss {
 
 // What one point light contributes at one surface sample, before material constants and light
 // colours: diffuse = kd * Ld * diffuse_weight, specular = ks * Ls * spec_weight * c^alpha.
+// Trivial (no default member initialisers) so caches of them can stay uninitialised until
+// filled; write LightFactors<T>{} for zeros.
 template <class T>
 struct LightFactors {
-  T diffuse_weight = 0;  // ndl * att * vis, 0 when ndl <= 0
-  T spec_weight = 0;     // att * vis, 0 when ndl <= 0
-  T cos_phong = 0;       // R . V = dot(2 ndl n - l, v)
-  T cos_blinn = 0;       // N . H = dot(n, normalize(l + v))
+  T diffuse_weight;  // ndl * att * vis, 0 when ndl <= 0
+  T spec_weight;     // att * vis, 0 when ndl <= 0
+  T cos_phong;       // R . V = dot(2 ndl n - l, v)
+  T cos_blinn;       // N . H = dot(n, normalize(l + v))
 };
 
 // att = 1 / (c0 + c1 d + c2 d^2); the loader guarantees c >= 0, not all zero.
@@ -29,27 +31,32 @@ T attenuation(const glm::tvec3<T>& c, T d) {
 
 // Geometry part of the contract for one light at a surface point. p: point, n: unit shading
 // normal, v: unit direction to the eye, both already flipped to the viewer's side (two-sided).
-// vis: 1 or 0 from the shadow test. Returns zero factors for d = 0 or ndl <= 0.
+// vis: 1 or 0 from the shadow test. Returns zero factors for d = 0 (a light on the surface adds
+// nothing) or ndl <= 0. Written without branches (every quantity computed, then selected) so
+// that the renderer's loop over a 16-ray packet vectorizes.
 template <class T>
 LightFactors<T> light_factors(const glm::tvec3<T>& p, const glm::tvec3<T>& n,
                               const glm::tvec3<T>& v, const glm::tvec3<T>& light_position,
                               const glm::tvec3<T>& attenuation_coeffs, bool unit_attenuation,
                               T vis) {
-  LightFactors<T> f;
   const glm::tvec3<T> to_light = light_position - p;
-  const T d = glm::length(to_light);
-  if (!(d > T(0)) || !std::isfinite(d)) return f;  // light on the surface adds nothing
+  const T d = std::sqrt(glm::dot(to_light, to_light));
   const glm::tvec3<T> l = to_light / d;
   const T ndl = glm::dot(n, l);
-  if (!(ndl > T(0))) return f;
+  const bool lit = (d > T(0)) & (d < std::numeric_limits<T>::infinity()) & (ndl > T(0));
   const T att = unit_attenuation ? T(1) : attenuation(attenuation_coeffs, d);
-  f.spec_weight = att * vis;
-  f.diffuse_weight = ndl * f.spec_weight;
-  f.cos_phong = glm::dot(T(2) * ndl * n - l, v);
+  const T spec_weight = att * vis;
+  const T cos_phong = glm::dot(T(2) * ndl * n - l, v);
   const glm::tvec3<T> h = l + v;
-  const T h_len = glm::length(h);
+  const T h_len = std::sqrt(glm::dot(h, h));
   // l = -v leaves no half vector; ndl > 0 there means n . v < 0, and no highlight is defined.
-  f.cos_blinn = h_len > std::numeric_limits<T>::min() * T(4) ? glm::dot(n, h) / h_len : T(0);
+  const bool has_half = h_len > std::numeric_limits<T>::min() * T(4);
+  const T cos_blinn = glm::dot(n, h) / (has_half ? h_len : T(1));
+  LightFactors<T> f;
+  f.spec_weight = lit ? spec_weight : T(0);
+  f.diffuse_weight = lit ? ndl * spec_weight : T(0);
+  f.cos_phong = lit ? cos_phong : T(0);
+  f.cos_blinn = lit & has_half ? cos_blinn : T(0);
   return f;
 }
 
@@ -85,8 +92,7 @@ T model_cosine(const LightFactors<T>& f, ShadingModel model) {
 template <class T>
 T energy_normalization(ShadingModel model, T alpha) {
   const T pi = T(3.14159265358979323846);
-  return model == ShadingModel::phong ? (alpha + T(2)) / (T(2) * pi)
-                                      : (alpha + T(8)) / (T(8) * pi);
+  return model == ShadingModel::phong ? (alpha + T(2)) / (T(2) * pi) : (alpha + T(8)) / (T(8) * pi);
 }
 
 }  // namespace gloss
