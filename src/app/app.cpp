@@ -181,9 +181,9 @@ void draw_layout(App& app) {
   const float status_h = ImGui::GetFrameHeight() + 6.0f;
   const float top = main->Pos.y + menu_h;
   const float height = std::max(main->Size.y - menu_h - status_h, 1.0f);
-  const float side = std::clamp(main->Size.x * 0.25f, 260.0f, 420.0f);
+  const float side = std::clamp(main->Size.x * 0.23f, 280.0f, 420.0f);
   const float left = main->Pos.x, right = main->Pos.x + main->Size.x;
-  const float lights_h = std::floor(height * 0.55f);
+  const float lights_h = std::floor(height * 0.5f);
   draw_material_panel(app, ImVec2(left, top), ImVec2(side, height));
   draw_lights_panel(app, ImVec2(right - side, top), ImVec2(side, lights_h));
   draw_view_panel(app, ImVec2(right - side, top + lights_h), ImVec2(side, height - lights_h));

@@ -91,6 +91,8 @@ int run_script_without_display(const Scene& scene, const Script& script,
                    },
                    [&](const StatsAction&) { std::printf("stats: no display, no frames\n"); },
                    [&](const QuitAction&) { status = 0; },
+                   [&](const SleepAction&) {},    // no frames to let run
+                   [&](const AnimateAction&) {},  // no animation without frames
                    [&](const auto&) {},  // wait: every export above rendered to convergence
                },
                line.action);

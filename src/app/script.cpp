@@ -158,6 +158,12 @@ ScriptAction parse_line(Tokens& t) {
   }
   if (verb == "select") return SelectAction{t.index("object index")};
   if (verb == "stats") return StatsAction{};
+  if (verb == "sleep") {
+    const float seconds = t.number("seconds");
+    if (!(seconds >= 0.0f && seconds <= 3600.0f)) throw std::runtime_error("sleep 0..3600 s");
+    return SleepAction{seconds};
+  }
+  if (verb == "animate") return AnimateAction{t.on_off("animate")};
   if (verb == "quit") return QuitAction{};
   throw std::runtime_error("unknown command '" + verb + "'");
 }

@@ -36,12 +36,22 @@ struct EncodingAction {
 struct SelectAction {
   int object = 0;
 };
-struct StatsAction {};  // prints the editor's frame and latency measurements on stdout
+// Prints the editor's frame and latency measurements on stdout, then restarts the frame-time
+// window so consecutive `stats` lines measure the interval between them.
+struct StatsAction {};
+// Lets frames run for a while (measurements, animations).
+struct SleepAction {
+  double seconds = 1.0;
+};
+// Starts or stops the orbit-light animation.
+struct AnimateAction {
+  bool on = false;
+};
 struct QuitAction {};
 
-using ScriptAction =
-    std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction, ViewAction,
-                 ExposureAction, EncodingAction, SelectAction, StatsAction, QuitAction>;
+using ScriptAction = std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction,
+                                  ViewAction, ExposureAction, EncodingAction, SelectAction,
+                                  StatsAction, SleepAction, AnimateAction, QuitAction>;
 
 struct ScriptLine {
   int line = 0;  // 1-based line number in the file

@@ -61,6 +61,8 @@ bool ScriptPlayer::wait_done(App& app, double now_s) {
       return true;
     case Waiting::files:
       return app.exports.empty() && !app.capture.requested;
+    case Waiting::sleep:
+      return now_s >= m_deadline_s;
     case Waiting::none:
       return true;
   }
@@ -115,7 +117,14 @@ void ScriptPlayer::step(App& app) {
                    [&](const StatsAction&) {
                      std::printf("stats: %s\n", stats_text(app).c_str());
                      std::fflush(stdout);
+                     app.frame_times = FrameTimes{};
                    },
+                   [&](const SleepAction& a) {
+                     m_waiting = Waiting::sleep;
+                     m_deadline_s = now + a.seconds;
+                     hold = true;
+                   },
+                   [&](const AnimateAction& a) { app.view.orbit_light = a.on; },
                    [&](const QuitAction&) { app.quit = true; },
                    [&](const auto&) {},  // document lines ran above
                },

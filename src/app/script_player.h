@@ -20,7 +20,7 @@ class ScriptPlayer {
   bool finished() const { return m_next >= m_script.lines.size(); }
 
  private:
-  enum class Waiting { none, converge, shown, files };
+  enum class Waiting { none, converge, shown, files, sleep };
   bool wait_done(App& app, double now_s);
   void fail(App& app, const std::string& message, int status);
 

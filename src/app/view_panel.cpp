@@ -21,7 +21,7 @@ void draw_view_mode(App& app) {
   ImGui::RadioButton("terms 2x2 (2)", &mode, static_cast<int>(ViewMode::terms));
   ImGui::RadioButton("one term (3)", &mode, static_cast<int>(ViewMode::single));
   ImGui::SameLine();
-  ImGui::RadioButton("A/B Phong | Blinn (4)", &mode, static_cast<int>(ViewMode::ab));
+  ImGui::RadioButton("A/B Phong|Blinn (4)", &mode, static_cast<int>(ViewMode::ab));
   view.mode = static_cast<ViewMode>(mode);
   if (view.mode == ViewMode::single) {
     if (ImGui::BeginCombo("term", display_name(view.single))) {

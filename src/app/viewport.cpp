@@ -49,6 +49,7 @@ Viewport::Viewport() {
 Viewport::~Viewport() = default;
 
 void Viewport::upload(const RenderedFrame& frame, bool b_side) {
+  ++m_uploads;
   if (b_side) {
     m_b_total.upload(frame.images.total);
     return;
@@ -105,11 +106,11 @@ void Viewport::frame_shown(double now_s) {
 
 void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSettings& view,
                     double now_s) {
-  if (m_size.x < 1.0f || m_size.y < 1.0f) return;  // no layout yet
-  const float across = view.mode == ViewMode::terms || view.mode == ViewMode::ab ? 2.0f : 1.0f;
-  const float scale = m_framebuffer_scale * view.preview_scale / across;
-  const int width = std::clamp(static_cast<int>(m_size.x * scale), 1, kMaxImageSide);
-  const int height = std::clamp(static_cast<int>(m_size.y * scale), 1, kMaxImageSide);
+  if (m_panes[0].size.x < 1.0f || m_panes[0].size.y < 1.0f) return;  // no layout yet
+  // The panes were laid out by draw() this frame, in the document's aspect.
+  const float scale = m_framebuffer_scale * view.preview_scale;
+  const int width = std::clamp(static_cast<int>(m_panes[0].size.x * scale), 1, kMaxImageSide);
+  const int height = std::clamp(static_cast<int>(m_panes[0].size.y * scale), 1, kMaxImageSide);
   const bool terms = needs_terms(view);
   const bool ab = view.mode == ViewMode::ab;
   const bool changed = !m_pushed_any || revision != m_pushed_revision || width != m_render_width ||
@@ -169,17 +170,39 @@ bool Viewport::gesture_active(double now_s) const {
   return m_drag_button >= 0 || (m_last_wheel_s >= 0.0 && now_s - m_last_wheel_s < 0.6);
 }
 
+bool Viewport::TargetKey::operator==(const TargetKey& o) const {
+  return uploads == o.uploads && width == o.width && height == o.height &&
+         pane_count == o.pane_count && pane_x == o.pane_x && pane_y == o.pane_y &&
+         pane_w == o.pane_w && pane_h == o.pane_h && mode == o.mode && single == o.single &&
+         exposure == o.exposure && heat_scale == o.heat_scale && srgb == o.srgb;
+}
+
 void Viewport::draw_panes(const ViewSettings& view) {
   const int fw = std::max(1, static_cast<int>(m_size.x * m_framebuffer_scale));
   const int fh = std::max(1, static_cast<int>(m_size.y * m_framebuffer_scale));
-  m_target.resize(fw, fh);
-  m_target.bind();
-  glClearColor(0.11f, 0.11f, 0.12f, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT);
   DisplayParams params;
   params.exposure = view.exposure;
   params.srgb = view.srgb;
   params.heat_scale = shown_heat_scale(view, m_max_difference);
+  const TargetKey key{m_uploads,
+                      fw,
+                      fh,
+                      m_pane_count,
+                      m_panes[0].min.x - m_pos.x,
+                      m_panes[0].min.y - m_pos.y,
+                      m_panes[0].size.x,
+                      m_panes[0].size.y,
+                      view.mode,
+                      view.single,
+                      view.exposure,
+                      params.heat_scale,
+                      view.srgb};
+  if (key == m_target_key && m_target.texture() != 0) return;
+  m_target_key = key;
+  m_target.resize(fw, fh);
+  m_target.bind();
+  glClearColor(0.11f, 0.11f, 0.12f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
   for (int i = 0; i < m_pane_count; ++i) {
     const Pane& pane = m_panes[i];
     const int x = static_cast<int>((pane.min.x - m_pos.x) * m_framebuffer_scale);

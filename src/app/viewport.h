@@ -92,6 +92,21 @@ class Viewport {
   int m_pane_count = 1;
 
   float m_max_difference = 0.0f;  // largest |A - B| of the shown pair, linear
+
+  // What the off-screen target last showed: it is redrawn only when one of these changes, so an
+  // idle frame costs ImGui's draw alone (llvmpipe samples float textures slowly).
+  struct TargetKey {
+    std::uint64_t uploads = 0;
+    int width = 0, height = 0, pane_count = 0;
+    float pane_x = 0, pane_y = 0, pane_w = 0, pane_h = 0;
+    ViewMode mode = ViewMode::render;
+    TermView single = TermView::total;
+    float exposure = 0, heat_scale = 0;
+    bool srgb = false;
+    bool operator==(const TargetKey& o) const;
+  };
+  TargetKey m_target_key;
+  std::uint64_t m_uploads = 0;  // counts texture uploads
   LatencyProbe m_latency;
 
   // Gesture state (viewport_input.cpp).

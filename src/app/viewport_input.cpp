@@ -38,11 +38,16 @@ void Viewport::draw(App& app, ImVec2 pos, ImVec2 size) {
   m_framebuffer_scale = ImGui::GetIO().DisplayFramebufferScale.x;
   const bool grid = app.view.mode == ViewMode::terms || app.view.mode == ViewMode::ab;
   m_pane_count = grid ? 4 : 1;
-  const ImVec2 pane_size =
-      grid ? ImVec2(std::floor(size.x * 0.5f), std::floor(size.y * 0.5f)) : size;
+  // Each cell holds one pane with the document's aspect (what the exports render), centred.
+  const ImVec2 cell = grid ? ImVec2(std::floor(size.x * 0.5f), std::floor(size.y * 0.5f)) : size;
+  const RenderSettings& render = app.commands.scene().render;
+  const float aspect = static_cast<float>(render.width) / static_cast<float>(render.height);
+  const float pane_w = std::floor(std::min(cell.x, cell.y * aspect));
+  const ImVec2 pane_size(pane_w, std::floor(pane_w / aspect));
   for (int i = 0; i < m_pane_count; ++i) {
-    m_panes[i].min = ImVec2(pos.x + static_cast<float>(i % 2) * pane_size.x,
-                            pos.y + static_cast<float>(i / 2) * pane_size.y);
+    m_panes[i].min = ImVec2(
+        std::floor(pos.x + static_cast<float>(i % 2) * cell.x + (cell.x - pane_size.x) * 0.5f),
+        std::floor(pos.y + static_cast<float>(i / 2) * cell.y + (cell.y - pane_size.y) * 0.5f));
     m_panes[i].size = pane_size;
   }
 
