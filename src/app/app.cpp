@@ -33,6 +33,7 @@ double FrameTimes::largest() const {
 }
 
 App::App(GLFWwindow* glfw_window, Scene scene) : window(glfw_window), commands(std::move(scene)) {
+  glfwSetWindowUserPointer(window, this);  // the key queue's callback finds the App here
   config_folder = config_dir();
   recent = load_recent_files(config_folder / "recent.txt");
   std::error_code ec;
@@ -40,7 +41,9 @@ App::App(GLFWwindow* glfw_window, Scene scene) : window(glfw_window), commands(s
   swatches.start();
 }
 
-App::~App() = default;
+App::~App() {
+  glfwSetWindowUserPointer(window, nullptr);
+}
 
 double App::now_s() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -56,43 +59,6 @@ bool execute(App& app, const Command& command) {
 }
 
 namespace {
-
-void handle_shortcuts(App& app) {
-  const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantTextInput) return;
-  const bool ctrl = io.KeyCtrl, shift = io.KeyShift;
-  if (ImGui::IsKeyPressed(GLFW_KEY_F1, false)) app.show_help = !app.show_help;
-  if (ctrl && ImGui::IsKeyPressed(GLFW_KEY_Z)) shift ? redo(app) : undo(app);
-  if (ctrl && ImGui::IsKeyPressed(GLFW_KEY_Y)) redo(app);
-  if (ctrl && !shift && ImGui::IsKeyPressed(GLFW_KEY_S, false)) {
-    start_screenshot(app, app.view.screenshot_kind, "", false);
-  }
-  if (ctrl && shift && ImGui::IsKeyPressed(GLFW_KEY_S, false)) {
-    const std::string& path = app.commands.scene().path;
-    if (path.empty()) {
-      app.browser.show(BrowsePurpose::save_scene, app.view.screenshot_dir, "scene.json");
-    } else {
-      try {
-        save_scene_as(app, path);
-      } catch (const std::exception& e) {
-        app.notices.error(e.what(), app.now_s());
-      }
-    }
-  }
-  if (ctrl && ImGui::IsKeyPressed(GLFW_KEY_O, false)) {
-    const std::string& path = app.commands.scene().path;
-    app.browser.show(
-        BrowsePurpose::open_scene,
-        path.empty() ? std::filesystem::path(".") : std::filesystem::path(path).parent_path(), "");
-  }
-  if (ctrl && ImGui::IsKeyPressed(GLFW_KEY_Q, false)) request_quit(app);
-  if (!ctrl && !io.KeyAlt && !ImGui::IsAnyItemActive()) {
-    const ViewMode modes[4] = {ViewMode::render, ViewMode::terms, ViewMode::single, ViewMode::ab};
-    for (int i = 0; i < 4; ++i) {
-      if (ImGui::IsKeyPressed(GLFW_KEY_1 + i, false)) app.view.mode = modes[i];
-    }
-  }
-}
 
 void animate_light(App& app, double now_s) {
   const Scene& scene = app.commands.scene();

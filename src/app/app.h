@@ -50,6 +50,14 @@ struct WindowCapture {
   bool from_script = false;
 };
 
+// A key press (or auto-repeat) as GLFW reported it. Queued by a callback so that a press and
+// release arriving between two frames still count: ImGui 1.86 only sees key state per frame.
+struct KeyPress {
+  int key = 0;   // GLFW_KEY_*
+  int mods = 0;  // GLFW_MOD_* bits
+  bool repeat = false;
+};
+
 struct App {
   App(GLFWwindow* window, Scene scene);
   ~App();
@@ -74,6 +82,7 @@ struct App {
   std::string library_source;
   std::vector<PendingExport> exports;
   WindowCapture capture;
+  std::vector<KeyPress> key_presses;  // since the last frame
   FrameTimes frame_times;
 
   std::string title;          // the window title last set
@@ -117,6 +126,11 @@ void remember_recent(App& app, const std::string& path);
 void request_quit(App& app);
 void undo(App& app);
 void redo(App& app);
+
+// shortcuts.cpp: install_key_queue before ImGui's GLFW backend (which chains to it), then
+// handle_shortcuts once per frame.
+void install_key_queue(GLFWwindow* window);
+void handle_shortcuts(App& app);
 
 // Panels (one file each).
 void draw_menu_bar(App& app);

@@ -1,5 +1,7 @@
 // The status bar: the renderer's progress and speed, the UI's own frame time, the measured delay
 // from an edit to its image, and the newest message.
+#include <cstdio>
+
 #include <imgui.h>
 
 #include "app.h"
@@ -23,8 +25,14 @@ void draw_status_bar(App& app, ImVec2 pos, ImVec2 size) {
     const FrameInfo& info = frame->info;
     const double rays_per_s =
         info.pass_ms > 0.0 ? static_cast<double>(info.rays) / (info.pass_ms * 1e-3) : 0.0;
-    ImGui::Text("pass %d | %d/%d spp | %dx%d | %.1f ms/pass | %.2f Mrays/s | %s", info.pass,
-                info.spp, info.target_spp, info.width, info.height, info.pass_ms, rays_per_s * 1e-6,
+    char speed[48];
+    if (info.rays > 0) {
+      std::snprintf(speed, sizeof speed, "%.2f Mrays/s", rays_per_s * 1e-6);
+    } else {
+      std::snprintf(speed, sizeof speed, "re-shade, no rays");  // shade/exponent-class edits
+    }
+    ImGui::Text("pass %d | %d/%d spp | %dx%d | %.1f ms/pass | %s | %s", info.pass, info.spp,
+                info.target_spp, info.width, info.height, info.pass_ms, speed,
                 info.converged ? "converged" : "rendering");
   } else {
     ImGui::TextUnformatted("waiting for the first frame");

@@ -1,0 +1,75 @@
+// Keyboard shortcuts (listed in the help window and docs/editor.md). Presses come from a GLFW
+// callback queue, not ImGui's per-frame key state, so quick taps are never lost.
+#include <imgui.h>
+
+#include "app.h"
+
+namespace gloss {
+
+namespace {
+
+void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods) {
+  auto* app = static_cast<App*>(glfwGetWindowUserPointer(window));
+  if (app != nullptr && (action == GLFW_PRESS || action == GLFW_REPEAT)) {
+    app->key_presses.push_back({key, mods, action == GLFW_REPEAT});
+  }
+}
+
+void save_scene_shortcut(App& app) {
+  const std::string& path = app.commands.scene().path;
+  if (path.empty()) {
+    app.browser.show(BrowsePurpose::save_scene, app.view.screenshot_dir, "scene.json");
+    return;
+  }
+  try {
+    save_scene_as(app, path);
+  } catch (const std::exception& e) {
+    app.notices.error(e.what(), app.now_s());
+  }
+}
+
+}  // namespace
+
+void install_key_queue(GLFWwindow* window) {
+  glfwSetKeyCallback(window, on_key);
+}
+
+void handle_shortcuts(App& app) {
+  std::vector<KeyPress> presses;
+  presses.swap(app.key_presses);
+  // Keys typed into a text field belong to the field (Ctrl+Z there is the field's own undo).
+  if (ImGui::GetIO().WantTextInput) return;
+  for (const KeyPress& press : presses) {
+    const bool ctrl = (press.mods & GLFW_MOD_CONTROL) != 0;
+    const bool shift = (press.mods & GLFW_MOD_SHIFT) != 0;
+    if (ctrl && press.key == GLFW_KEY_Z) {
+      shift ? redo(app) : undo(app);
+    } else if (ctrl && press.key == GLFW_KEY_Y) {
+      redo(app);
+    }
+    if (press.repeat) continue;  // only undo and redo auto-repeat
+    if (press.key == GLFW_KEY_F1) app.show_help = !app.show_help;
+    if (ctrl && press.key == GLFW_KEY_S) {
+      shift ? save_scene_shortcut(app) : start_screenshot(app, app.view.screenshot_kind, "", false);
+    }
+    if (ctrl && press.key == GLFW_KEY_O) {
+      const std::string& path = app.commands.scene().path;
+      app.browser.show(BrowsePurpose::open_scene,
+                       path.empty() ? std::filesystem::path(app.view.screenshot_dir)
+                                    : std::filesystem::path(path).parent_path(),
+                       "");
+    }
+    if (ctrl && press.key == GLFW_KEY_Q) request_quit(app);
+    if (press.mods == 0 && press.key >= GLFW_KEY_1 && press.key <= GLFW_KEY_4 &&
+        !ImGui::IsAnyItemActive()) {
+      const ViewMode modes[4] = {ViewMode::render, ViewMode::terms, ViewMode::single, ViewMode::ab};
+      app.view.mode = modes[press.key - GLFW_KEY_1];
+    }
+    if (press.key == GLFW_KEY_ESCAPE) {
+      app.show_help = false;
+      app.browser.open = false;
+    }
+  }
+}
+
+}  // namespace gloss
