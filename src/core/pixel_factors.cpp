@@ -202,9 +202,11 @@ void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermIm
       term[3] += mt.ks_ls[li] * specular[li * stride];
     }
   };
+  ForkJoinFence fence;
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, pixels, 16384),
       [&](const tbb::blocked_range<std::size_t>& range) {
+        const ForkJoinFence::Task task(fence);
         DenormalsOff denormals_off;
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
           glm::vec3 term[4] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
@@ -223,6 +225,7 @@ void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermIm
           }
         }
       });
+  fence.join();
   for (std::size_t e = 0; e < factors.extra_pixel.size(); ++e) {
     glm::vec3 term[4];
     contribution(factors.extra_material[e], factors.extra_weight[e],

@@ -1,0 +1,131 @@
+#!/usr/bin/python3
+"""Plot of gloss-cli tradeoff's CSV: error (RMSE against the reference, log scale) against the
+median render time, one marker style per knob, every point labelled with its setting, and the
+Pareto front (no other point is both faster and more accurate) drawn as a step line.
+
+Usage: plot_tradeoff.py CSV OUT.png [--title TEXT]
+Run with Debian's /usr/bin/python3 (python3-matplotlib). Writes OUT.png as given (gloss-cli
+passes a temporary name and renames it into place).
+"""
+import argparse
+import csv
+import math
+from collections import Counter
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")  # no display; must precede pyplot
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib import ticker  # noqa: E402
+
+KNOB_STYLE = {  # marker, colour (colour-blind-safe Okabe-Ito palette)
+    "spp": ("o", "#0072B2"),
+    "tessellation": ("s", "#E69F00"),
+    "pow": ("^", "#009E73"),
+    "precision": ("D", "#CC79A7"),
+    "shading": ("v", "#D55E00"),
+    "resolution": ("P", "#56B4E9"),
+    "shadows": ("X", "#000000"),
+}
+
+
+def read_rows(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    for r in rows:
+        r["time_ms"] = float(r["time_ms"])
+        r["rmse"] = float(r["rmse"])
+    return rows
+
+
+def pareto_front(points):
+    """Points (time, error, ...) that no other point beats on both, sorted by time."""
+    front = []
+    for p in sorted(points, key=lambda p: (p[0], p[1])):
+        if not front or p[1] < front[-1][1]:
+            front.append(p)
+    return front
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("csv")
+    parser.add_argument("out")
+    parser.add_argument("--title", default="gloss tradeoff")
+    args = parser.parse_args()
+    rows = read_rows(args.csv)
+    if not rows:
+        sys.exit("no rows in " + args.csv)
+
+    # An exact match (rmse 0) cannot sit on a log axis: it is drawn at a floor below the smallest
+    # non-zero error and labelled "= ref".
+    nonzero = [r["rmse"] for r in rows if r["rmse"] > 0]
+    floor = (min(nonzero) / 4) if nonzero else 1e-6
+
+    # gloss-cli measures a configuration once, so rows of several knobs that all sit at the base
+    # setting carry identical figures: that point is the base, drawn once as a star.
+    counts = Counter((r["time_ms"], r["rmse"]) for r in rows)
+    base_key, base_count = counts.most_common(1)[0]
+    if base_count < 2:
+        base_key = None
+
+    fig, ax = plt.subplots(figsize=(10, 6), dpi=100)
+    points = []
+    for knob, (marker, colour) in KNOB_STYLE.items():
+        knob_rows = [r for r in rows if r["knob"] == knob]
+        if not knob_rows:
+            continue
+        xs = [r["time_ms"] for r in knob_rows]
+        ys = [max(r["rmse"], floor) for r in knob_rows]
+        if knob in ("spp", "tessellation", "resolution"):  # ordered settings: join them
+            ax.plot(xs, ys, color=colour, linewidth=0.8, alpha=0.5, zorder=2)
+        own = [(r, x, y) for r, x, y in zip(knob_rows, xs, ys)
+               if (r["time_ms"], r["rmse"]) != base_key]
+        ax.scatter([x for _, x, _ in own], [y for _, _, y in own], marker=marker, color=colour,
+                   s=46, label=knob, zorder=3, edgecolors="white", linewidths=0.6)
+        for r, x, y in own:
+            text = r["setting"] + (" = ref" if r["rmse"] == 0 else "")
+            ax.annotate(text, (x, y), textcoords="offset points", xytext=(5, 4), fontsize=7,
+                        color=colour)
+            points.append((x, y))
+    if base_key is not None:
+        bx, by = base_key[0], max(base_key[1], floor)
+        parts = [r["knob"] + " " + r["setting"] for r in rows
+                 if (r["time_ms"], r["rmse"]) == base_key]
+        lines = [", ".join(parts[i:i + 3]) for i in range(0, len(parts), 3)]
+        ax.scatter([bx], [by], marker="*", s=220, color="#444444", zorder=5,
+                   label="base:\n" + ",\n".join(lines))
+        ax.annotate("base", (bx, by), textcoords="offset points", xytext=(7, -11), fontsize=8,
+                    color="#444444")
+        points.append((bx, by))
+
+    front = pareto_front(points)
+    fx = [p[0] for p in front]
+    fy = [p[1] for p in front]
+    ax.step(fx, fy, where="post", color="#777777", linewidth=1.4, linestyle="--", zorder=1,
+            label="Pareto front")
+    ax.scatter(fx, fy, s=150, facecolors="none", edgecolors="#777777", linewidths=1.2, zorder=4)
+
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    # Plain milliseconds at 1-2-5 steps read better than powers of ten on a short time range.
+    ax.xaxis.set_major_locator(ticker.LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
+    ax.xaxis.set_major_formatter(ticker.FuncFormatter(lambda v, _: "%g" % v))
+    ax.xaxis.set_minor_formatter(ticker.NullFormatter())
+    ax.set_xlabel("median render time (ms, log scale)")
+    ax.set_ylabel("RMSE of the total image against the reference (log scale)")
+    ax.set_title(args.title, fontsize=10)
+    ax.grid(True, which="major", alpha=0.35)
+    ax.grid(True, which="minor", alpha=0.12)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
+    lo_y = min(fy) / 2
+    hi_y = max(p[1] for p in points) * 2
+    if math.isfinite(lo_y) and math.isfinite(hi_y) and lo_y > 0:
+        ax.set_ylim(lo_y, hi_y)
+    fig.tight_layout()
+    fig.savefig(args.out, format="png")
+
+
+if __name__ == "__main__":
+    main()
