@@ -83,6 +83,8 @@ struct App {
   std::vector<PendingExport> exports;
   WindowCapture capture;
   std::vector<KeyPress> key_presses;  // since the last frame
+  ImVec2 cursor_position;             // the cursor as of the last event (window pixels)
+  ImVec2 press_position[3];           // where each mouse button last went down (window pixels)
   FrameTimes frame_times;
 
   std::string title;          // the window title last set
@@ -127,9 +129,9 @@ void request_quit(App& app);
 void undo(App& app);
 void redo(App& app);
 
-// shortcuts.cpp: install_key_queue before ImGui's GLFW backend (which chains to it), then
-// handle_shortcuts once per frame.
-void install_key_queue(GLFWwindow* window);
+// shortcuts.cpp: install_input_callbacks before ImGui's GLFW backend (which chains to them),
+// then handle_shortcuts once per frame.
+void install_input_callbacks(GLFWwindow* window);
 void handle_shortcuts(App& app);
 
 // Panels (one file each).

@@ -66,6 +66,7 @@ void FileBrowser::show(BrowsePurpose what, const std::filesystem::path& start_fo
   error.clear();
   confirm_replace.clear();
   stale = true;
+  focus_name = true;
 }
 
 void FileBrowser::refresh() {
@@ -176,6 +177,10 @@ bool FileBrowser::draw(const RecentFiles& recent, std::string& chosen) {
     ImGui::EndChild();
   }
   ImGui::SetNextItemWidth(-170.0f);
+  if (focus_name) {
+    ImGui::SetKeyboardFocusHere();
+    focus_name = false;
+  }
   if (ImGui::InputText("##path", &name, ImGuiInputTextFlags_EnterReturnsTrue)) {
     done = confirm(chosen);
   }
@@ -184,7 +189,9 @@ bool FileBrowser::draw(const RecentFiles& recent, std::string& chosen) {
   ImGui::SameLine();
   if (ImGui::Button("Cancel", ImVec2(75, 0))) open = false;
   if (!error.empty()) {
-    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", error.c_str());
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    ImGui::TextWrapped("%s", error.c_str());
+    ImGui::PopStyleColor();
   } else {
     ImGui::TextDisabled("Double-click a folder to enter it; type a full path to go anywhere.");
   }

@@ -30,7 +30,8 @@ struct FileBrowser {
   std::string confirm_replace;  // a save target that exists and awaits a second click
   bool show_all = false;        // list files of every extension
   std::vector<Entry> entries;
-  bool stale = true;  // entries need re-reading
+  bool stale = true;        // entries need re-reading
+  bool focus_name = false;  // put the keyboard in the path field on the next draw
 
   void show(BrowsePurpose what, const std::filesystem::path& start_folder,
             const std::string& suggested_name);

@@ -112,7 +112,7 @@ int main(int argc, char** argv) {
   const std::string ini_path = (config_dir() / "imgui.ini").string();
   io.IniFilename = script ? nullptr : ini_path.c_str();
   ImGui::StyleColorsDark();
-  install_key_queue(window);  // before the backend, which chains to the callback it finds
+  install_input_callbacks(window);  // before the backend, which chains to what it finds
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
 

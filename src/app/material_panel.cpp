@@ -149,8 +149,10 @@ void draw_material_panel(App& app, ImVec2 pos, ImVec2 size) {
   const Material& material = scene.materials[material_index];
   const long users = std::count_if(scene.objects.begin(), scene.objects.end(),
                                    [&](const Object& o) { return o.material == material_index; });
-  ImGui::TextDisabled("material '%s'%s", scene.material_names[material_index].c_str(),
-                      users > 1 ? " (shared: edits change every object using it)" : "");
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  ImGui::TextWrapped("material '%s'%s", scene.material_names[material_index].c_str(),
+                     users > 1 ? " (shared: edits change every object using it)" : "");
+  ImGui::PopStyleColor();
 
   Material edited = material;
   bool changed = false;

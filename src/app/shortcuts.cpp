@@ -8,6 +8,22 @@ namespace gloss {
 
 namespace {
 
+// The cursor as of the event being handled (glfwGetCursorPos on X11 asks the server for the
+// pointer now, which may be later motion).
+void on_cursor(GLFWwindow* window, double x, double y) {
+  auto* app = static_cast<App*>(glfwGetWindowUserPointer(window));
+  if (app != nullptr) app->cursor_position = ImVec2(static_cast<float>(x), static_cast<float>(y));
+}
+
+// Where each mouse button went down: by the time ImGui's frame sees a press, later motion in
+// the same batch of events has already moved io.MousePos.
+void on_mouse_button(GLFWwindow* window, int button, int action, int /*mods*/) {
+  auto* app = static_cast<App*>(glfwGetWindowUserPointer(window));
+  if (app != nullptr && action == GLFW_PRESS && button >= 0 && button < 3) {
+    app->press_position[button] = app->cursor_position;
+  }
+}
+
 void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods) {
   auto* app = static_cast<App*>(glfwGetWindowUserPointer(window));
   if (app != nullptr && (action == GLFW_PRESS || action == GLFW_REPEAT)) {
@@ -30,8 +46,10 @@ void save_scene_shortcut(App& app) {
 
 }  // namespace
 
-void install_key_queue(GLFWwindow* window) {
+void install_input_callbacks(GLFWwindow* window) {
   glfwSetKeyCallback(window, on_key);
+  glfwSetMouseButtonCallback(window, on_mouse_button);
+  glfwSetCursorPosCallback(window, on_cursor);  // ImGui 1.86's backend installs none
 }
 
 void handle_shortcuts(App& app) {

@@ -123,8 +123,10 @@ void Viewport::handle_input(App& app) {
     m_drag_button = ImGui::IsMouseClicked(ImGuiMouseButton_Left)    ? ImGuiMouseButton_Left
                     : ImGui::IsMouseClicked(ImGuiMouseButton_Right) ? ImGuiMouseButton_Right
                                                                     : ImGuiMouseButton_Middle;
-    m_drag_distance = 0.0f;
-    m_drag_pane = pane_at(io.MousePos);
+    const ImVec2 press = app.press_position[m_drag_button];
+    // Motion in the same batch of events as the press already counts towards the drag.
+    m_drag_distance = std::hypot(io.MousePos.x - press.x, io.MousePos.y - press.y);
+    m_drag_pane = pane_at(press);
     m_drag_light = -1;
     if (m_drag_button == ImGuiMouseButton_Left && !io.KeyShift) {
       const Pane& pane = m_panes[m_drag_pane];
@@ -134,7 +136,7 @@ void Viewport::handle_input(App& app) {
                            static_cast<int>(pane.size.y), scene.lights[i].position, at)) {
           continue;
         }
-        const float dx = pane.min.x + at.x - io.MousePos.x, dy = pane.min.y + at.y - io.MousePos.y;
+        const float dx = pane.min.x + at.x - press.x, dy = pane.min.y + at.y - press.y;
         if (dx * dx + dy * dy <= (kMarkerRadius + 4.0f) * (kMarkerRadius + 4.0f)) {
           m_drag_light = i;
           app.selected_light = i;
