@@ -158,10 +158,11 @@ void Viewport::handle_input(App& app) {
                          local, scene.lights[m_drag_light].position);
       execute(app, SetLightValue{m_drag_light, LightField::position, moved});
     } else if (m_drag_distance > kClickSlop) {
-      // Drag right turns the scene to the right: the camera orbits the other way.
+      // The scene turns as if grabbed: a drag to the right carries its front to the right (the
+      // eye orbits left, positive yaw in orbit_camera); a drag down shows more of its top.
       const Camera camera = pan ? pan_camera(scene.camera, d.x, d.y, static_cast<int>(pane.size.y))
-                                : orbit_camera(scene.camera, -d.x * kOrbitDegreesPerPixel,
-                                               -d.y * kOrbitDegreesPerPixel);
+                                : orbit_camera(scene.camera, d.x * kOrbitDegreesPerPixel,
+                                               d.y * kOrbitDegreesPerPixel);
       execute(app, SetCamera{camera});
     }
   }
