@@ -1,5 +1,6 @@
 // gloss-cli render SCENE.json [-o OUT.png] [--pfm OUT.pfm] [--terms DIR] [--width N] [--height N]
 //                  [--spp N] [--model phong|blinn-phong] [--shadows on|off] [--srgb]
+//                  [--precision float|double]
 // Options override the scene's render block; the result is validated again before rendering.
 #include <chrono>
 #include <cstdio>
@@ -15,6 +16,7 @@
 #include "commands.h"
 #include "error.h"
 #include "image_io.h"
+#include "reference_renderer.h"
 #include "renderer.h"
 #include "scene_loader.h"
 #include "text_distance.h"
@@ -30,6 +32,7 @@ struct RenderArgs {
   std::string png, pfm, terms_dir;
   long long width = 0, height = 0, spp = 0;
   std::string model, shadows;
+  std::string precision = "float";  // float: the fast renderer; double: the reference path
   bool srgb = false;
   CLI::Option *png_option = nullptr, *pfm_option = nullptr, *terms_option = nullptr;
   CLI::Option *width_option = nullptr, *height_option = nullptr, *spp_option = nullptr;
@@ -69,6 +72,10 @@ void apply_overrides(const RenderArgs& args, Scene& scene) {
     render.shadows = args.shadows == "on";
   }
   if (args.srgb) render.srgb = true;
+  if (args.precision != "float" && args.precision != "double") {
+    throw InputError(args.scene, "expected 'float' or 'double', got '" + args.precision + "'", 0, 0,
+                     "--precision");
+  }
   validate_scene(scene);
 }
 
@@ -88,22 +95,22 @@ void check_writable_folder(const fs::path& folder, const std::string& output) {
   fs::remove(probe, ec);
 }
 
-std::string settings_summary(const RenderSettings& r) {
+std::string settings_summary(const RenderSettings& r, const std::string& precision) {
   return std::to_string(r.width) + "x" + std::to_string(r.height) + ", " + std::to_string(r.spp) +
          " spp, " + to_string(r.model) + ", shadows " + (r.shadows ? "on" : "off") +
          ", energy_normalize " + (r.energy_normalize ? "on" : "off") + ", srgb " +
          (r.srgb ? "on" : "off") + ", pow " + (r.pow == PowMode::exact ? "exact" : "fast") +
-         ", seed " + std::to_string(r.seed);
+         ", seed " + std::to_string(r.seed) + ", precision " + precision;
 }
 
 // Writes every requested file; if one fails, the ones already written by this run are removed
 // so that a failure leaves no output behind.
 class OutputWriter {
  public:
-  explicit OutputWriter(const Scene& scene) : m_srgb(scene.render.srgb) {
+  OutputWriter(const Scene& scene, const std::string& precision) : m_srgb(scene.render.srgb) {
     m_text = {{"Software", std::string("gloss ") + kGlossVersion},
               {"gloss:scene", scene_to_json_text(scene)},
-              {"gloss:settings", settings_summary(scene.render)}};
+              {"gloss:settings", settings_summary(scene.render, precision)}};
   }
   ~OutputWriter() {
     if (m_committed) return;
@@ -150,11 +157,13 @@ void run_render(RenderArgs args) {
   RenderOptions options;
   options.terms = !args.terms_dir.empty();
   const auto start = std::chrono::steady_clock::now();
-  const TermImages images = render(scene, options);
+  const TermImages images = args.precision == "double"
+                                ? render_reference<double>(scene, ReferenceOptions{})
+                                : render(scene, options);
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
-  OutputWriter writer(scene);
+  OutputWriter writer(scene, args.precision);
   if (!args.png.empty()) writer.png(args.png, images.total);
   if (!args.pfm.empty()) writer.pfm(args.pfm, images.total);
   if (!args.terms_dir.empty()) {
@@ -167,8 +176,8 @@ void run_render(RenderArgs args) {
 
   char time_text[64];
   std::snprintf(time_text, sizeof time_text, "%.1f ms", ms);
-  std::cout << "rendered " << args.scene << " (" << settings_summary(scene.render) << ") in "
-            << time_text << "\n";
+  std::cout << "rendered " << args.scene << " (" << settings_summary(scene.render, args.precision)
+            << ") in " << time_text << "\n";
   for (const std::string& path : writer.commit()) std::cout << "wrote " << path << "\n";
   for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
 }
@@ -192,6 +201,9 @@ void add_render_command(CLI::App& app) {
   args->model_option = sub->add_option("--model", args->model, "phong or blinn-phong");
   args->shadows_option = sub->add_option("--shadows", args->shadows, "on or off");
   sub->add_flag("--srgb", args->srgb, "sRGB-encode the PNGs (default: clamp only)");
+  sub->add_option(
+      "--precision", args->precision,
+      "float (default: the fast renderer) or double (the reference path, docs/accuracy.md)");
   sub->callback([args] { run_render(*args); });
 }
 
