@@ -42,6 +42,7 @@ TEST(Autosave, RoundTripGivesBackTheEditedDocument) {
   // Materials are found through their objects: the JSON form keeps names, not indices.
   const Scene& back = recovery->scene;
   EXPECT_NEAR(back.materials[back.objects[1].material].diffuse.x, 0.75164f, 1e-6f);  // gold
+  EXPECT_EQ(back.materials[back.objects[1].material].preset, "gold");  // Reset to preset works
 }
 
 TEST(Autosave, ContinuousEditingStillSavesAfterTheLongestDelay) {
