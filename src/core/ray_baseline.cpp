@@ -8,6 +8,7 @@
 
 #include "camera.h"
 #include "parallel_tiles.h"
+#include "ray_packet.h"
 
 namespace gloss {
 
@@ -23,9 +24,7 @@ long long trace_rays_raw(const Scene& scene, const EmbreeScene& embree, int widt
   std::atomic<long long> total{0};
   parallel_tiles(width, height, nullptr, [&](int x0, int y0, int x1, int y1) {
     long long rays = 0;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    RTCIntersectContext context = coherent_context();
     for (int by = y0; by < y1; by += 4) {
       for (int bx = x0; bx < x1; bx += 4) {
         RTCRayHit16 rh;
@@ -34,18 +33,7 @@ long long trace_rays_raw(const Scene& scene, const EmbreeScene& embree, int widt
           const int x = bx + i % 4, y = by + i / 4;
           valid[i] = x < x1 && y < y1 ? -1 : 0;
           const glm::vec3 d = primary_direction(cam, x + 0.5f, y + 0.5f, width, height);
-          rh.ray.org_x[i] = cam.eye.x;
-          rh.ray.org_y[i] = cam.eye.y;
-          rh.ray.org_z[i] = cam.eye.z;
-          rh.ray.dir_x[i] = d.x;
-          rh.ray.dir_y[i] = d.y;
-          rh.ray.dir_z[i] = d.z;
-          rh.ray.tnear[i] = 0.0f;
-          rh.ray.tfar[i] = std::numeric_limits<float>::infinity();
-          rh.ray.time[i] = 0.0f;
-          rh.ray.mask[i] = 0xffffffffu;
-          rh.ray.id[i] = static_cast<unsigned>(i);
-          rh.ray.flags[i] = 0;
+          set_packet_ray(rh.ray, i, cam.eye, d);
           rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
           rays += valid[i] ? 1 : 0;
         }
@@ -61,18 +49,7 @@ long long trace_rays_raw(const Scene& scene, const EmbreeScene& embree, int widt
             const glm::vec3 p = cam.eye + rh.ray.tfar[i] * d;
             const glm::vec3 o = svalid[i] ? p + 1e-4f * glm::normalize(ng) : glm::vec3(0.0f);
             const glm::vec3 to = light - o;
-            sr.org_x[i] = o.x;
-            sr.org_y[i] = o.y;
-            sr.org_z[i] = o.z;
-            sr.dir_x[i] = to.x;
-            sr.dir_y[i] = to.y;
-            sr.dir_z[i] = to.z;
-            sr.tnear[i] = 0.0f;
-            sr.tfar[i] = 1.0f - 1e-5f;
-            sr.time[i] = 0.0f;
-            sr.mask[i] = 0xffffffffu;
-            sr.id[i] = static_cast<unsigned>(i);
-            sr.flags[i] = 0;
+            set_packet_ray(sr, i, o, to, kShadowRayEnd);
             rays += svalid[i] ? 1 : 0;
           }
           rtcOccluded16(svalid, embree.handle(), &context, &sr);

@@ -7,6 +7,7 @@
 #include <embree3/rtcore.h>
 
 #include "parallel_tiles.h"
+#include "ray_packet.h"
 #include "sampling.h"
 #include "surface.h"
 
@@ -47,30 +48,12 @@ struct Packet {
   }
 };
 
-RTCIntersectContext coherent_context() {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-  return context;
-}
-
 long long trace_primary(const SampleCache& cache, const RenderContext& ctx, SamplePlane& plane,
                         const Packet& packet) {
   RTCRayHit16 rh;
   const glm::vec3 eye = cache.camera.eye;
   for (int i = 0; i < kLanes; ++i) {
-    rh.ray.org_x[i] = eye.x;
-    rh.ray.org_y[i] = eye.y;
-    rh.ray.org_z[i] = eye.z;
-    rh.ray.dir_x[i] = packet.dir[i].x;
-    rh.ray.dir_y[i] = packet.dir[i].y;
-    rh.ray.dir_z[i] = packet.dir[i].z;
-    rh.ray.tnear[i] = 0.0f;
-    rh.ray.tfar[i] = std::numeric_limits<float>::infinity();
-    rh.ray.time[i] = 0.0f;
-    rh.ray.mask[i] = 0xffffffffu;
-    rh.ray.id[i] = static_cast<unsigned>(i);
-    rh.ray.flags[i] = 0;
+    set_packet_ray(rh.ray, i, eye, packet.dir[i]);
     rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
   }
@@ -139,21 +122,7 @@ long long shade_geometry(const SampleCache& cache, const RenderContext& ctx, Sam
       RTCRay16 ray;
       for (int i = 0; i < kLanes; ++i) {
         const glm::vec3 org = shadow_ray_origin(surf[i], t[i]);
-        const glm::vec3 to = light.position - org;
-        ray.org_x[i] = org.x;
-        ray.org_y[i] = org.y;
-        ray.org_z[i] = org.z;
-        ray.dir_x[i] = to.x;
-        ray.dir_y[i] = to.y;
-        ray.dir_z[i] = to.z;
-        ray.tnear[i] = 0.0f;
-        // The segment ends just short of the light: a light resting on a surface still lights
-        // the side it is on.
-        ray.tfar[i] = 1.0f - 1e-5f;
-        ray.time[i] = 0.0f;
-        ray.mask[i] = 0xffffffffu;
-        ray.id[i] = static_cast<unsigned>(i);
-        ray.flags[i] = 0;
+        set_packet_ray(ray, i, org, light.position - org, kShadowRayEnd);
         rays += lit[i] ? 1 : 0;
       }
       rtcOccluded16(lit, ctx.embree->handle(), &context, &ray);

@@ -57,11 +57,6 @@ inline Surface surface_from(const HitGeometry& g, const glm::vec3& origin, const
   return s;
 }
 
-inline Surface surface_at(const Object& object, std::uint32_t prim, float u, float v,
-                          const glm::vec3& origin, const glm::vec3& dir, float t) {
-  return surface_from(hit_geometry(object, prim, u, v), origin, dir, t);
-}
-
 // Recomputes a sphere hit distance in double precision from Embree's float estimate, so that
 // hit points and normals stay accurate far from the origin (coordinates up to 1e5).
 float refine_sphere_hit(const Object& sphere, const glm::vec3& origin, const glm::vec3& dir,
