@@ -48,6 +48,47 @@ def pareto_front(points):
     return front
 
 
+def label_text(knob, setting):
+    """Settings that do not name their knob get it in front ("pow fast", "tess 8")."""
+    if knob in ("spp", "resolution"):
+        return setting
+    return ("tess" if knob == "tessellation" else knob) + " " + setting
+
+
+def place_labels(fig, ax, labels):
+    """Labels each point beside it; labels that overlap are pushed up, one above the other, and
+    a label moved away from its point is joined to it by a thin line."""
+    texts = [ax.annotate(text, (x, y), textcoords="offset points", xytext=(5, 4), fontsize=7,
+                         color=colour) for x, y, text, colour in labels]
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    points_per_pixel = 72.0 / fig.dpi
+    for _ in range(200):
+        moved = False
+        boxes = [t.get_window_extent(renderer) for t in texts]
+        for i in range(len(texts)):
+            for j in range(len(texts)):
+                if i == j or not boxes[i].overlaps(boxes[j]) or boxes[i].y0 < boxes[j].y0:
+                    continue
+                if boxes[i].y0 == boxes[j].y0 and i < j:
+                    continue
+                # i sits on or above j: lift i clear of j.
+                lift = (boxes[j].y1 - boxes[i].y0 + 1.0) * points_per_pixel
+                ox, oy = texts[i].xyann
+                texts[i].xyann = (ox, oy + lift)
+                boxes[i] = texts[i].get_window_extent(renderer)
+                moved = True
+        if not moved:
+            break
+    for t, (x, y, text, colour) in zip(texts, labels):
+        ox, oy = t.xyann
+        if oy > 10:
+            t.remove()
+            ax.annotate(text, (x, y), textcoords="offset points", xytext=(ox, oy), fontsize=7,
+                        color=colour, arrowprops=dict(arrowstyle="-", color=colour, lw=0.5,
+                                                      alpha=0.7, shrinkA=0, shrinkB=3))
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("csv")
@@ -72,6 +113,7 @@ def main():
 
     fig, ax = plt.subplots(figsize=(10, 6), dpi=100)
     points = []
+    labels = []  # (x, y, knob, text, colour), placed once every point is known
     for knob, (marker, colour) in KNOB_STYLE.items():
         knob_rows = [r for r in rows if r["knob"] == knob]
         if not knob_rows:
@@ -85,20 +127,21 @@ def main():
         ax.scatter([x for _, x, _ in own], [y for _, _, y in own], marker=marker, color=colour,
                    s=46, label=knob, zorder=3, edgecolors="white", linewidths=0.6)
         for r, x, y in own:
-            text = r["setting"] + (" = ref" if r["rmse"] == 0 else "")
-            ax.annotate(text, (x, y), textcoords="offset points", xytext=(5, 4), fontsize=7,
-                        color=colour)
+            labels.append((x, y, label_text(knob, r["setting"]) +
+                           (" = ref" if r["rmse"] == 0 else ""), colour))
             points.append((x, y))
     if base_key is not None:
         bx, by = base_key[0], max(base_key[1], floor)
         parts = [r["knob"] + " " + r["setting"] for r in rows
                  if (r["time_ms"], r["rmse"]) == base_key]
         lines = [", ".join(parts[i:i + 3]) for i in range(0, len(parts), 3)]
-        ax.scatter([bx], [by], marker="*", s=220, color="#444444", zorder=5,
+        # Under the knobs' markers, which can sit on it when a knob changes little.
+        ax.scatter([bx], [by], marker="*", s=200, color="#444444", alpha=0.8, zorder=2.5,
                    label="base:\n" + ",\n".join(lines))
         ax.annotate("base", (bx, by), textcoords="offset points", xytext=(7, -11), fontsize=8,
                     color="#444444")
         points.append((bx, by))
+
 
     front = pareto_front(points)
     fx = [p[0] for p in front]
@@ -113,9 +156,11 @@ def main():
     ax.xaxis.set_major_locator(ticker.LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
     ax.xaxis.set_major_formatter(ticker.FuncFormatter(lambda v, _: "%g" % v))
     ax.xaxis.set_minor_formatter(ticker.NullFormatter())
-    ax.set_xlabel("median render time (ms, log scale)")
+    ax.set_xlabel("median time of one render, BVH build included (ms, log scale)")
     ax.set_ylabel("RMSE of the total image against the reference (log scale)")
     ax.set_title(args.title, fontsize=10)
+    ax.text(0.01, 0.01, "better: down and to the left", transform=ax.transAxes, fontsize=8,
+            color="#555555", ha="left", va="bottom")
     ax.grid(True, which="major", alpha=0.35)
     ax.grid(True, which="minor", alpha=0.12)
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
@@ -124,6 +169,7 @@ def main():
     if math.isfinite(lo_y) and math.isfinite(hi_y) and lo_y > 0:
         ax.set_ylim(lo_y, hi_y)
     fig.tight_layout()
+    place_labels(fig, ax, labels)  # after the layout: it measures the labels on the canvas
     fig.savefig(args.out, format="png")
 
 
