@@ -66,7 +66,7 @@ void animate_light(App& app, double now_s) {
   app.selected_light = std::clamp(app.selected_light, 0, static_cast<int>(scene.lights.size()) - 1);
   // Steps longer than 0.1 s (a stalled frame) are cut so the light never jumps.
   const float dt = static_cast<float>(std::min(now_s - app.last_frame_s, 0.1));
-  const PointLight& light = scene.lights[app.selected_light];
+  const PointLight light = scene.lights[app.selected_light];  // a copy: commands replace the vector
   const glm::vec3 centre(scene.camera.target.x, light.position.y, scene.camera.target.z);
   execute(app, SetLightValue{app.selected_light, LightField::position,
                              rotate_about_y(light.position, centre, app.view.orbit_speed * dt)});

@@ -41,7 +41,8 @@ void remember_recent(App& app, const std::string& path) {
   }
 }
 
-void open_scene(App& app, const std::string& path) {
+void open_scene(App& app, const std::string& requested) {
+  const std::string path = requested;  // may refer into the recent list, which changes below
   std::vector<std::string> warnings;
   auto scene = std::make_shared<Scene>(load_scene(path, &warnings));
   app.commands.execute(
@@ -109,9 +110,10 @@ void add_obj(App& app, const std::string& path) {
                    app.now_s());
 }
 
-void save_scene_as(App& app, const std::string& path) {
+void save_scene_as(App& app, const std::string& requested) {
+  const std::string path = requested;  // may refer into the document, which changes below
   Scene scene = app.commands.scene();
-  scene.path = path;
+  move_document(scene, path);
   save_scene(scene, path);
   app.commands.set_path(path);
   app.commands.mark_saved();

@@ -74,9 +74,9 @@ void CommandLayer::reset(Scene scene, bool saved) {
 namespace gloss {
 
 void CommandLayer::set_path(const std::string& path) {
-  m_scene.path = path;
-  for (Step& step : m_undo) step.other.path = path;
-  for (Step& step : m_redo) step.other.path = path;
+  move_document(m_scene, path);
+  for (Step& step : m_undo) move_document(step.other, path);
+  for (Step& step : m_redo) move_document(step.other, path);
   ++m_revision;
 }
 

@@ -38,7 +38,8 @@ class CommandLayer {
   void reset(Scene scene, bool saved);
 
   // Records that the document now lives at path (save as): the path is the document's identity,
-  // not an edit, so every undo step takes it too and no step is recorded.
+  // not an edit, so every undo step takes it too (document.h's move_document) and no step is
+  // recorded.
   void set_path(const std::string& path);
 
   // Changes with every change of the document (edit, undo, redo, reset); never repeats.

@@ -42,6 +42,10 @@ bool same_scene(const Scene& a, const Scene& b);
 // shipped default scene is missing. Throws when the preset table cannot be read.
 Scene builtin_scene();
 
+// Gives scene a new file path, rewriting the relative file names of its objects (OBJ meshes) so
+// they still name the same files from the new folder.
+void move_document(Scene& scene, const std::string& path);
+
 // "object 2 (gold sphere)" style names for menus and labels; "object 2" when unnamed.
 std::string object_label(const Scene& scene, int object);
 

@@ -57,7 +57,7 @@ void draw_lights(App& app) {
   }
   ImGui::EndChild();
 
-  const PointLight& light = scene.lights[app.selected_light];
+  const PointLight light = scene.lights[app.selected_light];  // a copy: commands replace the vector
   PointLight edited = light;
   bool changed = false;
   changed |= ImGui::DragFloat3("position", &edited.position.x, 0.02f, -1e4f, 1e4f, "%.2f");

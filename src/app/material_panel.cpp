@@ -146,7 +146,8 @@ void draw_material_panel(App& app, ImVec2 pos, ImVec2 size) {
     ImGui::EndCombo();
   }
   const int material_index = scene.objects[object].material;
-  const Material& material = scene.materials[material_index];
+  // A copy: an executed command replaces the scene's vectors, and this is read afterwards.
+  const Material material = scene.materials[material_index];
   const long users = std::count_if(scene.objects.begin(), scene.objects.end(),
                                    [&](const Object& o) { return o.material == material_index; });
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);

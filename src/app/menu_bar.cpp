@@ -19,13 +19,15 @@ void file_menu(App& app) {
     app.browser.show(BrowsePurpose::open_scene, scene_folder(app), "");
   }
   if (ImGui::BeginMenu("Open recent", !app.recent.paths.empty())) {
+    std::string chosen;  // opening reorders the list: act after the loop
     for (const std::string& path : app.recent.paths) {
-      if (ImGui::MenuItem(path.c_str())) {
-        try {
-          open_scene(app, path);
-        } catch (const std::exception& e) {
-          app.notices.error(e.what(), app.now_s());
-        }
+      if (ImGui::MenuItem(path.c_str())) chosen = path;
+    }
+    if (!chosen.empty()) {
+      try {
+        open_scene(app, chosen);
+      } catch (const std::exception& e) {
+        app.notices.error(e.what(), app.now_s());
       }
     }
     ImGui::EndMenu();

@@ -127,6 +127,22 @@ TEST(CommandLayer, SaveAsKeepsThePathThroughUndo) {
   EXPECT_EQ(layer.scene().path, "/tmp/elsewhere.json");
 }
 
+TEST(CommandLayer, SaveAsRebasesRelativeMeshFiles) {
+  Scene scene = test::two_sphere_scene();
+  scene.path = "/data/scenes/room.json";
+  scene.objects[0].params.file = "../models/cup.obj";
+  scene.objects[1].params.file = "/abs/teapot.obj";
+  CommandLayer layer(scene);
+  layer.execute(SetShadows{false});
+  layer.set_path("/data/out/copy.json");
+  EXPECT_EQ(layer.scene().objects[0].params.file, "../models/cup.obj");  // same depth
+  layer.set_path("/data/copy.json");
+  EXPECT_EQ(layer.scene().objects[0].params.file, "models/cup.obj");
+  EXPECT_EQ(layer.scene().objects[1].params.file, "/abs/teapot.obj");
+  layer.undo();
+  EXPECT_EQ(layer.scene().objects[0].params.file, "models/cup.obj");
+}
+
 TEST(CommandLayer, HistoryIsBounded) {
   CommandLayer layer(test::two_sphere_scene());
   for (std::size_t i = 0; i < CommandLayer::kMaxSteps + 20; ++i) {
