@@ -171,6 +171,7 @@ void run_frame(App& app) {
   const double frame_start = app.now_s();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  replay_key_taps(app);
   ImGui::NewFrame();
 
   app.notices.expire(frame_start);

@@ -83,6 +83,8 @@ struct App {
   std::vector<PendingExport> exports;
   WindowCapture capture;
   std::vector<KeyPress> key_presses;  // since the last frame
+  std::vector<int> key_taps;          // keys pressed and released since the last frame
+  std::vector<int> taps_down;         // taps shown to ImGui as held during this frame
   ImVec2 cursor_position;             // the cursor as of the last event (window pixels)
   ImVec2 press_position[3];           // where each mouse button last went down (window pixels)
   FrameTimes frame_times;
@@ -132,6 +134,8 @@ void redo(App& app);
 // shortcuts.cpp: install_input_callbacks before ImGui's GLFW backend (which chains to them),
 // then handle_shortcuts once per frame.
 void install_input_callbacks(GLFWwindow* window);
+// Between the backend's NewFrame and ImGui::NewFrame: shows this frame's taps as held keys.
+void replay_key_taps(App& app);
 void handle_shortcuts(App& app);
 
 // Panels (one file each).

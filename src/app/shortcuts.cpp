@@ -1,5 +1,7 @@
-// Keyboard shortcuts (listed in the help window and docs/editor.md). Presses come from a GLFW
-// callback queue, not ImGui's per-frame key state, so quick taps are never lost.
+// Keyboard shortcuts (listed in the help window and docs/editor.md) and the input plumbing under
+// them. Dear ImGui 1.86 reads key state once per frame, so a press and release that arrive
+// between two frames would be lost: shortcuts read a queue of GLFW key events instead, and such
+// taps are replayed to ImGui as held for one frame (Enter in a text field, Backspace ...).
 #include <imgui.h>
 
 #include "app.h"
@@ -26,8 +28,16 @@ void on_mouse_button(GLFWwindow* window, int button, int action, int /*mods*/) {
 
 void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods) {
   auto* app = static_cast<App*>(glfwGetWindowUserPointer(window));
-  if (app != nullptr && (action == GLFW_PRESS || action == GLFW_REPEAT)) {
+  if (app == nullptr) return;
+  if (action == GLFW_PRESS || action == GLFW_REPEAT) {
     app->key_presses.push_back({key, mods, action == GLFW_REPEAT});
+  } else if (action == GLFW_RELEASE) {
+    for (const KeyPress& press : app->key_presses) {
+      if (press.key == key) {
+        app->key_taps.push_back(key);
+        break;
+      }
+    }
   }
 }
 
@@ -50,6 +60,26 @@ void install_input_callbacks(GLFWwindow* window) {
   glfwSetKeyCallback(window, on_key);
   glfwSetMouseButtonCallback(window, on_mouse_button);
   glfwSetCursorPosCallback(window, on_cursor);  // ImGui 1.86's backend installs none
+}
+
+void replay_key_taps(App& app) {
+  ImGuiIO& io = ImGui::GetIO();
+  for (int key : app.taps_down) {
+    if (glfwGetKey(app.window, key) == GLFW_RELEASE) io.KeysDown[key] = false;
+  }
+  app.taps_down.clear();
+  for (int key : app.key_taps) {
+    if (key >= 0 && key < IM_ARRAYSIZE(io.KeysDown)) {
+      io.KeysDown[key] = true;
+      app.taps_down.push_back(key);
+    }
+  }
+  app.key_taps.clear();
+  // The backend derives the modifiers from the key state in its callback; keep them in step.
+  io.KeyCtrl = io.KeysDown[GLFW_KEY_LEFT_CONTROL] || io.KeysDown[GLFW_KEY_RIGHT_CONTROL];
+  io.KeyShift = io.KeysDown[GLFW_KEY_LEFT_SHIFT] || io.KeysDown[GLFW_KEY_RIGHT_SHIFT];
+  io.KeyAlt = io.KeysDown[GLFW_KEY_LEFT_ALT] || io.KeysDown[GLFW_KEY_RIGHT_ALT];
+  io.KeySuper = io.KeysDown[GLFW_KEY_LEFT_SUPER] || io.KeysDown[GLFW_KEY_RIGHT_SUPER];
 }
 
 void handle_shortcuts(App& app) {
