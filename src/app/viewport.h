@@ -113,7 +113,9 @@ class Viewport {
   int m_drag_button = -1;  // ImGuiMouseButton being dragged in the viewport, -1 none
   int m_drag_light = -1;   // light being dragged, -1 none
   int m_drag_pane = 0;
-  float m_drag_distance = 0.0f;  // pixels moved since the press
+  float m_drag_distance = 0.0f;  // farthest the cursor went from the press, pixels
+  ImVec2 m_drag_press{0, 0};     // where the drag's button went down (screen)
+  ImVec2 m_drag_last{0, 0};      // cursor position the drag has consumed up to
   double m_last_wheel_s = -1.0;
 };
 

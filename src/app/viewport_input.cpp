@@ -124,9 +124,12 @@ void Viewport::handle_input(App& app) {
     m_drag_button = ImGui::IsMouseClicked(ImGuiMouseButton_Left)    ? ImGuiMouseButton_Left
                     : ImGui::IsMouseClicked(ImGuiMouseButton_Right) ? ImGuiMouseButton_Right
                                                                     : ImGuiMouseButton_Middle;
+    // Motion before the press (in the same batch of events) is not part of the drag; motion
+    // after it is, even when ImGui sees both in one frame.
     const ImVec2 press = app.press_position[m_drag_button];
-    // Motion in the same batch of events as the press already counts towards the drag.
-    m_drag_distance = std::hypot(io.MousePos.x - press.x, io.MousePos.y - press.y);
+    m_drag_press = press;
+    m_drag_last = press;
+    m_drag_distance = 0.0f;
     m_drag_pane = pane_at(press);
     m_drag_light = -1;
     if (m_drag_button == ImGuiMouseButton_Left && !io.KeyShift) {
@@ -146,10 +149,11 @@ void Viewport::handle_input(App& app) {
     }
   }
 
-  if (ImGui::IsItemActive() && m_drag_button >= 0 &&
-      (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
-    const ImVec2 d = io.MouseDelta;
-    m_drag_distance += std::sqrt(d.x * d.x + d.y * d.y);
+  const ImVec2 d(io.MousePos.x - m_drag_last.x, io.MousePos.y - m_drag_last.y);
+  if (ImGui::IsItemActive() && m_drag_button >= 0 && (d.x != 0.0f || d.y != 0.0f)) {
+    m_drag_last = io.MousePos;
+    m_drag_distance = std::max(m_drag_distance, std::hypot(io.MousePos.x - m_drag_press.x,
+                                                           io.MousePos.y - m_drag_press.y));
     const Pane& pane = m_panes[m_drag_pane];
     const bool pan = m_drag_button != ImGuiMouseButton_Left || io.KeyShift;
     if (m_drag_light >= 0 && m_drag_light < static_cast<int>(scene.lights.size())) {
