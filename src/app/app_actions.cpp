@@ -182,7 +182,7 @@ void poll_exports(App& app) {
     }
     try {
       const std::filesystem::path written = it->path.get();
-      const std::string absolute = std::filesystem::absolute(written).string();
+      const std::string absolute = std::filesystem::absolute(written).lexically_normal().string();
       app.notices.info("saved screenshot " + absolute, app.now_s());
       if (it->from_script) std::printf("saved %s\n", absolute.c_str());
     } catch (const std::exception& e) {

@@ -36,7 +36,7 @@ int render_without_display(const Scene& scene, const std::string& reason) {
     std::printf("rendered %s (%dx%d, %d spp) to %s\n",
                 scene.path.empty() ? "the built-in scene" : scene.path.c_str(), scene.render.width,
                 scene.render.height, scene.render.spp,
-                std::filesystem::absolute(path).string().c_str());
+                std::filesystem::absolute(path).lexically_normal().string().c_str());
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
@@ -70,8 +70,9 @@ int run_script_without_display(const Scene& scene, const Script& script,
                        const Image image = render_export(layer.scene(), view, a.kind);
                        const std::filesystem::path written = write_export(
                            a.path, image, view.srgb, export_text(layer.scene(), view, a.kind));
-                       std::printf("saved %s\n",
-                                   std::filesystem::absolute(written).string().c_str());
+                       std::printf(
+                           "saved %s\n",
+                           std::filesystem::absolute(written).lexically_normal().string().c_str());
                      } catch (const std::exception& e) {
                        std::fprintf(stderr, "error: %s%s\n", where.c_str(), e.what());
                        status = 1;

@@ -30,7 +30,7 @@ void draw_help_window(App& app) {
       "gloss edits Phong materials live: the viewport shows the CPU ray tracer's image, "
       "refined pass by pass. Every edit can be undone. docs/editor.md has the full guide.");
   if (ImGui::BeginTable("##keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-    ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, 190.0f);
+    ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, 240.0f);
     ImGui::TableSetupColumn("action");
     row("F1", "show or hide this help");
     row("Ctrl+Z", "undo");
