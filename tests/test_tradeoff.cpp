@@ -92,6 +92,17 @@ TEST_F(Tradeoff, ReferenceSettingOfEveryKnobHasAlmostNoError) {
   EXPECT_EQ(row("precision", "double").error.rmse, 0.0);
 }
 
+// The base is the reference's configuration but for the renderer (fast float) and its spp.
+TEST_F(Tradeoff, BaseRowsAreTheReferenceSettingsButFloatAndTheBaseSpp) {
+  std::vector<std::string> base;
+  for (const TradeoffRow& r : *rows) {
+    if (r.base_setting) base.push_back(r.knob + "=" + r.setting);
+  }
+  EXPECT_EQ(base,
+            (std::vector<std::string>{"spp=16", "tessellation=8", "pow=exact", "precision=float",
+                                      "shading=per-pixel", "resolution=1", "shadows=on"}));
+}
+
 // Each knob turned away from the reference costs accuracy: clearly more error than its
 // reference setting (shadows off loses the teapot's shadow; 2 segments per patch are a coarse
 // polyhedron; a quarter of the pixels blurs every edge; Gouraud flattens the floor's lighting).

@@ -37,6 +37,7 @@ struct Config {
     return std::tie(spp, tessellation, pow, path, divisor, shadows) <
            std::tie(o.spp, o.tessellation, o.pow, o.path, o.divisor, o.shadows);
   }
+  bool operator==(const Config& o) const { return !(*this < o) && !(o < *this); }
 };
 
 struct Measurement {
@@ -96,7 +97,7 @@ void check_options(const TradeoffOptions& o) {
 }
 
 // Everything one run_tradeoff call shares: the scenes per tessellation, the reference image and
-// the measurements already made (rows of different knobs can name the same configuration).
+// the errors already computed (rows of different knobs can name the same configuration).
 class Session {
  public:
   Session(const Scene& scene, const TradeoffOptions& options) : m_options(options) {
@@ -128,26 +129,37 @@ class Session {
     return !cancelled();
   }
 
-  // Median time and error of c, measured once per session. false when cancelled.
-  bool measure(const Config& c, Measurement& out) {
-    const auto known = m_done.find(c);
-    if (known != m_done.end()) {
-      out = known->second;
-      return true;
+  // Median times and errors of one knob's configurations, measured together: round r renders
+  // every distinct configuration once, starting one further along each round, so that a change
+  // of machine load (other processes on the cores) falls on all of them alike and the knob's
+  // settings compare fairly. Images are deterministic: each configuration's error is computed
+  // once. false when cancelled.
+  bool measure_knob(const std::vector<Config>& configs, std::vector<Measurement>& out) {
+    std::vector<Config> distinct;
+    for (const Config& c : configs) {
+      if (std::find(distinct.begin(), distinct.end(), c) == distinct.end()) distinct.push_back(c);
     }
-    std::vector<double> times;
-    Image first;
+    const std::size_t n = distinct.size();
+    std::vector<std::vector<double>> times(n);
     for (int run = 0; run < m_options.runs; ++run) {
-      if (cancelled()) return false;
-      const Clock::time_point start = Clock::now();
-      Image image = render_config(c);
-      times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-      if (run == 0) first = std::move(image);
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t i = (k + static_cast<std::size_t>(run)) % n;
+        if (cancelled()) return false;
+        const Clock::time_point start = Clock::now();
+        const Image image = render_config(distinct[i]);
+        times[i].push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        if (m_errors.find(distinct[i]) == m_errors.end()) {
+          m_errors.emplace(distinct[i], compare_images(image, m_reference));
+        }
+      }
     }
     if (cancelled()) return false;
-    out.time_ms = median(times);
-    out.error = compare_images(first, m_reference);
-    m_done.emplace(c, out);
+    out.clear();
+    for (const Config& c : configs) {
+      const std::size_t i = static_cast<std::size_t>(
+          std::find(distinct.begin(), distinct.end(), c) - distinct.begin());
+      out.push_back({median(times[i]), m_errors.at(c)});
+    }
     return true;
   }
 
@@ -194,7 +206,7 @@ class Session {
   Config m_base;
   std::map<int, Scene> m_scenes;
   Image m_reference;
-  std::map<Config, Measurement> m_done;
+  std::map<Config, ImageMetrics> m_errors;
 };
 
 struct Setting {
@@ -332,15 +344,19 @@ std::vector<TradeoffRow> run_tradeoff(const Scene& scene, const TradeoffOptions&
         std::find(options.knobs.begin(), options.knobs.end(), knob) == options.knobs.end()) {
       continue;
     }
-    for (const Setting& setting : settings_of(knob, session, options)) {
-      Measurement m;
-      if (!session.measure(setting.config, m)) return rows;
+    const std::vector<Setting> settings = settings_of(knob, session, options);
+    std::vector<Config> configs;
+    for (const Setting& setting : settings) configs.push_back(setting.config);
+    std::vector<Measurement> measured;
+    if (!session.measure_knob(configs, measured)) return rows;
+    for (std::size_t i = 0; i < settings.size(); ++i) {
       TradeoffRow row;
       row.knob = knob;
-      row.setting = setting.name;
-      row.time_ms = m.time_ms;
-      row.error = m.error;
-      row.reference_setting = setting.reference;
+      row.setting = settings[i].name;
+      row.time_ms = measured[i].time_ms;
+      row.error = measured[i].error;
+      row.reference_setting = settings[i].reference;
+      row.base_setting = settings[i].config == session.base();
       rows.push_back(row);
       if (on_row && !on_row(rows.back())) return rows;
     }

@@ -50,20 +50,24 @@ struct TradeoffRow {
                         // precision: "float", "double"; shading: "per-pixel", "gouraud";
                         // resolution: "1/8".."1"; shadows: "on", "off"
   double time_ms = 0;   // median wall time of one render: BVH build, trace, shade (resolution:
-                        // the reduced render plus the bilinear upsampling to full size)
+                        // the reduced render plus the bilinear upsampling to full size); the
+                        // base's own time differs a little from knob to knob (timed with each)
   ImageMetrics error;   // total image against the reference, every pixel
   bool reference_setting = false;  // the reference's own setting of this knob
+  bool base_setting = false;       // the base's setting: the row renders the base configuration
 };
 
 // What the rows cannot say by themselves about this scene (a skipped knob, what gouraud touches,
 // where times come from); one line each, for the table and the panel.
 std::vector<std::string> tradeoff_notes(const Scene& scene, const TradeoffOptions& options);
 
-// Measures the knobs of options.knobs for scene and returns the rows in order. on_row (may be
-// empty) is called after each row; returning false stops early with the rows so far, and so does
-// options.cancel. Throws InputError for a scene that cannot be rendered, std::invalid_argument
-// for options out of range (runs < 1, spp outside 1..kMaxSpp, unknown knob, tessellation outside
-// 1..64, divisor < 1).
+// Measures the knobs of options.knobs for scene and returns the rows in order. A knob's settings
+// are timed together, round-robin (run r renders each setting once), so that load from other
+// processes falls on them alike; the rows of a knob arrive together once it is measured, each
+// passed to on_row (may be empty). Returning false from on_row stops early with the rows so far,
+// and so does options.cancel (checked between renders and inside reference renders). Throws
+// InputError for a scene that cannot be rendered, std::invalid_argument for options out of range
+// (runs < 1, spp outside 1..kMaxSpp, unknown knob, tessellation outside 1..64, divisor < 1).
 std::vector<TradeoffRow> run_tradeoff(
     const Scene& scene, const TradeoffOptions& options,
     const std::function<bool(const TradeoffRow&)>& on_row = nullptr);
