@@ -3,14 +3,13 @@
 median render time, one marker style per knob, every point labelled with its setting, and the
 Pareto front (no other point is both faster and more accurate) drawn as a step line.
 
-Usage: plot_tradeoff.py CSV OUT.png [--title TEXT]
+Usage: plot_tradeoff.py CSV OUT.png [--title TEXT] [--base spp=4,pow=exact,...]
 Run with Debian's /usr/bin/python3 (python3-matplotlib). Writes OUT.png as given (gloss-cli
 passes a temporary name and renames it into place).
 """
 import argparse
 import csv
 import math
-from collections import Counter
 import sys
 
 import matplotlib
@@ -94,6 +93,8 @@ def main():
     parser.add_argument("csv")
     parser.add_argument("out")
     parser.add_argument("--title", default="gloss tradeoff")
+    parser.add_argument("--base", default="",
+                        help="the base rows as knob=setting,... (drawn once, as a star)")
     args = parser.parse_args()
     rows = read_rows(args.csv)
     if not rows:
@@ -104,36 +105,40 @@ def main():
     nonzero = [r["rmse"] for r in rows if r["rmse"] > 0]
     floor = (min(nonzero) / 4) if nonzero else 1e-6
 
-    # gloss-cli measures a configuration once, so rows of several knobs that all sit at the base
-    # setting carry identical figures: that point is the base, drawn once as a star.
-    counts = Counter((r["time_ms"], r["rmse"]) for r in rows)
-    base_key, base_count = counts.most_common(1)[0]
-    if base_count < 2:
-        base_key = None
+    # The rows of every knob at its base setting render the same image (the same error); their
+    # times differ only by when they were taken. They are drawn once, as a star at their median
+    # time.
+    base_names = set(args.base.split(",")) if args.base else set()
+    base_rows = [r for r in rows if r["knob"] + "=" + r["setting"] in base_names]
+    base_point = None
+    if base_rows:
+        times = sorted(r["time_ms"] for r in base_rows)
+        base_point = (times[len(times) // 2], max(base_rows[0]["rmse"], floor))
 
     fig, ax = plt.subplots(figsize=(10, 6), dpi=100)
     points = []
-    labels = []  # (x, y, knob, text, colour), placed once every point is known
+    labels = []  # (x, y, text, colour), placed once every point is known
     for knob, (marker, colour) in KNOB_STYLE.items():
         knob_rows = [r for r in rows if r["knob"] == knob]
         if not knob_rows:
             continue
         xs = [r["time_ms"] for r in knob_rows]
         ys = [max(r["rmse"], floor) for r in knob_rows]
+        own = [(r, x, y) for r, x, y in zip(knob_rows, xs, ys) if r not in base_rows]
+        if knob in ("spp", "tessellation", "resolution") and base_point is not None:
+            # The joining line passes through the star, not through this knob's own base timing.
+            xs = [base_point[0] if r in base_rows else x for r, x in zip(knob_rows, xs)]
         if knob in ("spp", "tessellation", "resolution"):  # ordered settings: join them
             ax.plot(xs, ys, color=colour, linewidth=0.8, alpha=0.5, zorder=2)
-        own = [(r, x, y) for r, x, y in zip(knob_rows, xs, ys)
-               if (r["time_ms"], r["rmse"]) != base_key]
         ax.scatter([x for _, x, _ in own], [y for _, _, y in own], marker=marker, color=colour,
                    s=46, label=knob, zorder=3, edgecolors="white", linewidths=0.6)
         for r, x, y in own:
             labels.append((x, y, label_text(knob, r["setting"]) +
                            (" = ref" if r["rmse"] == 0 else ""), colour))
             points.append((x, y))
-    if base_key is not None:
-        bx, by = base_key[0], max(base_key[1], floor)
-        parts = [r["knob"] + " " + r["setting"] for r in rows
-                 if (r["time_ms"], r["rmse"]) == base_key]
+    if base_point is not None:
+        bx, by = base_point
+        parts = [r["knob"] + " " + r["setting"] for r in base_rows]
         lines = [", ".join(parts[i:i + 3]) for i in range(0, len(parts), 3)]
         # Under the knobs' markers, which can sit on it when a knob changes little.
         ax.scatter([bx], [by], marker="*", s=200, color="#444444", alpha=0.8, zorder=2.5,

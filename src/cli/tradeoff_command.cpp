@@ -69,7 +69,7 @@ void check_writable(const std::string& output) {
 // Runs the plot script on csv_path, writing png_path; stdout discarded, stderr's last line
 // reported on failure.
 void run_plot_script(const std::string& script, const std::string& csv_path,
-                     const std::string& png_path, const std::string& title,
+                     const std::string& png_path, const std::string& title, const std::string& base,
                      const std::string& output) {
   char log_name[] = "/tmp/gloss-plot-XXXXXX";
   const int log_fd = ::mkstemp(log_name);
@@ -79,7 +79,8 @@ void run_plot_script(const std::string& script, const std::string& csv_path,
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
   posix_spawn_file_actions_addopen(&actions, 2, log_name, O_WRONLY | O_TRUNC, 0);
-  std::vector<std::string> args{kPython, script, csv_path, png_path, "--title", title};
+  std::vector<std::string> args{kPython,   script, csv_path, png_path,
+                                "--title", title,  "--base", base};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -106,9 +107,11 @@ void run_plot_script(const std::string& script, const std::string& csv_path,
 
 void print_row(const TradeoffRow& r) {
   char line[256];
-  std::snprintf(line, sizeof line, "  %-13s %-10s %1s %11.3f %11.3g %9.2f %11.3g %9.3f\n",
-                r.knob.c_str(), r.setting.c_str(), r.reference_setting ? "*" : "", r.time_ms,
-                r.error.rmse, r.error.psnr_db, r.error.max_abs, r.error.pct_pixels_off);
+  const std::string marks =
+      std::string(r.reference_setting ? "*" : "") + (r.base_setting ? "b" : "");
+  std::snprintf(line, sizeof line, "  %-13s %-10s %-2s %11.3f %11.3g %9.2f %11.3g %9.3f\n",
+                r.knob.c_str(), r.setting.c_str(), marks.c_str(), r.time_ms, r.error.rmse,
+                r.error.psnr_db, r.error.max_abs, r.error.pct_pixels_off);
   std::cout << line << std::flush;
 }
 
@@ -141,9 +144,9 @@ void run_tradeoff_command(const TradeoffArgs& args) {
             << " runs per row (median), " << tbb::info::default_concurrency() << " threads\n";
   for (const std::string& note : tradeoff_notes(scene, options)) std::cout << "  " << note << "\n";
   char header[256];
-  std::snprintf(header, sizeof header, "  %-13s %-10s %1s %11s %11s %9s %11s %9s\n", "knob",
+  std::snprintf(header, sizeof header, "  %-13s %-10s %-2s %11s %11s %9s %11s %9s\n", "knob",
                 "setting", "", "time_ms", "rmse", "psnr_db", "max_abs", "pct_off");
-  std::cout << header << "  (* the reference's setting of that knob)\n" << std::flush;
+  std::cout << header << "  (* the reference's setting of that knob, b the base's)\n" << std::flush;
   const std::vector<TradeoffRow> rows = run_tradeoff(scene, options, [](const TradeoffRow& r) {
     print_row(r);
     return true;
@@ -174,9 +177,14 @@ void run_tradeoff_command(const TradeoffArgs& args) {
                               "x" + std::to_string(h) + ", base " +
                               std::to_string(options.base_spp) + " spp, reference double " +
                               std::to_string(options.reference_spp) + " spp";
+    // The base rows render one configuration: drawn once.
+    std::string base;
+    for (const TradeoffRow& r : rows) {
+      if (r.base_setting) base += (base.empty() ? "" : ",") + r.knob + "=" + r.setting;
+    }
     try {
       write_atomically(args.plot, [&](const std::string& temp_png) {
-        run_plot_script(script, csv_path, temp_png, title, args.plot);
+        run_plot_script(script, csv_path, temp_png, title, base, args.plot);
       });
     } catch (...) {
       if (!temp_csv.empty()) std::remove(temp_csv.c_str());
