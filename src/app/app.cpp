@@ -157,6 +157,11 @@ void draw_layout(App& app) {
   const ImVec2 viewport_size(std::max(main->Size.x - 2.0f * side, 1.0f), height);
   app.viewport.draw(app, viewport_pos, viewport_size);
   draw_status_bar(app, ImVec2(left, top + height), ImVec2(main->Size.x, status_h));
+  // The Quality window opens over the viewport's right side (its table needs more width than a
+  // side panel has); it can be moved, resized and closed.
+  const float quality_w = std::min(480.0f, viewport_size.x);
+  draw_quality_panel(app, ImVec2(viewport_pos.x + viewport_size.x - quality_w, top),
+                     ImVec2(quality_w, height));
   app.notices.draw(viewport_pos.x + viewport_size.x, top + height);
   std::string chosen;
   if (app.browser.draw(app.recent, chosen)) browser_action(app, chosen);
@@ -177,6 +182,7 @@ void run_frame(App& app) {
   app.notices.expire(frame_start);
   app.viewport.upload_frames(frame_start);
   app.swatches.poll();
+  app.quality.poll();
   poll_exports(app);
   if (app.script) {
     app.script->step(app);
@@ -229,6 +235,7 @@ double idle_timeout(const App& app) {
   // what does not: the animation's next step (60 Hz), exports finishing, a script's next line.
   if (app.view.orbit_light) return 1.0 / 60.0;
   if (app.script || !app.exports.empty()) return 0.02;
+  if (app.quality.running()) return 0.1;  // rows arrive and the elapsed time counts up
   double timeout = 0.5;  // keeps hover states and the status bar fresh without spinning
   for (const Notice& n : app.notices.items) timeout = std::min(timeout, n.until_s - now);
   return std::max(timeout, 0.0);

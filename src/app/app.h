@@ -18,6 +18,7 @@
 #include "file_browser.h"
 #include "material_io.h"
 #include "notices.h"
+#include "quality_measurement.h"
 #include "recent_files.h"
 #include "swatches.h"
 #include "view_settings.h"
@@ -71,6 +72,7 @@ struct App {
 
   Viewport viewport;
   Swatches swatches;
+  QualityMeasurement quality;  // the Quality window's speed/accuracy measurement
   FileBrowser browser;
   Notices notices;
   RecentFiles recent;
@@ -93,6 +95,7 @@ struct App {
   double last_frame_s = 0.0;  // start of the previous frame (orbit-light animation step)
   bool show_help = false;
   bool show_about = false;
+  bool show_quality = false;  // the Quality window
   bool confirm_quit = false;  // the unsaved-changes question is open
   bool quit = false;
   int exit_code = 0;
@@ -145,5 +148,6 @@ void draw_lights_panel(App& app, ImVec2 pos, ImVec2 size);
 void draw_view_panel(App& app, ImVec2 pos, ImVec2 size);
 void draw_status_bar(App& app, ImVec2 pos, ImVec2 size);
 void draw_help_window(App& app);
+void draw_quality_panel(App& app, ImVec2 pos, ImVec2 size);
 
 }  // namespace gloss

@@ -6,6 +6,7 @@
 #include "command_layer.h"
 #include "error.h"
 #include "export_image.h"
+#include "quality_measurement.h"
 
 namespace gloss {
 
@@ -21,6 +22,29 @@ Overloaded(Ts...) -> Overloaded<Ts...>;
 void say_no_display(const std::string& reason) {
   std::fprintf(stderr, "gloss: no display (%s); using the core renderer without a window\n",
                reason.c_str());
+}
+
+// Runs a quality line without frames: a started measurement is measured to its end at once and
+// cancel does nothing. Returns the exit status to stop with, or -1 to go on.
+int quality_line(QualityMeasurement& quality, const QualityAction& action,
+                 const CommandLayer& layer, const std::string& where) {
+  try {
+    if (action.verb == QualityAction::Verb::csv) {
+      write_quality_csv(action.path, quality.rows());
+      std::printf("saved %s\n",
+                  std::filesystem::absolute(action.path).lexically_normal().string().c_str());
+    } else if (action.verb != QualityAction::Verb::cancel) {
+      quality.start(layer.scene());
+      quality.wait();
+      if (quality.state() == QualityMeasurement::State::failed) {
+        throw std::runtime_error("quality measurement failed: " + quality.error());
+      }
+    }
+    return -1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s%s\n", where.c_str(), e.what());
+    return 1;
+  }
 }
 
 }  // namespace
@@ -49,6 +73,7 @@ int run_script_without_display(const Scene& scene, const Script& script,
   say_no_display(reason);
   CommandLayer layer(scene);
   ViewSettings view;
+  QualityMeasurement quality;
   for (const ScriptLine& line : script.lines) {
     const std::string where = script.file + ":" + std::to_string(line.line) + ": ";
     try {
@@ -92,6 +117,7 @@ int run_script_without_display(const Scene& scene, const Script& script,
                    },
                    [&](const StatsAction&) { std::printf("stats: no display, no frames\n"); },
                    [&](const QuitAction&) { status = 0; },
+                   [&](const QualityAction& a) { status = quality_line(quality, a, layer, where); },
                    [&](const SleepAction&) {},    // no frames to let run
                    [&](const AnimateAction&) {},  // no animation without frames
                    [&](const auto&) {},  // wait: every export above rendered to convergence

@@ -109,6 +109,7 @@ void view_menu(App& app) {
   ImGui::MenuItem("sRGB display encoding", nullptr, &view.srgb);
   if (ImGui::MenuItem("Reset exposure")) view.exposure = 0.0f;
   ImGui::MenuItem("Orbit light", nullptr, &view.orbit_light);
+  ImGui::MenuItem("Quality: speed / accuracy", nullptr, &app.show_quality);
   ImGui::EndMenu();
 }
 

@@ -165,6 +165,15 @@ ScriptAction parse_line(Tokens& t) {
   }
   if (verb == "animate") return AnimateAction{t.on_off("animate")};
   if (verb == "quit") return QuitAction{};
+  if (verb == "quality") {
+    const std::string& what = t.word("quality action");
+    if (what == "measure") return QualityAction{QualityAction::Verb::measure, ""};
+    if (what == "start") return QualityAction{QualityAction::Verb::start, ""};
+    if (what == "cancel") return QualityAction{QualityAction::Verb::cancel, ""};
+    if (what == "csv") return QualityAction{QualityAction::Verb::csv, t.word("csv path")};
+    throw std::runtime_error("quality must be measure, start, cancel or 'csv PATH', got '" + what +
+                             "'");
+  }
   throw std::runtime_error("unknown command '" + verb + "'");
 }
 

@@ -48,10 +48,19 @@ struct AnimateAction {
   bool on = false;
 };
 struct QuitAction {};
+// The Quality panel's measurement (quality_measurement.h) at its quick settings: measure starts it
+// on the current scene and holds the script until it ends; start does not hold; cancel stops it;
+// csv writes the rows so far as tradeoff CSV to path, atomically.
+struct QualityAction {
+  enum class Verb { measure, start, cancel, csv };
+  Verb verb = Verb::measure;
+  std::string path;  // csv only
+};
 
-using ScriptAction = std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction,
-                                  ViewAction, ExposureAction, EncodingAction, SelectAction,
-                                  StatsAction, SleepAction, AnimateAction, QuitAction>;
+using ScriptAction =
+    std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction, ViewAction,
+                 ExposureAction, EncodingAction, SelectAction, StatsAction, SleepAction,
+                 AnimateAction, QuitAction, QualityAction>;
 
 struct ScriptLine {
   int line = 0;  // 1-based line number in the file

@@ -4,6 +4,7 @@
 
 #include "app.h"
 #include "error.h"
+#include "quality_measurement.h"
 
 namespace gloss {
 
@@ -63,10 +64,52 @@ bool ScriptPlayer::wait_done(App& app, double now_s) {
       return app.exports.empty() && !app.capture.requested;
     case Waiting::sleep:
       return now_s >= m_deadline_s;
+    case Waiting::quality: {
+      if (app.quality.running()) return false;
+      const ScriptLine& line = m_script.lines[m_next];
+      const std::string where = m_script.file + ":" + std::to_string(line.line) + ": ";
+      if (app.quality.state() == QualityMeasurement::State::failed) {
+        fail(app, where + "quality measurement failed: " + app.quality.error(), 1);
+        return false;
+      }
+      std::printf("quality: %zu rows, %d of %zu knobs, %dx%d, %.2f s\n", app.quality.rows().size(),
+                  app.quality.knobs_done(), app.quality.knobs().size(), app.quality.width(),
+                  app.quality.height(), app.quality.elapsed_s());
+      std::fflush(stdout);
+      return true;
+    }
     case Waiting::none:
       return true;
   }
   return true;
+}
+
+void ScriptPlayer::run_quality(App& app, const QualityAction& action, const std::string& where,
+                               bool& hold) {
+  switch (action.verb) {
+    case QualityAction::Verb::measure:
+    case QualityAction::Verb::start:
+      app.quality.start(app.commands.scene());
+      app.show_quality = true;
+      if (action.verb == QualityAction::Verb::measure) {
+        m_waiting = Waiting::quality;
+        hold = true;
+      }
+      return;
+    case QualityAction::Verb::cancel:
+      app.quality.cancel();
+      return;
+    case QualityAction::Verb::csv:
+      try {
+        write_quality_csv(action.path, app.quality.rows());
+        std::printf("saved %s\n",
+                    std::filesystem::absolute(action.path).lexically_normal().string().c_str());
+        std::fflush(stdout);
+      } catch (const std::exception& e) {
+        fail(app, where + e.what(), 1);
+      }
+      return;
+  }
 }
 
 void ScriptPlayer::step(App& app) {
@@ -126,6 +169,7 @@ void ScriptPlayer::step(App& app) {
                    },
                    [&](const AnimateAction& a) { app.view.orbit_light = a.on; },
                    [&](const QuitAction&) { app.quit = true; },
+                   [&](const QualityAction& a) { run_quality(app, a, where, hold); },
                    [&](const auto&) {},  // document lines ran above
                },
                line.action);

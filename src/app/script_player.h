@@ -20,9 +20,10 @@ class ScriptPlayer {
   bool finished() const { return m_next >= m_script.lines.size(); }
 
  private:
-  enum class Waiting { none, converge, shown, files, sleep };
+  enum class Waiting { none, converge, shown, files, sleep, quality };
   bool wait_done(App& app, double now_s);
   void fail(App& app, const std::string& message, int status);
+  void run_quality(App& app, const QualityAction& action, const std::string& where, bool& hold);
 
   Script m_script;
   std::size_t m_next = 0;

@@ -62,6 +62,12 @@ void draw_quality(App& app) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("render pixels per screen pixel in the viewport");
   ImGui::TextDisabled("exports render at %d x %d, %d spp", scene.render.width, scene.render.height,
                       scene.render.spp);
+  if (ImGui::Button(app.show_quality ? "Hide speed / accuracy" : "Speed / accuracy...")) {
+    app.show_quality = !app.show_quality;
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("measure what each quality knob costs and buys for this scene");
+  }
 }
 
 void draw_screenshot(App& app) {
