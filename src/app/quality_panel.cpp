@@ -96,14 +96,15 @@ void draw_knob_table(App& app, const std::string& knob, const std::vector<Tradeo
   const ImGuiTableFlags flags =
       ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV;
   if (!ImGui::BeginTable(knob.c_str(), 7, flags)) return;
-  const float em = ImGui::GetFontSize();
-  ImGui::TableSetupColumn("setting", ImGuiTableColumnFlags_WidthFixed, 6.0f * em);
-  ImGui::TableSetupColumn("ms", ImGuiTableColumnFlags_WidthFixed, 4.5f * em);
-  ImGui::TableSetupColumn("RMSE", ImGuiTableColumnFlags_WidthFixed, 4.5f * em);
-  ImGui::TableSetupColumn("PSNR dB", ImGuiTableColumnFlags_WidthFixed, 4.0f * em);
-  ImGui::TableSetupColumn("% off", ImGuiTableColumnFlags_WidthFixed, 4.0f * em);
-  ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, 5.5f * em);
-  ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, 3.0f * em);
+  // Widths of the widest expected cell, so that the knobs' tables line up.
+  auto width = [](const char* widest) { return ImGui::CalcTextSize(widest).x; };
+  ImGui::TableSetupColumn("setting", ImGuiTableColumnFlags_WidthFixed, width("per-pixel"));
+  ImGui::TableSetupColumn("ms", ImGuiTableColumnFlags_WidthFixed, width("12345"));
+  ImGui::TableSetupColumn("RMSE", ImGuiTableColumnFlags_WidthFixed, width("0.0000"));
+  ImGui::TableSetupColumn("PSNR dB", ImGuiTableColumnFlags_WidthFixed, width("PSNR dB"));
+  ImGui::TableSetupColumn("% off", ImGuiTableColumnFlags_WidthFixed, width("100.00"));
+  ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, width("ref, base"));
+  ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, width("in use"));
   ImGui::TableHeadersRow();
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const TradeoffRow& row = rows[i];
@@ -144,7 +145,7 @@ void draw_knobs(App& app) {
     const std::vector<TradeoffRow> rows = rows_of_knob(q.rows(), knob);
     ImGui::Spacing();
     ImGui::TextUnformatted(knob.c_str());
-    ImGui::SameLine(7.0f * ImGui::GetFontSize());
+    ImGui::SameLine(ImGui::CalcTextSize("tessellation  ").x);
     if (rows.empty()) {
       ImGui::TextDisabled(knob == current ? "measuring..." : q.running() ? "waiting" : "-");
       continue;
