@@ -8,29 +8,6 @@
 
 namespace gloss {
 
-CameraFrame make_camera_frame(const Camera& camera, int width, int height) {
-  const glm::vec3 view = camera.target - camera.eye;
-  const float view_len = glm::length(view);
-  if (!(view_len > 0.0f) || !std::isfinite(view_len)) {
-    throw std::invalid_argument("eye and target coincide");
-  }
-  CameraFrame frame;
-  frame.eye = camera.eye;
-  frame.forward = view / view_len;
-  const glm::vec3 side = glm::cross(frame.forward, camera.up);
-  const float side_len = glm::length(side);
-  // Relative test: up must not be (anti)parallel to the view direction.
-  if (!(side_len > 1e-6f * glm::length(camera.up))) {
-    throw std::invalid_argument("up is parallel to the view direction");
-  }
-  frame.right = side / side_len;
-  frame.up = glm::cross(frame.right, frame.forward);
-  const float tan_half = std::tan(glm::radians(camera.fov_y) * 0.5f);
-  frame.scale_y = tan_half;
-  frame.scale_x = tan_half * static_cast<float>(width) / static_cast<float>(height);
-  return frame;
-}
-
 Camera orbit_camera(const Camera& camera, float yaw_deg, float pitch_deg) {
   const glm::vec3 offset = camera.eye - camera.target;
   const float radius = glm::length(offset);

@@ -1,7 +1,9 @@
 #pragma once
 // Pinhole camera of spec/shading.md: y up, right-handed, vertical field of view in degrees.
 #include <cmath>
+#include <stdexcept>
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 namespace gloss {
@@ -20,24 +22,59 @@ inline bool operator!=(const Camera& a, const Camera& b) {
   return !(a == b);
 }
 
-// The orthonormal frame and image-plane scale derived from a Camera for a W x H image.
-struct CameraFrame {
-  glm::vec3 eye, forward, right, up;  // f, r, u of the spec; unit length
-  float scale_x = 1, scale_y = 1;     // tan(fov_y / 2) * W / H and tan(fov_y / 2)
+// The orthonormal frame and image-plane scale derived from a Camera for a W x H image, in a
+// scalar type T: float for Embree's rays, double where the renderer rebuilds hit points and for
+// the reference path.
+template <class T>
+struct CameraBasis {
+  glm::tvec3<T> eye, forward, right, up;  // f, r, u of the spec; unit length
+  T scale_x = 1, scale_y = 1;             // tan(fov_y / 2) * W / H and tan(fov_y / 2)
 };
+using CameraFrame = CameraBasis<float>;
 
 // Throws std::invalid_argument for eye == target or up parallel to the view direction.
-CameraFrame make_camera_frame(const Camera& camera, int width, int height);
+template <class T>
+CameraBasis<T> make_camera_basis(const Camera& camera, int width, int height) {
+  using V = glm::tvec3<T>;
+  const V view = V(camera.target) - V(camera.eye);
+  const T view_len = glm::length(view);
+  if (!(view_len > T(0)) || !std::isfinite(view_len)) {
+    throw std::invalid_argument("eye and target coincide");
+  }
+  CameraBasis<T> basis;
+  basis.eye = V(camera.eye);
+  basis.forward = view / view_len;
+  const V side = glm::cross(basis.forward, V(camera.up));
+  const T side_len = glm::length(side);
+  // Relative test: up must not be (anti)parallel to the view direction.
+  if (!(side_len > T(1e-6) * glm::length(V(camera.up)))) {
+    throw std::invalid_argument("up is parallel to the view direction");
+  }
+  basis.right = side / side_len;
+  basis.up = glm::cross(basis.right, basis.forward);
+  const T tan_half = std::tan(T(camera.fov_y) * T(3.14159265358979323846) / T(360));
+  basis.scale_y = tan_half;
+  basis.scale_x = tan_half * T(width) / T(height);
+  return basis;
+}
+
+inline CameraFrame make_camera_frame(const Camera& camera, int width, int height) {
+  return make_camera_basis<float>(camera, width, height);
+}
 
 // Unit direction of the primary ray through image position (px, py) in pixels, where
-// (x + 0.5, y + 0.5) is the centre of pixel (x, y), y growing downwards. Inline: the renderer
-// evaluates it for 16 lanes at a time.
+// (x + 0.5, y + 0.5) is the centre of pixel (x, y), y growing downwards.
+template <class T>
+glm::tvec3<T> camera_direction(const CameraBasis<T>& basis, T px, T py, int width, int height) {
+  const T sx = (T(2) * px / T(width) - T(1)) * basis.scale_x;
+  const T sy = (T(1) - T(2) * py / T(height)) * basis.scale_y;
+  const glm::tvec3<T> d = basis.forward + sx * basis.right + sy * basis.up;
+  return d / std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+}
+
 inline glm::vec3 primary_direction(const CameraFrame& frame, float px, float py, int width,
                                    int height) {
-  const float sx = (2.0f * px / static_cast<float>(width) - 1.0f) * frame.scale_x;
-  const float sy = (1.0f - 2.0f * py / static_cast<float>(height)) * frame.scale_y;
-  const glm::vec3 d = frame.forward + sx * frame.right + sy * frame.up;
-  return d / std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+  return camera_direction<float>(frame, px, py, width, height);
 }
 
 // Orbits the eye around the target by yaw (about up) and pitch (about right), degrees.

@@ -21,7 +21,8 @@ struct Packet {
   int x0, y0, x1, y1;
   alignas(64) int valid[kLanes];  // Embree mask, -1 inside the region; Embree wants 64-B alignment
   std::size_t index[kLanes];      // pixel index in the region (0 for invalid lanes)
-  glm::vec3 dir[kLanes];
+  glm::dvec3 exact_dir[kLanes];   // unit, in double: for rebuilding hit points
+  glm::vec3 dir[kLanes];          // the same rounded to float: Embree's rays
 
   Packet(const SampleCache& cache, int bx, int by, int bx1, int by1)
       : x0(bx), y0(by), x1(bx1), y1(by1) {
@@ -35,15 +36,17 @@ struct Packet {
   // Directions of sample `stratum` for every lane (y is a region row; the pattern and the
   // camera use image rows). Two loops: the offsets (integer hashing), then the vector maths.
   void compute_directions(const SampleCache& cache, const SamplePattern& pattern, int stratum) {
-    float px[kLanes], py[kLanes];
+    double px[kLanes], py[kLanes];
     for (int i = 0; i < kLanes; ++i) {
       const int x = x0 + (i & 3), row = y0 + (i >> 2) + cache.row0;
       const SampleOffset o = sample_offset(pattern, stratum, x, row);
-      px[i] = static_cast<float>(x) + o.dx;
-      py[i] = static_cast<float>(row) + o.dy;
+      px[i] = static_cast<double>(x) + static_cast<double>(o.dx);
+      py[i] = static_cast<double>(row) + static_cast<double>(o.dy);
     }
     for (int i = 0; i < kLanes; ++i) {
-      dir[i] = primary_direction(cache.camera, px[i], py[i], cache.width, cache.image_height);
+      exact_dir[i] =
+          camera_direction<double>(cache.camera_d, px[i], py[i], cache.width, cache.image_height);
+      dir[i] = glm::vec3(exact_dir[i]);
     }
   }
 };
@@ -73,7 +76,7 @@ long long trace_primary(const SampleCache& cache, const RenderContext& ctx, Samp
     const auto object = static_cast<std::int32_t>(rh.hit.geomID[i]);
     const Object& obj = ctx.scene->objects[static_cast<std::size_t>(object)];
     float t = rh.ray.tfar[i];
-    if (obj.type == ObjectType::sphere) t = refine_sphere_hit(obj, eye, packet.dir[i], t);
+    if (obj.type == ObjectType::sphere) t = refine_sphere_hit(obj, eye, packet.exact_dir[i], t);
     plane.object[idx] = object;
     plane.prim[idx] = rh.hit.primID[i];
     plane.t[idx] = t;
@@ -105,7 +108,7 @@ long long shade_geometry(const SampleCache& cache, const RenderContext& ctx, Sam
   }
   Surface surf[kLanes];
   for (int i = 0; i < kLanes; ++i) {
-    surf[i] = surface_from(geometry[i], cache.camera.eye, packet.dir[i], t[i]);
+    surf[i] = surface_from(geometry[i], cache.camera.eye, packet.exact_dir[i], t[i]);
   }
   long long rays = 0;
   RTCIntersectContext context = coherent_context();
@@ -205,6 +208,7 @@ void reset_sample_cache(SampleCache& cache, const Scene& scene, int width, int h
   cache.target_spp = target_spp;
   cache.seed = scene.render.seed;
   cache.camera = make_camera_frame(scene.camera, width, height);
+  cache.camera_d = make_camera_basis<double>(scene.camera, width, height);
 }
 
 bool add_samples(SampleCache& cache, const RenderContext& ctx, int count) {

@@ -26,7 +26,8 @@ struct SampleCache {
   int row0 = 0;               // first image row of the region
   int target_spp = 1;         // the stratification the sample positions belong to
   std::uint32_t seed = 0;
-  CameraFrame camera;
+  CameraFrame camera;            // float: Embree's rays
+  CameraBasis<double> camera_d;  // double: the directions hit points are rebuilt with
   std::vector<SamplePlane> planes;
   std::vector<SamplePlane> spare;  // planes of an earlier image, reused to avoid page faults
 

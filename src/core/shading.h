@@ -3,6 +3,7 @@
 // renderer, double for the reference path). Every renderer path calls these; none re-derives them.
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -29,34 +30,43 @@ T attenuation(const glm::tvec3<T>& c, T d) {
   return T(1) / (c.x + d * (c.y + d * c.z));
 }
 
+// The type light_factors computes in: double for float inputs. A float cosine carries about two
+// units in the last place (1.2e-7) and c^alpha multiplies that by alpha, so at alpha = 1000 a
+// float evaluation misses the contract's 1e-4 against double; computing in double and rounding
+// each factor once keeps float within it (tests/test_stability.cpp).
+template <class T>
+using WideScalar = std::conditional_t<std::is_same_v<T, float>, double, T>;
+
 // Geometry part of the contract for one light at a surface point. p: point, n: unit shading
 // normal, v: unit direction to the eye, both already flipped to the viewer's side (two-sided).
 // vis: 1 or 0 from the shadow test. Returns zero factors for d = 0 (a light on the surface adds
-// nothing) or ndl <= 0. Written without branches (every quantity computed, then selected) so
-// that the renderer's loop over a 16-ray packet vectorizes.
+// nothing) or ndl <= 0. Written without branches (every quantity computed, then selected).
 template <class T>
-LightFactors<T> light_factors(const glm::tvec3<T>& p, const glm::tvec3<T>& n,
-                              const glm::tvec3<T>& v, const glm::tvec3<T>& light_position,
+LightFactors<T> light_factors(const glm::tvec3<T>& p_in, const glm::tvec3<T>& n_in,
+                              const glm::tvec3<T>& v_in, const glm::tvec3<T>& light_position,
                               const glm::tvec3<T>& attenuation_coeffs, bool unit_attenuation,
                               T vis) {
-  const glm::tvec3<T> to_light = light_position - p;
-  const T d = std::sqrt(glm::dot(to_light, to_light));
-  const glm::tvec3<T> l = to_light / d;
-  const T ndl = glm::dot(n, l);
-  const bool lit = (d > T(0)) & (d < std::numeric_limits<T>::infinity()) & (ndl > T(0));
-  const T att = unit_attenuation ? T(1) : attenuation(attenuation_coeffs, d);
-  const T spec_weight = att * vis;
-  const T cos_phong = glm::dot(T(2) * ndl * n - l, v);
-  const glm::tvec3<T> h = l + v;
-  const T h_len = std::sqrt(glm::dot(h, h));
+  using W = WideScalar<T>;
+  using V = glm::tvec3<W>;
+  const V p(p_in), n(n_in), v(v_in);
+  const V to_light = V(light_position) - p;
+  const W d = std::sqrt(glm::dot(to_light, to_light));
+  const V l = to_light / d;
+  const W ndl = glm::dot(n, l);
+  const bool lit = (d > W(0)) & (d < std::numeric_limits<W>::infinity()) & (ndl > W(0));
+  const W att = unit_attenuation ? W(1) : attenuation(V(attenuation_coeffs), d);
+  const W spec_weight = att * W(vis);
+  const W cos_phong = glm::dot(W(2) * ndl * n - l, v);
+  const V h = l + v;
+  const W h_len = std::sqrt(glm::dot(h, h));
   // l = -v leaves no half vector; ndl > 0 there means n . v < 0, and no highlight is defined.
-  const bool has_half = h_len > std::numeric_limits<T>::min() * T(4);
-  const T cos_blinn = glm::dot(n, h) / (has_half ? h_len : T(1));
+  const bool has_half = h_len > std::numeric_limits<W>::min() * W(4);
+  const W cos_blinn = glm::dot(n, h) / (has_half ? h_len : W(1));
   LightFactors<T> f;
-  f.spec_weight = lit ? spec_weight : T(0);
-  f.diffuse_weight = lit ? ndl * spec_weight : T(0);
-  f.cos_phong = lit ? cos_phong : T(0);
-  f.cos_blinn = lit & has_half ? cos_blinn : T(0);
+  f.spec_weight = lit ? T(spec_weight) : T(0);
+  f.diffuse_weight = lit ? T(ndl * spec_weight) : T(0);
+  f.cos_phong = lit ? T(cos_phong) : T(0);
+  f.cos_blinn = lit & has_half ? T(cos_blinn) : T(0);
   return f;
 }
 

@@ -31,7 +31,7 @@ HitGeometry hit_geometry(const Object& object, std::uint32_t prim, float u, floa
   return g;
 }
 
-float refine_sphere_hit(const Object& sphere, const glm::vec3& origin, const glm::vec3& dir,
+float refine_sphere_hit(const Object& sphere, const glm::vec3& origin, const glm::dvec3& dir,
                         float t_estimate) {
   const glm::dvec3 o(origin), d(dir), c(sphere.center);
   const glm::dvec3 oc = o - c;

@@ -30,16 +30,22 @@ struct HitGeometry {
 
 HitGeometry hit_geometry(const Object& object, std::uint32_t prim, float u, float v);
 
-// dir must be unit length; t is the hit distance (refined for spheres, refine_sphere_hit).
+// dir must be unit length, in double: the hit point is rebuilt as origin + t dir in double and
+// rounded once, since a float direction alone moves the point by 1e-7 of the distance to the eye
+// (enough to shift a steep highlight by more than the contract's 1e-4). t is the hit distance
+// (refined for spheres, refine_sphere_hit).
 // Every candidate normal is computed and the lane's own selected per component, without
 // branches, so the renderer's loop over a 16-ray packet vectorizes (GCC if-converts float
 // selects, not selects of glm vectors).
-inline Surface surface_from(const HitGeometry& g, const glm::vec3& origin, const glm::vec3& dir,
+inline Surface surface_from(const HitGeometry& g, const glm::vec3& origin, const glm::dvec3& dir,
                             float t) {
   Surface s;
-  s.p = origin + t * dir;
-  s.v = -dir;
-  const glm::vec3 sphere_normal = glm::normalize(s.p - g.p0);
+  const glm::dvec3 p = glm::dvec3(origin) + static_cast<double>(t) * dir;
+  s.p = glm::vec3(p);
+  s.v = -glm::vec3(dir);
+  // The sphere's normal from the unrounded point: at shininess 1000 a float normal alone moves
+  // the highlight by more than 1e-4.
+  const glm::vec3 sphere_normal = glm::vec3(glm::normalize(p - glm::dvec3(g.p0)));
   const glm::vec3 face_normal = glm::normalize(glm::cross(g.p1 - g.p0, g.p2 - g.p0));
   const glm::vec3 interpolated = (1.0f - g.u - g.v) * g.n0 + g.u * g.n1 + g.v * g.n2;
   const float len = std::sqrt(glm::dot(interpolated, interpolated));
@@ -59,7 +65,7 @@ inline Surface surface_from(const HitGeometry& g, const glm::vec3& origin, const
 
 // Recomputes a sphere hit distance in double precision from Embree's float estimate, so that
 // hit points and normals stay accurate far from the origin (coordinates up to 1e5).
-float refine_sphere_hit(const Object& sphere, const glm::vec3& origin, const glm::vec3& dir,
+float refine_sphere_hit(const Object& sphere, const glm::vec3& origin, const glm::dvec3& dir,
                         float t_estimate);
 
 // Where a shadow ray starts: p pushed along ng, never p itself. p = eye + t dir carries a
