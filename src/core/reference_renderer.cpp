@@ -10,9 +10,9 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "camera.h"
 #include "embree_scene.h"
 #include "parallel_tiles.h"
-#include "reference_camera.h"
 #include "reference_hit.h"
 #include "sampling.h"
 #include "scene_loader.h"
@@ -58,7 +58,7 @@ template <class T>
 struct Job {
   const Scene* scene = nullptr;
   RTCScene rtc = nullptr;
-  ReferenceCamera<T> camera;
+  CameraBasis<T> camera;  // camera.h's formula evaluated in T
   int width = 0, height = 0, spp = 1;
   PowMode pow = PowMode::exact;
   bool gouraud = false;
@@ -133,7 +133,7 @@ void shade_sample(const Job<T>& job, int x, int y, int s, PixelSums<T>& sum, Sam
   const Scene& scene = *job.scene;
   const SampleOffset o = sample_offset(scene.render.seed, x, y, s, job.spp);
   const Vec3<T> dir =
-      reference_direction(job.camera, T(x) + T(o.dx), T(y) + T(o.dy), job.width, job.height);
+      camera_direction<T>(job.camera, T(x) + T(o.dx), T(y) + T(o.dy), job.width, job.height);
   RTCRayHit rh;
   rh.ray.org_x = static_cast<float>(job.camera.eye.x);
   rh.ray.org_y = static_cast<float>(job.camera.eye.y);
@@ -234,7 +234,7 @@ TermImages render_reference(const Scene& scene, const ReferenceOptions& options)
   job.spp = options.spp > 0 ? options.spp : scene.render.spp;
   job.pow = options.pow.value_or(scene.render.pow);
   job.gouraud = options.gouraud;
-  job.camera = make_reference_camera<T>(scene.camera, job.width, job.height);
+  job.camera = make_camera_basis<T>(scene.camera, job.width, job.height);
   job.ambient_light = Vec3<T>(scene.ambient);
   for (const PointLight& light : scene.lights) job.ambient_light += Vec3<T>(light.ambient);
 
