@@ -150,8 +150,8 @@ TEST_P(ShippedScene, FastFloatAgreesWithDoubleOnInteriorPixelsUpToAlpha1000) {
               << "; edges " << a.edges.pixels << " px (" << 100.0 * a.edge_share
               << " %), max |diff| " << a.edges.max_abs
               << ", off by > 1/255: " << a.edges.pct_pixels_off << " % of them\n";
-    // docs/accuracy.md explains a failure here: float primary rays carry a relative rounding of
-    // about 1e-7, which moves steep highlights on small spheres seen from afar.
+    // Float primary rays (relative rounding near 1e-7) once failed this on presets.json: steep
+    // highlights on small spheres seen from 30 units away (docs/accuracy.md).
     EXPECT_LE(a.interior.max_abs, 1e-4)
         << GetParam() << ", shininess " << (alpha > 0 ? std::to_string(alpha) : "as shipped");
     EXPECT_GT(a.interior.pixels, 0u);
