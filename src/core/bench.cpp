@@ -21,20 +21,12 @@
 #include "render_context.h"
 #include "sample_cache.h"
 #include "scene_loader.h"
+#include "statistics.h"
 
 namespace gloss {
 
 namespace {
 using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 // Median wall time of f over runs repetitions (after one warm-up run).
 double time_median(int runs, const std::function<void()>& f) {
@@ -111,18 +103,6 @@ void measure_engine(const Scene& base, const BenchOptions& options, BenchReport&
   report.converge_16spp_ms = median(converges);
 }
 
-bool has_teapot(const Scene& scene) {
-  return std::any_of(scene.objects.begin(), scene.objects.end(),
-                     [](const Object& o) { return o.type == ObjectType::teapot; });
-}
-
-Scene with_tessellation(const Scene& scene, int level) {
-  nlohmann::json doc = nlohmann::json::parse(scene_to_json_text(scene));
-  for (auto& object : doc["objects"]) {
-    if (object.value("type", "") == "teapot") object["tessellation"] = level;
-  }
-  return parse_scene(doc.dump(), scene.path);
-}
 }  // namespace
 
 BenchReport run_benchmark(const Scene& input, const BenchOptions& options) {
@@ -196,12 +176,12 @@ BenchReport run_benchmark(const Scene& input, const BenchOptions& options) {
 
   measure_engine(scene, options, report);
 
-  if (has_teapot(scene)) {
+  if (has_object_type(scene, ObjectType::teapot)) {
     for (int level : options.tessellation_levels) {
       TessellationPoint point;
       point.level = level;
       const Clock::time_point start = Clock::now();
-      const Scene tess = with_tessellation(scene, level);
+      const Scene tess = with_teapot_tessellation(scene, level);
       const EmbreeScene tess_embree(tess);
       point.build_ms = ms_since(start);
       for (const Object& o : tess.objects) {

@@ -1,5 +1,7 @@
 #include "scene.h"
 
+#include <algorithm>
+
 namespace gloss {
 
 const char* to_string(ObjectType type) {
@@ -23,6 +25,11 @@ int find_material(const Scene& scene, const std::string& name) {
     if (scene.material_names[i] == name) return static_cast<int>(i);
   }
   return -1;
+}
+
+bool has_object_type(const Scene& scene, ObjectType type) {
+  return std::any_of(scene.objects.begin(), scene.objects.end(),
+                     [type](const Object& o) { return o.type == type; });
 }
 
 }  // namespace gloss

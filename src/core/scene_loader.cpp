@@ -210,4 +210,14 @@ void save_scene(const Scene& scene, const std::string& path) {
   write_text_atomically(path, scene_to_json_text(moved));
 }
 
+Scene with_teapot_tessellation(const Scene& scene, int level) {
+  nlohmann::json doc = nlohmann::json::parse(scene_to_json_text(scene));
+  for (auto& object : doc["objects"]) {
+    if (object.value("type", "") == "teapot") object["tessellation"] = level;
+  }
+  Scene out = parse_scene(doc.dump(), scene.path);
+  out.render = scene.render;
+  return out;
+}
+
 }  // namespace gloss

@@ -23,6 +23,10 @@ void validate_scene(const Scene& scene);
 // The scene as JSON text that parse_scene reads back to an equal scene. save_scene writes it
 // atomically.
 std::string scene_to_json_text(const Scene& scene);
+
+// The scene with every teapot tessellated at level (1..64), rebuilt through the scene reader so
+// placement and degenerate-triangle handling stay the loader's; render settings are kept.
+Scene with_teapot_tessellation(const Scene& scene, int level);
 void save_scene(const Scene& scene, const std::string& path);
 
 }  // namespace gloss

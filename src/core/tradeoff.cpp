@@ -14,6 +14,7 @@
 #include "reference_renderer.h"
 #include "renderer.h"
 #include "scene_loader.h"
+#include "statistics.h"
 
 namespace gloss {
 
@@ -44,28 +45,6 @@ struct Measurement {
   double time_ms = 0;
   ImageMetrics error;
 };
-
-bool has_teapot(const Scene& scene) {
-  return std::any_of(scene.objects.begin(), scene.objects.end(),
-                     [](const Object& o) { return o.type == ObjectType::teapot; });
-}
-
-// The scene with every teapot re-tessellated at level, through the scene file's own reader (so
-// placement and degenerate-triangle handling stay the loader's).
-Scene with_tessellation(const Scene& scene, int level) {
-  nlohmann::json doc = nlohmann::json::parse(scene_to_json_text(scene));
-  for (auto& object : doc["objects"]) {
-    if (object.value("type", "") == "teapot") object["tessellation"] = level;
-  }
-  Scene out = parse_scene(doc.dump(), scene.path);
-  out.render = scene.render;
-  return out;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 std::string divisor_name(int d) {
   return d == 1 ? "1" : "1/" + std::to_string(d);
@@ -102,11 +81,11 @@ class Session {
  public:
   Session(const Scene& scene, const TradeoffOptions& options) : m_options(options) {
     tradeoff_image_size(scene, options, m_width, m_height);
-    if (has_teapot(scene) && !options.tessellation_levels.empty()) {
+    if (has_object_type(scene, ObjectType::teapot) && !options.tessellation_levels.empty()) {
       m_finest =
           *std::max_element(options.tessellation_levels.begin(), options.tessellation_levels.end());
     }
-    m_scenes.emplace(m_finest, m_finest > 0 ? with_tessellation(scene, m_finest) : scene);
+    m_scenes.emplace(m_finest, m_finest > 0 ? with_teapot_tessellation(scene, m_finest) : scene);
     m_base.spp = options.base_spp;
     m_base.tessellation = m_finest;
     m_base.shadows = scene.render.shadows;
@@ -171,7 +150,7 @@ class Session {
   const Scene& scene_for(int tessellation) {
     auto it = m_scenes.find(tessellation);
     if (it == m_scenes.end()) {
-      Scene s = with_tessellation(m_scenes.at(m_finest), tessellation);
+      Scene s = with_teapot_tessellation(m_scenes.at(m_finest), tessellation);
       it = m_scenes.emplace(tessellation, std::move(s)).first;
     }
     return it->second;
@@ -302,10 +281,12 @@ std::vector<std::string> tradeoff_notes(const Scene& scene, const TradeoffOption
                                              options.tessellation_levels.end());
   notes.push_back("base of every row: " + std::to_string(options.base_spp) +
                   " spp, full size, exact pow, float, per-pixel, shadows as the scene says" +
-                  (has_teapot(scene) ? ", teapot tessellation " + std::to_string(finest) : "") +
+                  (has_object_type(scene, ObjectType::teapot)
+                       ? ", teapot tessellation " + std::to_string(finest)
+                       : "") +
                   "; error against double precision at " + std::to_string(options.reference_spp) +
                   " spp, total image, linear values, every pixel");
-  if (!has_teapot(scene)) {
+  if (!has_object_type(scene, ObjectType::teapot)) {
     notes.push_back("tessellation: skipped, the scene has no teapot" +
                     (other_meshes > 0
                          ? " (its " + std::to_string(other_meshes) +
