@@ -3,18 +3,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include "overloaded.h"
 #include "preset_table.h"
 
 namespace gloss {
 
 namespace {
-
-template <class... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
-template <class... Ts>
-Overloaded(Ts...) -> Overloaded<Ts...>;
 
 bool finite(const glm::vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);

@@ -6,18 +6,12 @@
 #include "command_layer.h"
 #include "error.h"
 #include "export_image.h"
+#include "overloaded.h"
 #include "quality_measurement.h"
 
 namespace gloss {
 
 namespace {
-
-template <class... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
-template <class... Ts>
-Overloaded(Ts...) -> Overloaded<Ts...>;
 
 void say_no_display(const std::string& reason) {
   std::fprintf(stderr, "gloss: no display (%s); using the core renderer without a window\n",

@@ -4,20 +4,12 @@
 
 #include "app.h"
 #include "error.h"
+#include "overloaded.h"
 #include "quality_measurement.h"
 
 namespace gloss {
 
-namespace {
-
-template <class... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
-template <class... Ts>
-Overloaded(Ts...) -> Overloaded<Ts...>;
-
-}  // namespace
+namespace {}  // namespace
 
 std::string stats_text(const App& app) {
   char text[512];

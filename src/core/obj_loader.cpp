@@ -17,6 +17,7 @@
 #include <glm/geometric.hpp>
 
 #include "error.h"
+#include "number_words.h"
 
 namespace gloss {
 
@@ -35,17 +36,9 @@ std::vector<std::string> split_words(const std::string& line) {
   return words;
 }
 
-bool parse_int(const std::string& word, long& out) {
-  char* end = nullptr;
-  errno = 0;
-  out = std::strtol(word.c_str(), &end, 10);
-  return errno == 0 && end != word.c_str() && *end == '\0';
-}
-
 bool parse_finite(const std::string& word) {
-  char* end = nullptr;
-  const double value = std::strtod(word.c_str(), &end);
-  return end != word.c_str() && *end == '\0' && std::isfinite(value);
+  float value;
+  return parse_finite_float(word, value);
 }
 
 struct ElementCounts {
@@ -83,7 +76,7 @@ void check_corner(const std::string& corner, const ElementCounts& so_far,
   for (std::size_t k = 0; k < parts.size(); ++k) {
     if (k == 1 && parts.size() == 3 && parts[1].empty()) continue;  // "v//vn": no texture
     long index = 0;
-    if (!parse_int(parts[k], index)) {
+    if (!parse_long(parts[k], index)) {
       throw InputError(path, "malformed face corner '" + corner + "'", line);
     }
     if (index == 0) {

@@ -17,6 +17,7 @@
 
 #include "assets.h"
 #include "error.h"
+#include "number_words.h"
 
 namespace gloss {
 
@@ -33,19 +34,6 @@ std::vector<std::string> split_words(const std::string& line) {
   std::vector<std::string> words;
   for (std::string w; in >> w;) words.push_back(w);
   return words;
-}
-
-bool parse_int(const std::string& word, long& out) {
-  char* end = nullptr;
-  errno = 0;
-  out = std::strtol(word.c_str(), &end, 10);
-  return errno == 0 && end != word.c_str() && *end == '\0';
-}
-
-bool parse_float(const std::string& word, float& out) {
-  char* end = nullptr;
-  out = std::strtof(word.c_str(), &end);
-  return end != word.c_str() && *end == '\0' && std::isfinite(out);
 }
 
 // Reads the file's lines that are not blank or comments, as words, and knows the current line
@@ -180,7 +168,7 @@ BezierPatches load_bezier_patches(const std::string& path) {
   while (reader.next(words)) {
     long count = 0;
     if (words.size() != 2 || (words[0] != "patches" && words[0] != "points") ||
-        !parse_int(words[1], count) || count <= 0) {
+        !parse_long(words[1], count) || count <= 0) {
       reader.fail("expected 'patches N' or 'points N' with N > 0");
     }
     const bool is_patches = words[0] == "patches";
@@ -196,7 +184,7 @@ BezierPatches load_bezier_patches(const std::string& path) {
         std::array<int, 16> patch{};
         long index = 0;
         for (std::size_t i = 0; i < 16; ++i) {
-          if (words.size() != 16 || !parse_int(words[i], index) || index < 0 || index > 1 << 30) {
+          if (words.size() != 16 || !parse_long(words[i], index) || index < 0 || index > 1 << 30) {
             reader.fail("expected 16 control-point indices (non-negative integers)");
           }
           patch[i] = static_cast<int>(index);
@@ -205,8 +193,8 @@ BezierPatches load_bezier_patches(const std::string& path) {
         patch_lines.push_back(reader.line());
       } else {
         float x = 0, y = 0, z = 0;
-        if (words.size() != 3 || !parse_float(words[0], x) || !parse_float(words[1], y) ||
-            !parse_float(words[2], z)) {
+        if (words.size() != 3 || !parse_finite_float(words[0], x) ||
+            !parse_finite_float(words[1], y) || !parse_finite_float(words[2], z)) {
           reader.fail("expected a point 'x y z' (three finite numbers)");
         }
         data.points.emplace_back(x, z, -y);  // z-up to y-up, right-handed
