@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "editor_process.h"
 #include "image_io.h"
 
 namespace gloss {
@@ -19,48 +20,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int status = -1;
-  std::string out, err;
-};
+using test::EditorRun;
+using test::read_text;
 
-std::string read_all(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class EditorE2E : public ::testing::Test {
+class EditorE2E : public test::EditorProcessTest {
  protected:
-  void SetUp() override {
-    const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    m_dir = fs::temp_directory_path() / (std::string("gloss-e2e-") + info->name());
-    fs::remove_all(m_dir);
-    fs::create_directories(m_dir);
-  }
+  EditorE2E() : EditorProcessTest("gloss-e2e-") {}
   // Runs gloss on the test scene with script_text; with_display = false runs it without X.
-  Outcome run(const std::string& script_text, bool with_display = true) {
-    std::ofstream(m_dir / "script.txt") << script_text;
-    const std::string scene = std::string(GLOSS_APP_TEST_DATA) + "/gold_sphere.json";
-    std::string command = "cd '" + m_dir.string() + "' && XDG_CONFIG_HOME='" + m_dir.string() +
-                          "/config' XDG_STATE_HOME='" + m_dir.string() + "/state' ";
-    if (with_display) {
-      if (std::string(GLOSS_XVFB_RUN).empty()) return {};
-      command += std::string(GLOSS_XVFB_RUN) + " -a -s '-screen 0 1280x800x24' ";
-    } else {
-      command += "env -u DISPLAY -u WAYLAND_DISPLAY ";
-    }
-    command += std::string(GLOSS_EDITOR_PATH) + " '" + scene +
-               "' --script script.txt > out.txt 2> err.txt";
-    const int raw = std::system(command.c_str());
-    Outcome r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = read_all(m_dir / "out.txt");
-    r.err = read_all(m_dir / "err.txt");
-    return r;
+  EditorRun run(const std::string& script_text, bool with_display = true) {
+    return run_editor(std::string(GLOSS_APP_TEST_DATA) + "/gold_sphere.json", script_text,
+                      with_display);
   }
-  fs::path m_dir;
 };
 
 // Mean of each channel over the pixels that are not background (the scene's background is black).
@@ -76,7 +46,7 @@ glm::dvec3 mean_of_lit(const Png8& png) {
 }
 
 TEST_F(EditorE2E, GoldAndSilverDifferInTheExpectedDirection) {
-  const Outcome r =
+  const EditorRun r =
       run("preset 0 gold\nwait\nscreenshot gold.png viewport\n"
           "preset 0 silver\nwait\nscreenshot silver.png viewport\nquit\n");
   if (r.status == -1) GTEST_SKIP() << "no xvfb-run";
@@ -91,7 +61,7 @@ TEST_F(EditorE2E, GoldAndSilverDifferInTheExpectedDirection) {
 }
 
 TEST_F(EditorE2E, TermSheetHasFourNonEmptyPanesThatSumToTheTotal) {
-  const Outcome r = run("view terms\nwait\nscreenshot sheet.png terms\nquit\n");
+  const EditorRun r = run("view terms\nwait\nscreenshot sheet.png terms\nquit\n");
   if (r.status == -1) GTEST_SKIP() << "no xvfb-run";
   ASSERT_EQ(r.status, 0) << r.err;
   const Png8 sheet = read_png((m_dir / "sheet.png").string());
@@ -124,7 +94,7 @@ TEST_F(EditorE2E, TermSheetHasFourNonEmptyPanesThatSumToTheTotal) {
 }
 
 TEST_F(EditorE2E, UndoRestoresTheEarlierImageExactly) {
-  const Outcome r =
+  const EditorRun r =
       run("wait\nscreenshot before.png viewport\n"
           "set 0 diffuse 0.9 0.1 0.1\nset 0 shininess 5\nwait\nscreenshot edited.png viewport\n"
           "undo\nundo\nwait\nscreenshot after.png viewport\nquit\n");
@@ -138,7 +108,7 @@ TEST_F(EditorE2E, UndoRestoresTheEarlierImageExactly) {
 }
 
 TEST_F(EditorE2E, WindowScreenshotShowsTheWholeWindow) {
-  const Outcome r = run("view terms\nwait\nscreenshot window.png window\nstats\nquit\n");
+  const EditorRun r = run("view terms\nwait\nscreenshot window.png window\nstats\nquit\n");
   if (r.status == -1) GTEST_SKIP() << "no xvfb-run";
   ASSERT_EQ(r.status, 0) << r.err;
   const Png8 png = read_png((m_dir / "window.png").string());
@@ -151,21 +121,21 @@ TEST_F(EditorE2E, WindowScreenshotShowsTheWholeWindow) {
 }
 
 TEST_F(EditorE2E, ABadScriptLineIsAnErrorNamingTheLine) {
-  const Outcome r = run("wait\n# fine\nfrobnicate 2\nquit\n", false);
+  const EditorRun r = run("wait\n# fine\nfrobnicate 2\nquit\n", false);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("script.txt:3:"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("frobnicate"), std::string::npos) << r.err;
 }
 
 TEST_F(EditorE2E, ACommandThatFailsAtRunTimeNamesItsLine) {
-  const Outcome r = run("wait\npreset 3 gold\nquit\n");
+  const EditorRun r = run("wait\npreset 3 gold\nquit\n");
   if (r.status == -1) GTEST_SKIP() << "no xvfb-run";
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("script.txt:2:"), std::string::npos) << r.err;
 }
 
 TEST_F(EditorE2E, WithoutADisplayTheScriptRunsOnTheCoreRenderer) {
-  const Outcome r = run("set 0 shininess 10\nscreenshot shot.png viewport\nquit\n", false);
+  const EditorRun r = run("set 0 shininess 10\nscreenshot shot.png viewport\nquit\n", false);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("no display"), std::string::npos) << r.err;
   EXPECT_EQ(read_png((m_dir / "shot.png").string()).width, 160);
@@ -178,8 +148,8 @@ TEST_F(EditorE2E, WithoutADisplayGlossRendersTheSceneToAPng) {
   const int raw = std::system(command.c_str());
   ASSERT_TRUE(WIFEXITED(raw));
   EXPECT_EQ(WEXITSTATUS(raw), 0);
-  EXPECT_NE(read_all(m_dir / "err.txt").find("no display"), std::string::npos);
-  const std::string out = read_all(m_dir / "out.txt");
+  EXPECT_NE(read_text(m_dir / "err.txt").find("no display"), std::string::npos);
+  const std::string out = read_text(m_dir / "out.txt");
   const std::size_t at = out.find(" to ");
   ASSERT_NE(at, std::string::npos) << out;
   const std::string path = out.substr(at + 4, out.find('\n', at) - at - 4);

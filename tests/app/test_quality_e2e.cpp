@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "editor_process.h"
 #include "image_io.h"
 
 namespace gloss {
@@ -20,17 +21,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct EditorRun {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::EditorRun;
+using test::read_text;
 
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
@@ -48,36 +40,14 @@ std::set<std::string> knobs_in(const std::vector<std::string>& csv_lines) {
   return knobs;
 }
 
-class QualityE2E : public ::testing::Test {
+class QualityE2E : public test::EditorProcessTest {
  protected:
-  void SetUp() override {
-    const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    m_dir = fs::temp_directory_path() / (std::string("gloss-quality-e2e-") + info->name());
-    fs::remove_all(m_dir);
-    fs::create_directories(m_dir);
-  }
+  QualityE2E() : EditorProcessTest("gloss-quality-e2e-") {}
   // Runs gloss on scene (a path) with script_text; with_display = false runs it without X.
   EditorRun run(const std::string& scene, const std::string& script_text,
                 bool with_display = true) {
-    std::ofstream(m_dir / "script.txt") << script_text;
-    std::string command = "cd '" + m_dir.string() + "' && XDG_CONFIG_HOME='" + m_dir.string() +
-                          "/config' XDG_STATE_HOME='" + m_dir.string() + "/state' ";
-    if (with_display) {
-      if (std::string(GLOSS_XVFB_RUN).empty()) return {};
-      command += std::string(GLOSS_XVFB_RUN) + " -a -s '-screen 0 1280x800x24' ";
-    } else {
-      command += "env -u DISPLAY -u WAYLAND_DISPLAY ";
-    }
-    command += std::string(GLOSS_EDITOR_PATH) + " '" + scene +
-               "' --script script.txt > out.txt 2> err.txt";
-    const int raw = std::system(command.c_str());
-    EditorRun r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = read_text(m_dir / "out.txt");
-    r.err = read_text(m_dir / "err.txt");
-    return r;
+    return run_editor(scene, script_text, with_display);
   }
-  fs::path m_dir;
 };
 
 const char* kHeader = "knob,setting,time_ms,rmse,psnr_db,max_abs,pct_pixels_off";

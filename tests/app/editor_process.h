@@ -1,0 +1,69 @@
+#pragma once
+// Running the real gloss binary in a per-test folder, under Xvfb or without a display, for the
+// end-to-end tests. Paths come from compile definitions (GLOSS_EDITOR_PATH, GLOSS_XVFB_RUN).
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace gloss::test {
+
+struct EditorRun {
+  int status = -1;  // exit status; -1 when it did not run (no xvfb-run) or was killed
+  std::string out, err;
+};
+
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A fixture with a fresh folder per test (config and state directories inside it, so the
+// user's own settings and recovery file are never touched).
+class EditorProcessTest : public ::testing::Test {
+ protected:
+  explicit EditorProcessTest(std::string prefix) : m_prefix(std::move(prefix)) {}
+
+  void SetUp() override {
+    const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    m_dir = std::filesystem::temp_directory_path() / (m_prefix + info->name());
+    std::filesystem::remove_all(m_dir);
+    std::filesystem::create_directories(m_dir);
+  }
+
+  // Runs gloss on scene with script_text as its --script; with_display = false runs it without X.
+  EditorRun run_editor(const std::string& scene, const std::string& script_text,
+                       bool with_display) {
+    std::ofstream(m_dir / "script.txt") << script_text;
+    std::string command = "cd '" + m_dir.string() + "' && XDG_CONFIG_HOME='" + m_dir.string() +
+                          "/config' XDG_STATE_HOME='" + m_dir.string() + "/state' ";
+    if (with_display) {
+      if (std::string(GLOSS_XVFB_RUN).empty()) return {};
+      command += std::string(GLOSS_XVFB_RUN) + " -a -s '-screen 0 1280x800x24' ";
+    } else {
+      command += "env -u DISPLAY -u WAYLAND_DISPLAY ";
+    }
+    command += std::string(GLOSS_EDITOR_PATH) + " '" + scene +
+               "' --script script.txt > out.txt 2> err.txt";
+    const int raw = std::system(command.c_str());
+    EditorRun r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = read_text(m_dir / "out.txt");
+    r.err = read_text(m_dir / "err.txt");
+    return r;
+  }
+
+  std::filesystem::path m_dir;
+
+ private:
+  std::string m_prefix;
+};
+
+}  // namespace gloss::test
