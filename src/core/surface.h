@@ -25,7 +25,7 @@ struct HitGeometry {
   glm::vec3 p0, p1, p2;  // sphere: p0 = centre
   glm::vec3 n0, n1, n2;  // smooth triangles only
   float u, v;
-  std::int32_t sphere, smooth;  // 0 or 1 (ints, not bools: the packet loop vectorizes on them)
+  std::int32_t sphere, smooth;  // 0 or 1
 };
 
 HitGeometry hit_geometry(const Object& object, std::uint32_t prim, float u, float v);
@@ -33,33 +33,33 @@ HitGeometry hit_geometry(const Object& object, std::uint32_t prim, float u, floa
 // dir must be unit length, in double: the hit point is rebuilt as origin + t dir in double and
 // rounded once, since a float direction alone moves the point by 1e-7 of the distance to the eye
 // (enough to shift a steep highlight by more than the contract's 1e-4). t is the hit distance
-// (refined for spheres, refine_sphere_hit).
-// Every candidate normal is computed and the lane's own selected per component, without
-// branches, so the renderer's loop over a 16-ray packet vectorizes (GCC if-converts float
-// selects, not selects of glm vectors).
+// (refined for spheres, refine_sphere_hit). Only the lane's own kind of normal is computed: the
+// packet loops are scalar (GCC does not vectorize them), so selects would only add work.
 inline Surface surface_from(const HitGeometry& g, const glm::vec3& origin, const glm::dvec3& dir,
                             float t) {
   Surface s;
   const glm::dvec3 p = glm::dvec3(origin) + static_cast<double>(t) * dir;
   s.p = glm::vec3(p);
   s.v = -glm::vec3(dir);
-  // The sphere's normal from the unrounded point: at shininess 1000 a float normal alone moves
-  // the highlight by more than 1e-4.
-  const glm::vec3 sphere_normal = glm::vec3(glm::normalize(p - glm::dvec3(g.p0)));
-  const glm::vec3 face_normal = glm::normalize(glm::cross(g.p1 - g.p0, g.p2 - g.p0));
-  const glm::vec3 interpolated = (1.0f - g.u - g.v) * g.n0 + g.u * g.n1 + g.v * g.n2;
-  const float len = std::sqrt(glm::dot(interpolated, interpolated));
-  // Opposite vertex normals can cancel; the geometric normal is then the only sane choice.
-  const bool use_smooth = (g.smooth != 0) & (len > 1e-6f);
-  const glm::vec3 smooth_normal = interpolated / (use_smooth ? len : 1.0f);
-  const bool sphere = g.sphere != 0;
-  for (int k = 0; k < 3; ++k) {
-    s.ng[k] = sphere ? sphere_normal[k] : face_normal[k];
-    s.n[k] = sphere ? sphere_normal[k] : (use_smooth ? smooth_normal[k] : face_normal[k]);
+  if (g.sphere != 0) {
+    // From the unrounded point: at shininess 1000 a float normal alone moves the highlight by
+    // more than 1e-4.
+    s.n = glm::vec3(glm::normalize(p - glm::dvec3(g.p0)));
+    s.ng = s.n;
+  } else {
+    s.ng = glm::normalize(glm::cross(g.p1 - g.p0, g.p2 - g.p0));
+    s.n = s.ng;
+    if (g.smooth != 0) {
+      const glm::vec3 interpolated = (1.0f - g.u - g.v) * g.n0 + g.u * g.n1 + g.v * g.n2;
+      const float len = glm::length(interpolated);
+      // Opposite vertex normals can cancel; the geometric normal is then the only sane choice.
+      if (len > 1e-6f) s.n = interpolated / len;
+    }
   }
-  const float side = glm::dot(s.ng, s.v) < 0.0f ? -1.0f : 1.0f;  // two-sided surfaces
-  s.ng *= side;
-  s.n *= side;
+  if (glm::dot(s.ng, s.v) < 0.0f) {  // two-sided surfaces
+    s.ng = -s.ng;
+    s.n = -s.n;
+  }
   return s;
 }
 
