@@ -81,4 +81,20 @@ inline Scene head_on_sphere_scene() {
   return scene;
 }
 
+// The head-on sphere seen from above over a floor quad, background visible: every render stage
+// has work (primary misses, shadow rays fewer than primaries). 80 x 60 at 4 spp.
+inline Scene sphere_on_floor_scene() {
+  Scene scene = head_on_sphere_scene();
+  scene.camera.eye = {0, 1.5f, 5};
+  scene.camera.target = {0, -0.5f, 0};
+  const int floor = add_material(
+      scene, "floor",
+      make_material(glm::vec3(0.1f), glm::vec3(0.6f), glm::vec3(0.2f), glm::vec3(0.0f), 8));
+  add_quad(scene, {-2, -1, 2}, {2, -1, 2}, {2, -1, -2}, {-2, -1, -2}, floor);
+  scene.render.width = 80;
+  scene.render.height = 60;
+  scene.render.spp = 4;
+  return scene;
+}
+
 }  // namespace gloss::test

@@ -35,22 +35,6 @@ void expect_matches_fresh_render(const RenderedFrame& frame, const Scene& scene)
   EXPECT_LE(max_abs_diff(frame.images.specular, fresh.specular), 1e-6);
 }
 
-// Sphere over a floor with the background visible: every stage has work, and shadow rays are
-// fewer than primary rays.
-Scene sphere_on_floor() {
-  Scene scene = test::head_on_sphere_scene();
-  scene.camera.eye = {0, 1.5f, 5};
-  scene.camera.target = {0, -0.5f, 0};
-  const int floor = test::add_material(
-      scene, "floor",
-      test::make_material(glm::vec3(0.1f), glm::vec3(0.6f), glm::vec3(0.2f), glm::vec3(0.0f), 8));
-  test::add_quad(scene, {-2, -1, 2}, {2, -1, 2}, {2, -1, -2}, {-2, -1, -2}, floor);
-  scene.render.width = 80;
-  scene.render.height = 60;
-  scene.render.spp = 4;
-  return scene;
-}
-
 std::shared_ptr<const RenderedFrame> converge(ProgressiveRenderer& engine, const Scene& scene) {
   engine.set_scene(scene);
   EXPECT_TRUE(engine.wait_converged(kWaitMs));
@@ -65,7 +49,7 @@ TEST(ProgressiveRenderer, PassesGoCoarseToFineAndConvergeToTheOneShotImage) {
     std::lock_guard<std::mutex> lock(seen_mutex);
     seen.push_back(engine.latest()->info);
   });
-  Scene scene = sphere_on_floor();
+  Scene scene = test::sphere_on_floor_scene();
   scene.render.spp = 16;
   const auto frame = converge(engine, scene);
   ASSERT_NE(frame, nullptr);
@@ -87,7 +71,7 @@ TEST(ProgressiveRenderer, PassesGoCoarseToFineAndConvergeToTheOneShotImage) {
 
 TEST(ProgressiveRenderer, MaterialConstantEditReshadesWithoutRaysAndMatchesFreshRender) {
   ProgressiveRenderer engine;
-  Scene scene = sphere_on_floor();
+  Scene scene = test::sphere_on_floor_scene();
   converge(engine, scene);
   scene.materials[0].diffuse = {0.9f, 0.1f, 0.1f};
   scene.materials[1].emission = {0.05f, 0.0f, 0.0f};
@@ -102,7 +86,7 @@ TEST(ProgressiveRenderer, MaterialConstantEditReshadesWithoutRaysAndMatchesFresh
 
 TEST(ProgressiveRenderer, ShininessAndModelEditsReshadeWithoutRays) {
   ProgressiveRenderer engine;
-  Scene scene = sphere_on_floor();
+  Scene scene = test::sphere_on_floor_scene();
   converge(engine, scene);
   scene.materials[0].shininess = 500;
   auto frame = converge(engine, scene);
@@ -118,7 +102,7 @@ TEST(ProgressiveRenderer, ShininessAndModelEditsReshadeWithoutRays) {
 
 TEST(ProgressiveRenderer, LightMoveTracesOnlyShadowRays) {
   ProgressiveRenderer engine;
-  Scene scene = sphere_on_floor();
+  Scene scene = test::sphere_on_floor_scene();
   converge(engine, scene);
   scene.lights[0].position = {-2, 3, 1};
   const auto frame = converge(engine, scene);
@@ -131,7 +115,7 @@ TEST(ProgressiveRenderer, LightMoveTracesOnlyShadowRays) {
 
 TEST(ProgressiveRenderer, CameraEditRestartsFromTheCoarsestPass) {
   ProgressiveRenderer engine;
-  Scene scene = sphere_on_floor();
+  Scene scene = test::sphere_on_floor_scene();
   converge(engine, scene);
   scene.camera.eye = {1, 2, 4};
   const auto frame = converge(engine, scene);
@@ -202,7 +186,7 @@ TEST(ProgressiveRenderer, EditStormNeverPublishesTornOrStaleFramesAndEndsOnTheLa
 TEST(ProgressiveRenderer, DestroyingWhileRenderingDoesNotHang) {
   for (int i = 0; i < 20; ++i) {
     ProgressiveRenderer engine;
-    Scene scene = sphere_on_floor();
+    Scene scene = test::sphere_on_floor_scene();
     scene.render.spp = 64;
     engine.set_scene(scene);
     std::this_thread::sleep_for(std::chrono::milliseconds(i % 5));

@@ -26,6 +26,7 @@ struct BenchReport {
   std::string scene;
   int width = 0, height = 0, threads = 0;
   double retrace_ms = 0, embree_raw_ms = 0, retrace_ratio = 0;
+  double retrace_terms_ms = 0;  // full render with the four term images too
   long long rays_per_frame = 0;
   double reshade_ms = 0, bandwidth_floor_ms = 0, reshade_ratio = 0;
   double reshade_terms_ms = 0;  // re-shade writing all four term images too

@@ -66,10 +66,10 @@ inline CameraFrame make_camera_frame(const Camera& camera, int width, int height
 // (x + 0.5, y + 0.5) is the centre of pixel (x, y), y growing downwards.
 template <class T>
 glm::tvec3<T> camera_direction(const CameraBasis<T>& basis, T px, T py, int width, int height) {
-  const T sx = (T(2) * px / T(width) - T(1)) * basis.scale_x;
-  const T sy = (T(1) - T(2) * py / T(height)) * basis.scale_y;
+  const T sx = (px * (T(2) / T(width)) - T(1)) * basis.scale_x;  // 2 / W: hoisted out of loops
+  const T sy = (T(1) - py * (T(2) / T(height))) * basis.scale_y;
   const glm::tvec3<T> d = basis.forward + sx * basis.right + sy * basis.up;
-  return d / std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+  return d * (T(1) / std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z));  // one division, not three
 }
 
 inline glm::vec3 primary_direction(const CameraFrame& frame, float px, float py, int width,

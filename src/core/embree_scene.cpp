@@ -66,7 +66,8 @@ RTCDevice embree_device() {
   return device;
 }
 
-EmbreeScene::EmbreeScene(const Scene& scene) : m_device(embree_device()) {
+EmbreeScene::EmbreeScene(const Scene& scene)
+    : m_device(embree_device()), m_surfaces(make_surface_table(scene)) {
   m_scene = rtcNewScene(m_device);
   rtcSetSceneFlags(m_scene, RTC_SCENE_FLAG_NONE);
   rtcSetSceneBuildQuality(m_scene, RTC_BUILD_QUALITY_HIGH);

@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 
 #include "parallel_tiles.h"
+#include "power_lanes.h"
 
 namespace gloss {
 
@@ -57,26 +58,74 @@ std::size_t PixelFactors::bytes() const {
          (extra_weight.size() + extra_diffuse.size() + extra_specular.size()) * 4;
 }
 
-bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, PixelFactors& out) {
-  const Scene& scene = *ctx.scene;
-  const std::size_t pixels = cache.pixel_count();
-  const std::size_t lights = ctx.plan.lights.size();
-  const int n = cache.samples();
-  out.width = cache.width;
-  out.height = cache.height;
-  out.samples = n;
+void size_pixel_factors(PixelFactors& out, int width, int height, int samples, std::size_t lights) {
+  const std::size_t pixels = static_cast<std::size_t>(width) * height;
+  out.width = width;
+  out.height = height;
+  out.samples = samples;
   out.lights = lights;
   out.material.resize(pixels);
   out.weight.resize(pixels);
   out.background.resize(pixels);
   out.diffuse.resize(pixels * lights);
   out.specular.resize(pixels * lights);
+  out.extra_pixel.clear();
+  out.extra_material.clear();
+  out.extra_weight.clear();
+  out.extra_diffuse.clear();
+  out.extra_specular.clear();
+}
+
+void single_sample_coverage(const Scene& scene, const std::int32_t* object, int n,
+                            std::int32_t* material, float* weight, float* background) {
+  for (int i = 0; i < n; ++i) {
+    material[i] = object[i] < 0 ? -1 : scene.objects[static_cast<std::size_t>(object[i])].material;
+  }
+  for (int i = 0; i < n; ++i) {
+    weight[i] = object[i] < 0 ? 0.0f : 1.0f;
+    background[i] = object[i] < 0 ? 1.0f : 0.0f;
+  }
+}
+
+void single_sample_light(const MaterialExponents& exponents, PowMode mode,
+                         const std::int32_t* material, const float* diffuse_weight,
+                         const float* spec_weight, const float* cosine, int n, float* diffuse,
+                         float* specular) {
+  alignas(64) float power[kMaxPowerLanes];
+  specular_power_lanes(exponents, material, cosine, power, n, mode);
+  for (int i = 0; i < n; ++i) {
+    diffuse[i] = material[i] < 0 ? 0.0f : diffuse_weight[i];
+    specular[i] = material[i] < 0 ? 0.0f : spec_weight[i] * power[i];
+  }
+}
+
+bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, PixelFactors& out) {
+  const Scene& scene = *ctx.scene;
+  const std::size_t pixels = cache.pixel_count();
+  const std::size_t lights = ctx.plan.lights.size();
+  const int n = cache.samples();
+  size_pixel_factors(out, cache.width, cache.height, n, lights);
   const int tiles_x = (cache.width + kTileSize - 1) / kTileSize;
   const int tiles_y = (cache.height + kTileSize - 1) / kTileSize;
   std::vector<TileExtras> extras(static_cast<std::size_t>(tiles_x * tiles_y));
   const float inv_n = n > 0 ? 1.0f / static_cast<float>(n) : 0.0f;
   const ShadingModel model = scene.render.model;
   const PowMode pow_mode = scene.render.pow;
+  const MaterialExponents exponents = material_exponents(scene);
+  constexpr int kRun = kMaxPowerLanes;  // pixels of a row handled together
+
+  // One sample: no grouping, the lane helpers the fused first pass uses.
+  auto single = [&](std::size_t idx, int m) {
+    const SamplePlane& plane = cache.planes[0];
+    single_sample_coverage(scene, &plane.object[idx], m, &out.material[idx], &out.weight[idx],
+                           &out.background[idx]);
+    for (std::size_t li = 0; li < lights; ++li) {
+      const LightFactorPlane& f = plane.lights[li];
+      single_sample_light(exponents, pow_mode, &out.material[idx], &f.diffuse_weight[idx],
+                          &f.spec_weight[idx], f.cosine(model) + idx, m,
+                          &out.diffuse[li * pixels + idx], &out.specular[li * pixels + idx]);
+    }
+  };
 
   const bool done =
       parallel_tiles(cache.width, cache.height, ctx.cancel, [&](int x0, int y0, int x1, int y1) {
@@ -85,83 +134,78 @@ bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pix
         tile_extras = TileExtras{};
         std::vector<Group> groups;
         std::vector<float> sums;  // [group * 2 * lights + 2 * light + {0: diffuse, 1: specular}]
+        // Per run of pixels: each sample's material and weighted c^alpha (lanes helpers).
+        std::vector<std::int32_t> run_material(n > 1 ? static_cast<std::size_t>(n) * kRun : 0);
+        std::vector<float> run_specular(run_material.size() * lights);
         for (int y = y0; y < y1; ++y) {
-          for (int x = x0; x < x1; ++x) {
-            const std::size_t idx = static_cast<std::size_t>(y) * cache.width + x;
+          for (int xs = x0; xs < x1; xs += kRun) {
+            const int m = std::min(kRun, x1 - xs);
+            const std::size_t idx0 = static_cast<std::size_t>(y) * cache.width + xs;
             if (n == 1) {
-              // One sample: no grouping, same arithmetic as the general path (x * 1.0f).
-              const SamplePlane& plane = cache.planes[0];
-              const std::int32_t object = plane.object[idx];
-              const int material =
-                  object < 0 ? -1 : scene.objects[static_cast<std::size_t>(object)].material;
-              out.material[idx] = material;
-              out.weight[idx] = object < 0 ? 0.0f : 1.0f;
-              out.background[idx] = object < 0 ? 1.0f : 0.0f;
-              const float alpha =
-                  material < 0 ? 0.0f
-                               : scene.materials[static_cast<std::size_t>(material)].shininess;
-              for (std::size_t li = 0; li < lights; ++li) {
-                const LightFactors<float>& f = plane.lights[li][idx];
-                out.diffuse[li * pixels + idx] = object < 0 ? 0.0f : 0.0f + f.diffuse_weight;
-                out.specular[li * pixels + idx] =
-                    object < 0 ? 0.0f
-                               : 0.0f + f.spec_weight *
-                                            specular_power(model_cosine(f, model), alpha, pow_mode);
-              }
+              single(idx0, m);
               continue;
             }
-            groups.clear();
-            sums.clear();
-            int misses = 0;
             for (int s = 0; s < n; ++s) {
               const SamplePlane& plane = cache.planes[static_cast<std::size_t>(s)];
-              const std::int32_t object = plane.object[idx];
-              if (object < 0) {
-                ++misses;
-                continue;
+              std::int32_t* mat = &run_material[static_cast<std::size_t>(s) * kRun];
+              for (int i = 0; i < m; ++i) {
+                const std::int32_t object = plane.object[idx0 + i];
+                mat[i] = object < 0 ? -1 : scene.objects[static_cast<std::size_t>(object)].material;
               }
-              const Object& obj = scene.objects[static_cast<std::size_t>(object)];
-              std::size_t g = 0;
-              while (g < groups.size() && groups[g].material != obj.material) ++g;
-              if (g == groups.size()) {
-                groups.push_back({obj.material, 0});
-                sums.resize(sums.size() + 2 * lights, 0.0f);
-              }
-              ++groups[g].count;
-              const float alpha = scene.materials[static_cast<std::size_t>(obj.material)].shininess;
-              float* acc = sums.data() + g * 2 * lights;
               for (std::size_t li = 0; li < lights; ++li) {
-                const LightFactors<float>& f = plane.lights[li][idx];
-                acc[2 * li] += f.diffuse_weight;
-                acc[2 * li + 1] +=
-                    f.spec_weight * specular_power(model_cosine(f, model), alpha, pow_mode);
+                const LightFactorPlane& f = plane.lights[li];
+                float* spec = &run_specular[(s * lights + li) * kRun];
+                alignas(64) float power[kRun];
+                specular_power_lanes(exponents, mat, f.cosine(model) + idx0, power, m, pow_mode);
+                for (int i = 0; i < m; ++i) spec[i] = f.spec_weight[idx0 + i] * power[i];
               }
             }
-            out.background[idx] = static_cast<float>(misses) * inv_n;
-            out.material[idx] = groups.empty() ? -1 : groups[0].material;
-            out.weight[idx] = groups.empty() ? 0.0f : static_cast<float>(groups[0].count) * inv_n;
-            for (std::size_t li = 0; li < lights; ++li) {
-              out.diffuse[li * pixels + idx] = groups.empty() ? 0.0f : sums[2 * li] * inv_n;
-              out.specular[li * pixels + idx] = groups.empty() ? 0.0f : sums[2 * li + 1] * inv_n;
-            }
-            for (std::size_t g = 1; g < groups.size(); ++g) {
-              tile_extras.pixel.push_back(static_cast<std::uint32_t>(idx));
-              tile_extras.material.push_back(groups[g].material);
-              tile_extras.weight.push_back(static_cast<float>(groups[g].count) * inv_n);
+            for (int i = 0; i < m; ++i) {
+              const std::size_t idx = idx0 + i;
+              groups.clear();
+              sums.clear();
+              int misses = 0;
+              for (int s = 0; s < n; ++s) {
+                const std::int32_t material = run_material[static_cast<std::size_t>(s) * kRun + i];
+                if (material < 0) {
+                  ++misses;
+                  continue;
+                }
+                std::size_t g = 0;
+                while (g < groups.size() && groups[g].material != material) ++g;
+                if (g == groups.size()) {
+                  groups.push_back({material, 0});
+                  sums.resize(sums.size() + 2 * lights, 0.0f);
+                }
+                ++groups[g].count;
+                float* acc = sums.data() + g * 2 * lights;
+                const SamplePlane& plane = cache.planes[static_cast<std::size_t>(s)];
+                for (std::size_t li = 0; li < lights; ++li) {
+                  acc[2 * li] += plane.lights[li].diffuse_weight[idx];
+                  acc[2 * li + 1] += run_specular[(s * lights + li) * kRun + i];
+                }
+              }
+              out.background[idx] = static_cast<float>(misses) * inv_n;
+              out.material[idx] = groups.empty() ? -1 : groups[0].material;
+              out.weight[idx] = groups.empty() ? 0.0f : static_cast<float>(groups[0].count) * inv_n;
               for (std::size_t li = 0; li < lights; ++li) {
-                tile_extras.diffuse.push_back(sums[g * 2 * lights + 2 * li] * inv_n);
-                tile_extras.specular.push_back(sums[g * 2 * lights + 2 * li + 1] * inv_n);
+                out.diffuse[li * pixels + idx] = groups.empty() ? 0.0f : sums[2 * li] * inv_n;
+                out.specular[li * pixels + idx] = groups.empty() ? 0.0f : sums[2 * li + 1] * inv_n;
+              }
+              for (std::size_t g = 1; g < groups.size(); ++g) {
+                tile_extras.pixel.push_back(static_cast<std::uint32_t>(idx));
+                tile_extras.material.push_back(groups[g].material);
+                tile_extras.weight.push_back(static_cast<float>(groups[g].count) * inv_n);
+                for (std::size_t li = 0; li < lights; ++li) {
+                  tile_extras.diffuse.push_back(sums[g * 2 * lights + 2 * li] * inv_n);
+                  tile_extras.specular.push_back(sums[g * 2 * lights + 2 * li + 1] * inv_n);
+                }
               }
             }
           }
         }
       });
   if (!done) return false;
-  out.extra_pixel.clear();
-  out.extra_material.clear();
-  out.extra_weight.clear();
-  out.extra_diffuse.clear();
-  out.extra_specular.clear();
   for (const TileExtras& t : extras) {  // tile order: deterministic whatever the thread count
     out.extra_pixel.insert(out.extra_pixel.end(), t.pixel.begin(), t.pixel.end());
     out.extra_material.insert(out.extra_material.end(), t.material.begin(), t.material.end());

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "image.h"
+#include "power_lanes.h"
 #include "render_context.h"
 #include "sample_cache.h"
 #include "uninitialized_buffer.h"
@@ -37,6 +38,19 @@ struct PixelFactors {
 // Sums the cache's planes into per-pixel factors with the scene's exponents, model and pow mode.
 // false when cancelled (the factors are then incomplete).
 bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, PixelFactors& out);
+
+// Sizes out for a width x height region summed from `samples` samples, with no extras yet.
+void size_pixel_factors(PixelFactors& out, int width, int height, int samples, std::size_t lights);
+
+// The factors of n <= kMaxPowerLanes pixels covered by one sample each, from that sample's
+// object index and one light's factors (cosine: the model's). Shared by build_pixel_factors at
+// 1 spp and the fused first pass (single_sample_pass.h), so both give the same bits.
+void single_sample_coverage(const Scene& scene, const std::int32_t* object, int n,
+                            std::int32_t* material, float* weight, float* background);
+void single_sample_light(const MaterialExponents& exponents, PowMode mode,
+                         const std::int32_t* material, const float* diffuse_weight,
+                         const float* spec_weight, const float* cosine, int n, float* diffuse,
+                         float* specular);
 
 // Recombines factors with the scene's material constants, light colours, ambient and background
 // into out.total (and the four term images when terms is set). out is resized as needed.

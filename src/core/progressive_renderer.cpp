@@ -11,6 +11,7 @@
 #include "render_context.h"
 #include "render_plan.h"
 #include "sample_cache.h"
+#include "single_sample_pass.h"
 
 namespace gloss {
 
@@ -152,10 +153,12 @@ bool ProgressiveRenderer::Impl::step() {
   ctx.rays = &rays;
   ChangeClass redo = ChangeClass::none;  // what a cancellation leaves to do
   bool ok = true;
+  bool factors_done = false;  // the fused first pass builds the pixel factors too
   if (dirty == ChangeClass::full) {
     start_level(options.preview_levels > 0 ? 0 : options.preview_levels);
     redo = ChangeClass::full;
-    ok = add_samples(cache, ctx, 1);
+    ok = trace_single_sample(cache, ctx, factors);
+    factors_done = true;
   } else if (dirty == ChangeClass::light) {
     redo = ChangeClass::light;
     ok = recompute_light_factors(cache, ctx);
@@ -164,7 +167,9 @@ bool ProgressiveRenderer::Impl::step() {
     SampleCache previous = std::move(cache);
     const int previous_level = level;
     start_level(level + 1);
-    ok = add_samples(cache, ctx, 1);
+    redo = ChangeClass::exponent;  // cancelled: the factors must be rebuilt from `previous`
+    ok = trace_single_sample(cache, ctx, factors);
+    factors_done = true;
     if (!ok) {
       cache = std::move(previous);
       level = previous_level;
@@ -174,7 +179,7 @@ bool ProgressiveRenderer::Impl::step() {
     const int have = cache.samples();
     ok = add_samples(cache, ctx, std::min(have, scene->render.spp - have));
   }
-  if (ok && dirty != ChangeClass::shade) {
+  if (ok && dirty != ChangeClass::shade && !factors_done) {
     redo = std::max(redo, ChangeClass::exponent);
     ok = build_pixel_factors(cache, ctx, factors);
   }

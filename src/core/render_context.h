@@ -20,4 +20,13 @@ struct RenderContext {
   bool cancelled() const { return cancel != nullptr && cancel->load(std::memory_order_relaxed); }
 };
 
+// A context for scene and its Embree twin with the scene's own plan, no cancellation or count.
+inline RenderContext make_render_context(const Scene& scene, const EmbreeScene& embree) {
+  RenderContext ctx;
+  ctx.scene = &scene;
+  ctx.embree = &embree;
+  ctx.plan = make_render_plan(scene);
+  return ctx;
+}
+
 }  // namespace gloss

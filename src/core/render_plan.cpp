@@ -35,6 +35,7 @@ RenderPlan make_render_plan(const Scene& scene, bool full) {
     any_kd = any_kd || nonzero(m.diffuse);
     any_ks = any_ks || nonzero(m.specular);
   }
+  plan.spheres = has_object_type(scene, ObjectType::sphere);
   if (full) {
     plan.shadow_rays = scene.render.shadows;
     plan.emissive = plan.ambient = plan.diffuse = plan.specular = true;

@@ -8,6 +8,7 @@
 #include "render_context.h"
 #include "sample_cache.h"
 #include "scene_loader.h"
+#include "single_sample_pass.h"
 
 namespace gloss {
 
@@ -45,8 +46,12 @@ TermImages render(const Scene& scene, const RenderOptions& options) {
   TermImages band;
   for (int row0 = 0; row0 < h; row0 += band_rows) {
     cache = make_sample_cache(scene, w, h, spp, row0, std::min(band_rows, h - row0));
-    add_samples(cache, ctx, spp);
-    build_pixel_factors(cache, ctx, factors);
+    if (spp == 1) {
+      trace_single_sample(cache, ctx, factors);  // the same bits, one pass
+    } else {
+      add_samples(cache, ctx, spp);
+      build_pixel_factors(cache, ctx, factors);
+    }
     combine_terms(factors, ctx, band, options.terms);
     copy_rows(band.total, row0, out.total);
     if (options.terms) {

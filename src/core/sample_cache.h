@@ -1,7 +1,8 @@
 #pragma once
 // Per-sample cache of one image: the primary hit of every sample and, per planned light, the
 // geometry factors of the shading contract (shading.h LightFactors). Stored plane by plane
-// (plane s holds sample s of every pixel), so progressive passes append planes.
+// (plane s holds sample s of every pixel), so progressive passes append planes. Every field is
+// its own array (structure of arrays): packets store and re-shading loops read them as vectors.
 // Bytes per sample: 20 for the hit + 16 per planned light.
 #include <cstdint>
 #include <vector>
@@ -13,11 +14,26 @@
 
 namespace gloss {
 
+// shading.h's LightFactors of one planned light for every pixel of a plane.
+struct LightFactorPlane {
+  UninitializedBuffer<float> diffuse_weight, spec_weight, cos_phong, cos_blinn;
+
+  void resize(std::size_t pixels) {
+    diffuse_weight.resize(pixels);
+    spec_weight.resize(pixels);
+    cos_phong.resize(pixels);
+    cos_blinn.resize(pixels);
+  }
+  const float* cosine(ShadingModel model) const {
+    return model == ShadingModel::phong ? cos_phong.data() : cos_blinn.data();
+  }
+};
+
 struct SamplePlane {
   UninitializedBuffer<std::int32_t> object;  // object index (= geomID), -1 when the ray missed
   UninitializedBuffer<std::uint32_t> prim;   // triangle index; 0 for spheres
   UninitializedBuffer<float> t, u, v;        // hit distance (unit direction) and barycentrics
-  std::vector<UninitializedBuffer<LightFactors<float>>> lights;  // [planned light][pixel]
+  std::vector<LightFactorPlane> lights;      // [planned light]
 };
 
 struct SampleCache {
@@ -49,6 +65,12 @@ void reset_sample_cache(SampleCache& cache, const Scene& scene, int width, int h
 // Traces planes [samples(), samples() + count) and computes their light factors. On
 // cancellation the new planes are dropped and false is returned; the cache stays consistent.
 bool add_samples(SampleCache& cache, const RenderContext& ctx, int count);
+
+// Appends count planes sized for the cache and `lights` planned lights (memory of spare planes
+// reused), and drops the planes from index first on (to the spares): the bracket of a pass that
+// traces new planes (add_samples, trace_single_sample).
+void append_planes(SampleCache& cache, std::size_t lights, int count);
+void drop_planes(SampleCache& cache, int first);
 
 // Recomputes the light factors (shadow rays included) of every plane for the context's scene
 // and plan, reusing the primary hits. false when cancelled (the factors are then stale).

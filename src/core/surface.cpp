@@ -7,30 +7,6 @@
 
 namespace gloss {
 
-HitGeometry hit_geometry(const Object& object, std::uint32_t prim, float u, float v) {
-  HitGeometry g;
-  g.u = u;
-  g.v = v;
-  g.sphere = object.type == ObjectType::sphere;
-  g.smooth = false;
-  if (g.sphere) {
-    g.p0 = g.p1 = g.p2 = object.center;
-    return g;
-  }
-  const Mesh& mesh = *object.mesh;
-  const glm::uvec3 tri = mesh.triangles[prim];
-  g.p0 = mesh.positions[tri.x];
-  g.p1 = mesh.positions[tri.y];
-  g.p2 = mesh.positions[tri.z];
-  g.smooth = mesh.smooth();
-  if (g.smooth) {
-    g.n0 = mesh.normals[tri.x];
-    g.n1 = mesh.normals[tri.y];
-    g.n2 = mesh.normals[tri.z];
-  }
-  return g;
-}
-
 float refine_sphere_hit(const Object& sphere, const glm::vec3& origin, const glm::dvec3& dir,
                         float t_estimate) {
   const glm::dvec3 o(origin), d(dir), c(sphere.center);

@@ -19,47 +19,46 @@ struct Surface {
   glm::vec3 v;   // unit direction to the eye (= -ray direction)
 };
 
-// What a hit needs from its object: the sphere's centre, or the triangle's corners and (smooth
-// meshes) vertex normals, with Embree's barycentrics (p = (1 - u - v) p0 + u p1 + v p2).
+// What a hit needs from its primitive (surface_table.h): the sphere's centre or the triangle's
+// unit face normal, the vertex normals of smooth triangles, and Embree's barycentrics
+// (n = (1 - u - v) n0 + u n1 + v n2).
 struct HitGeometry {
-  glm::vec3 p0, p1, p2;  // sphere: p0 = centre
+  glm::vec3 a;           // sphere: centre; triangle: unit face normal
   glm::vec3 n0, n1, n2;  // smooth triangles only
   float u, v;
   std::int32_t sphere, smooth;  // 0 or 1
 };
 
-HitGeometry hit_geometry(const Object& object, std::uint32_t prim, float u, float v);
-
 // dir must be unit length, in double: the hit point is rebuilt as origin + t dir in double and
 // rounded once, since a float direction alone moves the point by 1e-7 of the distance to the eye
 // (enough to shift a steep highlight by more than the contract's 1e-4). t is the hit distance
-// (refined for spheres, refine_sphere_hit). Only the lane's own kind of normal is computed: the
-// packet loops are scalar (GCC does not vectorize them), so selects would only add work.
+// (refined for spheres, refine_sphere_hit). Written with selects, not branches: the packet code
+// (sample_packet.cpp) runs it over 16 lanes at once, so every lane computes both kinds of
+// normal and keeps its own.
 inline Surface surface_from(const HitGeometry& g, const glm::vec3& origin, const glm::dvec3& dir,
                             float t) {
+  auto select = [](bool c, const glm::vec3& a, const glm::vec3& b) {
+    return glm::vec3(c ? a.x : b.x, c ? a.y : b.y, c ? a.z : b.z);
+  };
   Surface s;
   const glm::dvec3 p = glm::dvec3(origin) + static_cast<double>(t) * dir;
   s.p = glm::vec3(p);
   s.v = -glm::vec3(dir);
-  if (g.sphere != 0) {
-    // From the unrounded point: at shininess 1000 a float normal alone moves the highlight by
-    // more than 1e-4.
-    s.n = glm::vec3(glm::normalize(p - glm::dvec3(g.p0)));
-    s.ng = s.n;
-  } else {
-    s.ng = glm::normalize(glm::cross(g.p1 - g.p0, g.p2 - g.p0));
-    s.n = s.ng;
-    if (g.smooth != 0) {
-      const glm::vec3 interpolated = (1.0f - g.u - g.v) * g.n0 + g.u * g.n1 + g.v * g.n2;
-      const float len = glm::length(interpolated);
-      // Opposite vertex normals can cancel; the geometric normal is then the only sane choice.
-      if (len > 1e-6f) s.n = interpolated / len;
-    }
-  }
-  if (glm::dot(s.ng, s.v) < 0.0f) {  // two-sided surfaces
-    s.ng = -s.ng;
-    s.n = -s.n;
-  }
+  // Sphere: from the unrounded point; at shininess 1000 a float normal alone moves the highlight
+  // by more than 1e-4.
+  const glm::vec3 n_sphere(glm::normalize(p - glm::dvec3(g.a)));
+  const glm::vec3 n_face = g.a;
+  const glm::vec3 interpolated = (1.0f - g.u - g.v) * g.n0 + g.u * g.n1 + g.v * g.n2;
+  const float len = glm::length(interpolated);
+  // Opposite vertex normals can cancel; the geometric normal is then the only sane choice.
+  const bool use_smooth = (g.smooth != 0) & (len > 1e-6f);
+  const glm::vec3 n_smooth = interpolated * (1.0f / (use_smooth ? len : 1.0f));
+  const bool sphere = g.sphere != 0;
+  s.ng = select(sphere, n_sphere, n_face);
+  s.n = select(sphere, n_sphere, select(use_smooth, n_smooth, n_face));
+  const float side = glm::dot(s.ng, s.v) < 0.0f ? -1.0f : 1.0f;  // two-sided surfaces
+  s.ng *= side;
+  s.n *= side;
   return s;
 }
 

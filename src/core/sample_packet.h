@@ -1,0 +1,166 @@
+#pragma once
+// One 4 x 4 block of samples traced and shaded together: Embree's 16-ray packets
+// (rtcIntersect16, rtcOccluded16) for the rays, and structure-of-arrays lanes for the maths in
+// between, so each per-sample step runs as vector code (16 floats = one AVX-512 register).
+// Steps in data-flow order: directions -> primary hits -> surfaces -> per light: shadow rays
+// and light factors. Lane i is pixel (x0 + i % 4, y0 + i / 4) of the cached region.
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+
+#include "parallel_tiles.h"
+#include "render_context.h"
+#include "sample_cache.h"
+#include "sampling.h"
+#include "surface.h"
+
+namespace gloss {
+
+constexpr int kPacketLanes = 16;
+constexpr int kPacketSide = 4;
+
+struct SamplePacket {
+  int x0, y0, x1, y1;                   // region pixels covered, [x0, x1) x [y0, y1)
+  alignas(64) int valid[kPacketLanes];  // Embree mask: -1 inside the region (64-B aligned)
+  alignas(64) double dir_x[kPacketLanes], dir_y[kPacketLanes], dir_z[kPacketLanes];  // unit
+  // Primary hits: object = geomID (-1: missed), prim = triangle (0 for spheres), t along the
+  // unit direction, Embree's barycentrics u, v.
+  alignas(64) std::int32_t object[kPacketLanes];
+  alignas(64) std::uint32_t prim[kPacketLanes];
+  alignas(64) float t[kPacketLanes], u[kPacketLanes], v[kPacketLanes];
+
+  SamplePacket(int bx0, int by0, int bx1, int by1);
+};
+
+// Surfaces of the lanes (surface.h Surface, split by component). hit is -1 where the primary
+// ray hit something.
+struct SurfaceLanes {
+  alignas(64) int hit[kPacketLanes];
+  alignas(64) float px[kPacketLanes], py[kPacketLanes], pz[kPacketLanes];  // point
+  alignas(64) float nx[kPacketLanes], ny[kPacketLanes], nz[kPacketLanes];  // shading normal
+  alignas(64) float gx[kPacketLanes], gy[kPacketLanes], gz[kPacketLanes];  // geometric normal
+  alignas(64) float vx[kPacketLanes], vy[kPacketLanes], vz[kPacketLanes];  // to the eye
+
+  Surface get(int i) const {
+    Surface s;
+    s.p = {px[i], py[i], pz[i]};
+    s.n = {nx[i], ny[i], nz[i]};
+    s.ng = {gx[i], gy[i], gz[i]};
+    s.v = {vx[i], vy[i], vz[i]};
+    return s;
+  }
+  void set(int i, const Surface& s) {
+    px[i] = s.p.x, py[i] = s.p.y, pz[i] = s.p.z;
+    nx[i] = s.n.x, ny[i] = s.n.y, nz[i] = s.n.z;
+    gx[i] = s.ng.x, gy[i] = s.ng.y, gz[i] = s.ng.z;
+    vx[i] = s.v.x, vy[i] = s.v.y, vz[i] = s.v.z;
+  }
+};
+
+// shading.h's LightFactors of one light for the lanes; zeros where unlit or missed.
+struct LightLanes {
+  alignas(64) float diffuse_weight[kPacketLanes], spec_weight[kPacketLanes];
+  alignas(64) float cos_phong[kPacketLanes], cos_blinn[kPacketLanes];
+};
+
+// Directions of sample `stratum` for every lane (y is a region row; the pattern and the camera
+// use image rows).
+void packet_directions(SamplePacket& packet, const SampleCache& cache, const SamplePattern& pattern,
+                       int stratum);
+
+// Traces the primary rays and fills the hit lanes; returns the rays traced.
+long long trace_primary(SamplePacket& packet, const SampleCache& cache, const RenderContext& ctx);
+
+// Hit lanes to and from a cache plane (the region is cache.width pixels wide).
+void store_hits(const SamplePacket& packet, int width, SamplePlane& plane);
+void load_hits(SamplePacket& packet, int width, const SamplePlane& plane);
+
+void packet_surfaces(const SamplePacket& packet, const SampleCache& cache, const RenderContext& ctx,
+                     SurfaceLanes& out);
+
+// Shadow rays (when planned) and light factors of planned light li; returns the rays traced.
+long long packet_light(const SamplePacket& packet, const SurfaceLanes& surfaces,
+                       const RenderContext& ctx, std::size_t li, LightLanes& out);
+
+void store_light(const SamplePacket& packet, int width, const LightLanes& lanes,
+                 LightFactorPlane& plane);
+
+// Copies lanes to a width-wide image array and back (clipped to the packet's block).
+// Surfaces of the packet's hits, then per planned light the factors, stored in plane and each
+// also handed to on_light(li, lanes) for a consumer fused into the same pass. Returns the
+// shadow rays traced.
+template <class OnLight>
+long long shade_sample(const SamplePacket& packet, const SampleCache& cache,
+                       const RenderContext& ctx, SamplePlane& plane, OnLight&& on_light) {
+  SurfaceLanes surfaces;
+  packet_surfaces(packet, cache, ctx, surfaces);
+  long long rays = 0;
+  for (std::size_t li = 0; li < ctx.plan.lights.size(); ++li) {
+    LightLanes lanes;
+    rays += packet_light(packet, surfaces, ctx, li, lanes);
+    store_light(packet, cache.width, lanes, plane.lights[li]);
+    on_light(li, lanes);
+  }
+  return rays;
+}
+
+// Traces sample `stratum` of the packet into plane: directions, primary hits (stored), then
+// shade_sample. Returns the rays traced.
+template <class OnLight>
+long long trace_sample(SamplePacket& packet, const SampleCache& cache, const RenderContext& ctx,
+                       const SamplePattern& pattern, int stratum, SamplePlane& plane,
+                       OnLight&& on_light) {
+  packet_directions(packet, cache, pattern, stratum);
+  const long long rays = trace_primary(packet, cache, ctx);
+  store_hits(packet, cache.width, plane);
+  return rays + shade_sample(packet, cache, ctx, plane, on_light);
+}
+
+// Runs f(packet) -> rays over the cached region's 4 x 4 packets, tile by tile on oneTBB
+// workers; adds the rays to ctx.rays. false when cancelled.
+template <class F>
+bool for_each_packet(const SampleCache& cache, const RenderContext& ctx, F&& f) {
+  return parallel_tiles(cache.width, cache.height, ctx.cancel, [&](int x0, int y0, int x1, int y1) {
+    long long rays = 0;
+    for (int by = y0; by < y1; by += kPacketSide) {
+      for (int bx = x0; bx < x1; bx += kPacketSide) {
+        SamplePacket packet(bx, by, std::min(bx + kPacketSide, x1), std::min(by + kPacketSide, y1));
+        rays += f(packet);
+      }
+    }
+    if (ctx.rays != nullptr) ctx.rays->fetch_add(rays, std::memory_order_relaxed);
+  });
+}
+
+// Copies lanes to a width-wide image array and back (clipped to the packet's block). A whole
+// block is four 16-byte row copies.
+template <class T>
+void store_lanes(const SamplePacket& packet, int width, const T* lanes, T* image) {
+  static_assert(sizeof(T) == 4, "lanes are 32-bit");
+  T* row = image + static_cast<std::size_t>(packet.y0) * width + packet.x0;
+  if (packet.x1 - packet.x0 == kPacketSide && packet.y1 - packet.y0 == kPacketSide) {
+    for (int r = 0; r < kPacketSide; ++r) {
+      std::memcpy(row + static_cast<std::size_t>(r) * width, lanes + r * kPacketSide,
+                  kPacketSide * sizeof(T));
+    }
+    return;
+  }
+  for (int r = 0; r < packet.y1 - packet.y0; ++r) {
+    for (int c = 0; c < packet.x1 - packet.x0; ++c) {
+      row[static_cast<std::size_t>(r) * width + c] = lanes[r * kPacketSide + c];
+    }
+  }
+}
+
+template <class T>
+void load_lanes(const SamplePacket& packet, int width, const T* image, T* lanes, T fill) {
+  for (int i = 0; i < kPacketLanes; ++i) lanes[i] = fill;
+  const T* row = image + static_cast<std::size_t>(packet.y0) * width + packet.x0;
+  for (int r = 0; r < packet.y1 - packet.y0; ++r) {
+    for (int c = 0; c < packet.x1 - packet.x0; ++c) {
+      lanes[r * kPacketSide + c] = row[static_cast<std::size_t>(r) * width + c];
+    }
+  }
+}
+
+}  // namespace gloss

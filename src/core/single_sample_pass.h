@@ -1,0 +1,16 @@
+#pragma once
+// The first full-resolution pass of an image, fused: each packet's sample is traced, cached and
+// turned into pixel factors while its lanes are still in registers, instead of writing the
+// cache and reading it back (build_pixel_factors). The result equals
+// add_samples(cache, ctx, 1) followed by build_pixel_factors, bit for bit.
+#include "pixel_factors.h"
+#include "render_context.h"
+#include "sample_cache.h"
+
+namespace gloss {
+
+// cache must hold no sample yet. false when cancelled (the cache is then left empty and the
+// factors incomplete).
+bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFactors& factors);
+
+}  // namespace gloss

@@ -1,0 +1,45 @@
+#include "surface_table.h"
+
+#include <glm/geometric.hpp>
+
+namespace gloss {
+
+namespace {
+void push(SurfaceTable& t, PrimitiveKind kind, const glm::vec3& a, const glm::vec3 (&n)[3]) {
+  t.kind.push_back(kind);
+  for (int c = 0; c < 3; ++c) t.a[static_cast<std::size_t>(c)].push_back(a[c]);
+  for (int k = 0; k < 3; ++k) {
+    for (int c = 0; c < 3; ++c) t.normals[static_cast<std::size_t>(3 * k + c)].push_back(n[k][c]);
+  }
+}
+}  // namespace
+
+SurfaceTable make_surface_table(const Scene& scene) {
+  SurfaceTable t;
+  const glm::vec3 none[3] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
+  push(t, kSphere, glm::vec3(1.0f), none);
+  for (const Object& object : scene.objects) {
+    t.base.push_back(static_cast<std::uint32_t>(t.kind.size()));
+    if (object.type == ObjectType::sphere) {
+      push(t, kSphere, object.center, none);
+      continue;
+    }
+    if (!object.mesh) continue;
+    const Mesh& mesh = *object.mesh;
+    for (const glm::uvec3& tri : mesh.triangles) {
+      // In double, rounded once: the flat shading normal is as exact as float can hold.
+      const glm::dvec3 p0(mesh.positions[tri.x]), p1(mesh.positions[tri.y]),
+          p2(mesh.positions[tri.z]);
+      const glm::vec3 face(glm::normalize(glm::cross(p1 - p0, p2 - p0)));
+      if (mesh.smooth()) {
+        const glm::vec3 n[3] = {mesh.normals[tri.x], mesh.normals[tri.y], mesh.normals[tri.z]};
+        push(t, kSmoothTriangle, face, n);
+      } else {
+        push(t, kFlatTriangle, face, none);
+      }
+    }
+  }
+  return t;
+}
+
+}  // namespace gloss

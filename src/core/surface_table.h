@@ -1,0 +1,31 @@
+#pragma once
+// Per-primitive data that shading a hit needs, flattened over the scene into arrays so the
+// packet code (sample_packet.cpp) fetches a lane's with one index, not through object, mesh and
+// triangle indices: for a triangle its unit face normal and, on smooth meshes, its three vertex
+// normals; for a sphere its centre. Built with the Embree scene (embree_scene.h).
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "scene.h"
+
+namespace gloss {
+
+enum PrimitiveKind : std::int32_t { kFlatTriangle = 0, kSmoothTriangle = 1, kSphere = 2 };
+
+struct SurfaceTable {
+  // Record of primitive p of object k: base[k] + p. Record 0 is a placeholder for missed lanes
+  // (a unit sphere at the origin's corner (1, 1, 1)): any valid input, its result is discarded.
+  std::vector<std::uint32_t> base;
+  std::vector<std::int32_t> kind;             // PrimitiveKind, per record
+  std::array<std::vector<float>, 3> a;        // sphere centre, or unit face normal (x, y, z)
+  std::array<std::vector<float>, 9> normals;  // n0, n1, n2 of smooth triangles (x, y, z each)
+
+  std::uint32_t record(std::int32_t object, std::uint32_t prim) const {
+    return object < 0 ? 0u : base[static_cast<std::size_t>(object)] + prim;
+  }
+};
+
+SurfaceTable make_surface_table(const Scene& scene);
+
+}  // namespace gloss

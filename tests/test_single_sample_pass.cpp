@@ -1,0 +1,73 @@
+// The fused first pass against the two stages it replaces, bit for bit.
+#include "single_sample_pass.h"
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "embree_scene.h"
+#include "scene_fixtures.h"
+#include "scene_loader.h"
+
+namespace gloss {
+namespace {
+
+template <class Buffer>
+void expect_same_bits(const Buffer& a, const Buffer& b, const char* what) {
+  ASSERT_EQ(a.size(), b.size()) << what;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a[i], b[i]) << what << " differs at " << i;
+  }
+}
+
+// Fused (trace_single_sample) and staged (add_samples, then build_pixel_factors) on one scene.
+void expect_fused_equals_staged(const Scene& scene) {
+  const EmbreeScene embree(scene);
+  const RenderContext ctx = make_render_context(scene, embree);
+  const int w = scene.render.width, h = scene.render.height;
+  SampleCache fused_cache = make_sample_cache(scene, w, h, 1);
+  PixelFactors fused;
+  ASSERT_TRUE(trace_single_sample(fused_cache, ctx, fused));
+  SampleCache staged_cache = make_sample_cache(scene, w, h, 1);
+  PixelFactors staged;
+  ASSERT_TRUE(add_samples(staged_cache, ctx, 1));
+  ASSERT_TRUE(build_pixel_factors(staged_cache, ctx, staged));
+
+  ASSERT_EQ(fused.samples, 1);
+  ASSERT_EQ(fused.lights, staged.lights);
+  expect_same_bits(fused.material, staged.material, "material");
+  expect_same_bits(fused.weight, staged.weight, "weight");
+  expect_same_bits(fused.background, staged.background, "background");
+  expect_same_bits(fused.diffuse, staged.diffuse, "diffuse");
+  expect_same_bits(fused.specular, staged.specular, "specular");
+  EXPECT_TRUE(fused.extra_pixel.empty());
+  // The cache it leaves is the staged one too.
+  ASSERT_EQ(fused_cache.samples(), 1);
+  expect_same_bits(fused_cache.planes[0].object, staged_cache.planes[0].object, "object");
+  expect_same_bits(fused_cache.planes[0].t, staged_cache.planes[0].t, "t");
+  for (std::size_t li = 0; li < ctx.plan.lights.size(); ++li) {
+    expect_same_bits(fused_cache.planes[0].lights[li].cos_blinn,
+                     staged_cache.planes[0].lights[li].cos_blinn, "cos_blinn");
+  }
+}
+
+// 37 x 23: neither side a multiple of the 4 x 4 packets or the 32-pixel tiles.
+TEST(SingleSamplePass, EqualsTracingThenBuildingFactorsOnASphereOverAFloor) {
+  Scene scene = test::sphere_on_floor_scene();
+  scene.render.width = 37;
+  scene.render.height = 23;
+  expect_fused_equals_staged(scene);
+  scene.render.model = ShadingModel::blinn_phong;
+  scene.render.pow = PowMode::fast;
+  expect_fused_equals_staged(scene);
+}
+
+TEST(SingleSamplePass, EqualsTracingThenBuildingFactorsOnTheCornellTeapot) {
+  Scene scene = load_scene(std::string(GLOSS_ASSETS_DIR) + "/scenes/cornell-teapot.json");
+  scene.render.width = 150;
+  scene.render.height = 90;
+  expect_fused_equals_staged(scene);
+}
+
+}  // namespace
+}  // namespace gloss
