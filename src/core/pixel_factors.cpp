@@ -4,6 +4,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "lane_gather.h"
 #include "parallel_tiles.h"
 #include "power_lanes.h"
 
@@ -16,7 +17,7 @@ struct Group {
   int count;
 };
 
-struct TileExtras {
+struct BandExtras {
   std::vector<std::uint32_t> pixel;
   std::vector<std::int32_t> material;
   std::vector<float> weight, diffuse, specular;
@@ -76,12 +77,23 @@ void size_pixel_factors(PixelFactors& out, int width, int height, int samples, s
   out.extra_specular.clear();
 }
 
-void single_sample_coverage(const Scene& scene, const std::int32_t* object, int n,
+std::vector<std::int32_t> object_materials(const Scene& scene) {
+  std::vector<std::int32_t> out;
+  for (const Object& object : scene.objects) out.push_back(object.material);
+  return out;
+}
+
+void single_sample_coverage(const std::int32_t* object_material, const std::int32_t* object, int n,
                             std::int32_t* material, float* weight, float* background) {
-  for (int i = 0; i < n; ++i) {
-    material[i] = object[i] < 0 ? -1 : scene.objects[static_cast<std::size_t>(object[i])].material;
+  alignas(64) std::int32_t index[kMaxPowerLanes];
+  for (int i = 0; i < n; ++i) index[i] = std::max(object[i], 0);
+  if (n == kMaxPowerLanes) {
+    gather16(object_material, index, material);
+  } else {
+    for (int i = 0; i < n; ++i) material[i] = object_material[index[i]];
   }
   for (int i = 0; i < n; ++i) {
+    material[i] = object[i] < 0 ? -1 : material[i];
     weight[i] = object[i] < 0 ? 0.0f : 1.0f;
     background[i] = object[i] < 0 ? 1.0f : 0.0f;
   }
@@ -105,20 +117,20 @@ bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pix
   const std::size_t lights = ctx.plan.lights.size();
   const int n = cache.samples();
   size_pixel_factors(out, cache.width, cache.height, n, lights);
-  const int tiles_x = (cache.width + kTileSize - 1) / kTileSize;
-  const int tiles_y = (cache.height + kTileSize - 1) / kTileSize;
-  std::vector<TileExtras> extras(static_cast<std::size_t>(tiles_x * tiles_y));
+  const int rows = band_rows(cache.width);
+  std::vector<BandExtras> extras(static_cast<std::size_t>((cache.height + rows - 1) / rows));
   const float inv_n = n > 0 ? 1.0f / static_cast<float>(n) : 0.0f;
   const ShadingModel model = scene.render.model;
   const PowMode pow_mode = scene.render.pow;
   const MaterialExponents exponents = material_exponents(scene);
+  const std::vector<std::int32_t> materials = object_materials(scene);
   constexpr int kRun = kMaxPowerLanes;  // pixels of a row handled together
 
-  // One sample: no grouping, the lane helpers the fused first pass uses.
+  // One sample: no grouping, the lane helpers the fused first pass uses, row by row.
   auto single = [&](std::size_t idx, int m) {
     const SamplePlane& plane = cache.planes[0];
-    single_sample_coverage(scene, &plane.object[idx], m, &out.material[idx], &out.weight[idx],
-                           &out.background[idx]);
+    single_sample_coverage(materials.data(), &plane.object[idx], m, &out.material[idx],
+                           &out.weight[idx], &out.background[idx]);
     for (std::size_t li = 0; li < lights; ++li) {
       const LightFactorPlane& f = plane.lights[li];
       single_sample_light(exponents, pow_mode, &out.material[idx], &f.diffuse_weight[idx],
@@ -127,86 +139,90 @@ bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pix
     }
   };
 
-  const bool done =
-      parallel_tiles(cache.width, cache.height, ctx.cancel, [&](int x0, int y0, int x1, int y1) {
-        TileExtras& tile_extras =
-            extras[static_cast<std::size_t>((y0 / kTileSize) * tiles_x + x0 / kTileSize)];
-        tile_extras = TileExtras{};
-        std::vector<Group> groups;
-        std::vector<float> sums;  // [group * 2 * lights + 2 * light + {0: diffuse, 1: specular}]
-        // Per run of pixels: each sample's material and weighted c^alpha (lanes helpers).
-        std::vector<std::int32_t> run_material(n > 1 ? static_cast<std::size_t>(n) * kRun : 0);
-        std::vector<float> run_specular(run_material.size() * lights);
-        for (int y = y0; y < y1; ++y) {
-          for (int xs = x0; xs < x1; xs += kRun) {
-            const int m = std::min(kRun, x1 - xs);
-            const std::size_t idx0 = static_cast<std::size_t>(y) * cache.width + xs;
-            if (n == 1) {
-              single(idx0, m);
+  if (n == 1) {
+    return parallel_rows(cache.width, cache.height, ctx.cancel, [&](int y0, int y1) {
+      for (int y = y0; y < y1; ++y) {
+        for (int x = 0; x < cache.width; x += kRun) {
+          single(static_cast<std::size_t>(y) * cache.width + x, std::min(kRun, cache.width - x));
+        }
+      }
+    });
+  }
+  const bool done = parallel_rows(cache.width, cache.height, ctx.cancel, [&](int y0, int y1) {
+    const int x0 = 0, x1 = cache.width;
+    BandExtras& band_extras = extras[static_cast<std::size_t>(y0 / rows)];
+    band_extras = BandExtras{};
+    std::vector<Group> groups;
+    std::vector<float> sums;  // [group * 2 * lights + 2 * light + {0: diffuse, 1: specular}]
+    // Per run of pixels: each sample's material and weighted c^alpha (lanes helpers).
+    std::vector<std::int32_t> run_material(n > 1 ? static_cast<std::size_t>(n) * kRun : 0);
+    std::vector<float> run_specular(run_material.size() * lights);
+    for (int y = y0; y < y1; ++y) {
+      for (int xs = x0; xs < x1; xs += kRun) {
+        const int m = std::min(kRun, x1 - xs);
+        const std::size_t idx0 = static_cast<std::size_t>(y) * cache.width + xs;
+        for (int s = 0; s < n; ++s) {
+          const SamplePlane& plane = cache.planes[static_cast<std::size_t>(s)];
+          std::int32_t* mat = &run_material[static_cast<std::size_t>(s) * kRun];
+          for (int i = 0; i < m; ++i) {
+            const std::int32_t object = plane.object[idx0 + i];
+            mat[i] = object < 0 ? -1 : scene.objects[static_cast<std::size_t>(object)].material;
+          }
+          for (std::size_t li = 0; li < lights; ++li) {
+            const LightFactorPlane& f = plane.lights[li];
+            float* spec = &run_specular[(s * lights + li) * kRun];
+            alignas(64) float power[kRun];
+            specular_power_lanes(exponents, mat, f.cosine(model) + idx0, power, m, pow_mode);
+            for (int i = 0; i < m; ++i) spec[i] = f.spec_weight[idx0 + i] * power[i];
+          }
+        }
+        for (int i = 0; i < m; ++i) {
+          const std::size_t idx = idx0 + i;
+          groups.clear();
+          sums.clear();
+          int misses = 0;
+          for (int s = 0; s < n; ++s) {
+            const std::int32_t material = run_material[static_cast<std::size_t>(s) * kRun + i];
+            if (material < 0) {
+              ++misses;
               continue;
             }
-            for (int s = 0; s < n; ++s) {
-              const SamplePlane& plane = cache.planes[static_cast<std::size_t>(s)];
-              std::int32_t* mat = &run_material[static_cast<std::size_t>(s) * kRun];
-              for (int i = 0; i < m; ++i) {
-                const std::int32_t object = plane.object[idx0 + i];
-                mat[i] = object < 0 ? -1 : scene.objects[static_cast<std::size_t>(object)].material;
-              }
-              for (std::size_t li = 0; li < lights; ++li) {
-                const LightFactorPlane& f = plane.lights[li];
-                float* spec = &run_specular[(s * lights + li) * kRun];
-                alignas(64) float power[kRun];
-                specular_power_lanes(exponents, mat, f.cosine(model) + idx0, power, m, pow_mode);
-                for (int i = 0; i < m; ++i) spec[i] = f.spec_weight[idx0 + i] * power[i];
-              }
+            std::size_t g = 0;
+            while (g < groups.size() && groups[g].material != material) ++g;
+            if (g == groups.size()) {
+              groups.push_back({material, 0});
+              sums.resize(sums.size() + 2 * lights, 0.0f);
             }
-            for (int i = 0; i < m; ++i) {
-              const std::size_t idx = idx0 + i;
-              groups.clear();
-              sums.clear();
-              int misses = 0;
-              for (int s = 0; s < n; ++s) {
-                const std::int32_t material = run_material[static_cast<std::size_t>(s) * kRun + i];
-                if (material < 0) {
-                  ++misses;
-                  continue;
-                }
-                std::size_t g = 0;
-                while (g < groups.size() && groups[g].material != material) ++g;
-                if (g == groups.size()) {
-                  groups.push_back({material, 0});
-                  sums.resize(sums.size() + 2 * lights, 0.0f);
-                }
-                ++groups[g].count;
-                float* acc = sums.data() + g * 2 * lights;
-                const SamplePlane& plane = cache.planes[static_cast<std::size_t>(s)];
-                for (std::size_t li = 0; li < lights; ++li) {
-                  acc[2 * li] += plane.lights[li].diffuse_weight[idx];
-                  acc[2 * li + 1] += run_specular[(s * lights + li) * kRun + i];
-                }
-              }
-              out.background[idx] = static_cast<float>(misses) * inv_n;
-              out.material[idx] = groups.empty() ? -1 : groups[0].material;
-              out.weight[idx] = groups.empty() ? 0.0f : static_cast<float>(groups[0].count) * inv_n;
-              for (std::size_t li = 0; li < lights; ++li) {
-                out.diffuse[li * pixels + idx] = groups.empty() ? 0.0f : sums[2 * li] * inv_n;
-                out.specular[li * pixels + idx] = groups.empty() ? 0.0f : sums[2 * li + 1] * inv_n;
-              }
-              for (std::size_t g = 1; g < groups.size(); ++g) {
-                tile_extras.pixel.push_back(static_cast<std::uint32_t>(idx));
-                tile_extras.material.push_back(groups[g].material);
-                tile_extras.weight.push_back(static_cast<float>(groups[g].count) * inv_n);
-                for (std::size_t li = 0; li < lights; ++li) {
-                  tile_extras.diffuse.push_back(sums[g * 2 * lights + 2 * li] * inv_n);
-                  tile_extras.specular.push_back(sums[g * 2 * lights + 2 * li + 1] * inv_n);
-                }
-              }
+            ++groups[g].count;
+            float* acc = sums.data() + g * 2 * lights;
+            const SamplePlane& plane = cache.planes[static_cast<std::size_t>(s)];
+            for (std::size_t li = 0; li < lights; ++li) {
+              acc[2 * li] += plane.lights[li].diffuse_weight[idx];
+              acc[2 * li + 1] += run_specular[(s * lights + li) * kRun + i];
+            }
+          }
+          out.background[idx] = static_cast<float>(misses) * inv_n;
+          out.material[idx] = groups.empty() ? -1 : groups[0].material;
+          out.weight[idx] = groups.empty() ? 0.0f : static_cast<float>(groups[0].count) * inv_n;
+          for (std::size_t li = 0; li < lights; ++li) {
+            out.diffuse[li * pixels + idx] = groups.empty() ? 0.0f : sums[2 * li] * inv_n;
+            out.specular[li * pixels + idx] = groups.empty() ? 0.0f : sums[2 * li + 1] * inv_n;
+          }
+          for (std::size_t g = 1; g < groups.size(); ++g) {
+            band_extras.pixel.push_back(static_cast<std::uint32_t>(idx));
+            band_extras.material.push_back(groups[g].material);
+            band_extras.weight.push_back(static_cast<float>(groups[g].count) * inv_n);
+            for (std::size_t li = 0; li < lights; ++li) {
+              band_extras.diffuse.push_back(sums[g * 2 * lights + 2 * li] * inv_n);
+              band_extras.specular.push_back(sums[g * 2 * lights + 2 * li + 1] * inv_n);
             }
           }
         }
-      });
+      }
+    }
+  });
   if (!done) return false;
-  for (const TileExtras& t : extras) {  // tile order: deterministic whatever the thread count
+  for (const BandExtras& t : extras) {  // band order: deterministic whatever the thread count
     out.extra_pixel.insert(out.extra_pixel.end(), t.pixel.begin(), t.pixel.end());
     out.extra_material.insert(out.extra_material.end(), t.material.begin(), t.material.end());
     out.extra_weight.insert(out.extra_weight.end(), t.weight.begin(), t.weight.end());

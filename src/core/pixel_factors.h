@@ -42,10 +42,13 @@ bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pix
 // Sizes out for a width x height region summed from `samples` samples, with no extras yet.
 void size_pixel_factors(PixelFactors& out, int width, int height, int samples, std::size_t lights);
 
+// Each object's material index (object_material of single_sample_coverage).
+std::vector<std::int32_t> object_materials(const Scene& scene);
+
 // The factors of n <= kMaxPowerLanes pixels covered by one sample each, from that sample's
 // object index and one light's factors (cosine: the model's). Shared by build_pixel_factors at
 // 1 spp and the fused first pass (single_sample_pass.h), so both give the same bits.
-void single_sample_coverage(const Scene& scene, const std::int32_t* object, int n,
+void single_sample_coverage(const std::int32_t* object_material, const std::int32_t* object, int n,
                             std::int32_t* material, float* weight, float* background);
 void single_sample_light(const MaterialExponents& exponents, PowMode mode,
                          const std::int32_t* material, const float* diffuse_weight,

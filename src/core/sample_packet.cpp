@@ -1,11 +1,14 @@
 #include "sample_packet.h"
 
+#include <cstring>
 #include <limits>
 #include <type_traits>
 
 #include <embree3/rtcore.h>
+#include <immintrin.h>
 
 #include "camera.h"
+#include "lane_gather.h"
 #include "ray_packet.h"
 #include "shading.h"
 #include "surface.h"
@@ -107,23 +110,38 @@ struct GeometryLanes {
   alignas(64) std::int32_t kind[kPacketLanes];
 };
 
-// Indexed loads from the scene's surface table (vector gathers where the target has them).
-void gather_geometry(const SamplePacket& packet, const SurfaceTable& table, GeometryLanes& out) {
-  // 32-bit signed indices: GCC then emits 16-lane vgatherdps (with size_t, 4-lane vgatherqps).
+// The lanes' records of the scene's surface table.
+LaneKinds gather_geometry(const SamplePacket& packet, const SurfaceTable& table,
+                          GeometryLanes& out) {
   alignas(64) std::int32_t record[kPacketLanes];
+#if defined(__AVX512F__)
+  // In registers: 16 scalar stores read back as one vector stall on store forwarding.
+  const __m512i object = _mm512_load_si512(packet.object);
+  const __mmask16 hit = _mm512_cmpge_epi32_mask(object, _mm512_setzero_si512());
+  const __m512i base =
+      _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), hit, object, table.base.data(), 4);
+  _mm512_store_si512(record, _mm512_maskz_add_epi32(hit, base, _mm512_load_si512(packet.prim)));
+#else
   for (int i = 0; i < kPacketLanes; ++i) {
     record[i] = static_cast<std::int32_t>(table.record(packet.object[i], packet.prim[i]));
   }
-  const std::int32_t* kind = table.kind.data();
-  for (int i = 0; i < kPacketLanes; ++i) out.kind[i] = kind[record[i]];
-  for (int c = 0; c < 3; ++c) {
-    const float* src = table.a[static_cast<std::size_t>(c)].data();
-    for (int i = 0; i < kPacketLanes; ++i) out.a[c][i] = src[record[i]];
+#endif
+  gather16(table.kind.data(), record, out.kind);
+  for (int c = 0; c < 3; ++c)
+    gather16(table.a[static_cast<std::size_t>(c)].data(), record, out.a[c]);
+  int spheres = 0, smooth = 0;  // missed lanes count as spheres (record 0)
+  for (int i = 0; i < kPacketLanes; ++i) {
+    spheres += out.kind[i] == kSphere && packet.object[i] >= 0 ? 1 : 0;
+    smooth += out.kind[i] == kSmoothTriangle ? 1 : 0;
   }
-  for (int c = 0; c < 9; ++c) {
-    const float* src = table.normals[static_cast<std::size_t>(c)].data();
-    for (int i = 0; i < kPacketLanes; ++i) out.n[c][i] = src[record[i]];
+  if (smooth == 0) {  // no lane reads the vertex normals
+    std::memset(out.n, 0, sizeof out.n);
+  } else {
+    for (int c = 0; c < 9; ++c) {
+      gather16(table.normals[static_cast<std::size_t>(c)].data(), record, out.n[c]);
+    }
   }
+  return {spheres > 0, smooth > 0};
 }
 
 glm::vec3 lane_vec(const float (&a)[9][kPacketLanes], int k, int i) {
@@ -132,11 +150,10 @@ glm::vec3 lane_vec(const float (&a)[9][kPacketLanes], int k, int i) {
 
 }  // namespace
 
-void packet_surfaces(const SamplePacket& packet, const SampleCache& cache, const RenderContext& ctx,
-                     SurfaceLanes& out) {
-  GeometryLanes geometry;
-  gather_geometry(packet, ctx.embree->surfaces(), geometry);
-  const glm::vec3 eye = cache.camera.eye;
+namespace {
+template <bool Spheres, bool Smooth>
+void surfaces_of_kinds(const SamplePacket& packet, const GeometryLanes& geometry,
+                       const glm::vec3& eye, SurfaceLanes& out) {
   for (int i = 0; i < kPacketLanes; ++i) {
     HitGeometry g;
     g.a = {geometry.a[0][i], geometry.a[1][i], geometry.a[2][i]};
@@ -149,9 +166,25 @@ void packet_surfaces(const SamplePacket& packet, const SampleCache& cache, const
     g.smooth = geometry.kind[i] == kSmoothTriangle;
     const bool hit = packet.object[i] >= 0;
     const glm::dvec3 dir(packet.dir_x[i], packet.dir_y[i], packet.dir_z[i]);
-    const Surface s = surface_from(g, eye, dir, hit ? packet.t[i] : 1.0f);
     out.hit[i] = hit ? -1 : 0;
-    out.set(i, s);
+    out.set(i, surface_from<Spheres, Smooth>(g, eye, dir, hit ? packet.t[i] : 1.0f));
+  }
+}
+}  // namespace
+
+void packet_surfaces(const SamplePacket& packet, const SampleCache& cache, const RenderContext& ctx,
+                     SurfaceLanes& out) {
+  GeometryLanes geometry;
+  const LaneKinds kinds = gather_geometry(packet, ctx.embree->surfaces(), geometry);
+  const glm::vec3 eye = cache.camera.eye;
+  if (kinds.spheres && kinds.smooth) {
+    surfaces_of_kinds<true, true>(packet, geometry, eye, out);
+  } else if (kinds.spheres) {
+    surfaces_of_kinds<true, false>(packet, geometry, eye, out);
+  } else if (kinds.smooth) {
+    surfaces_of_kinds<false, true>(packet, geometry, eye, out);
+  } else {
+    surfaces_of_kinds<false, false>(packet, geometry, eye, out);
   }
 }
 

@@ -85,7 +85,6 @@ long long packet_light(const SamplePacket& packet, const SurfaceLanes& surfaces,
 void store_light(const SamplePacket& packet, int width, const LightLanes& lanes,
                  LightFactorPlane& plane);
 
-// Copies lanes to a width-wide image array and back (clipped to the packet's block).
 // Surfaces of the packet's hits, then per planned light the factors, stored in plane and each
 // also handed to on_light(li, lanes) for a consumer fused into the same pass. Returns the
 // shadow rays traced.
@@ -117,7 +116,8 @@ long long trace_sample(SamplePacket& packet, const SampleCache& cache, const Ren
 }
 
 // Runs f(packet) -> rays over the cached region's 4 x 4 packets, tile by tile on oneTBB
-// workers; adds the rays to ctx.rays. false when cancelled.
+// workers (as the Embree baseline, ray_baseline.cpp; bands of whole rows measured the same);
+// adds the rays to ctx.rays. false when cancelled.
 template <class F>
 bool for_each_packet(const SampleCache& cache, const RenderContext& ctx, F&& f) {
   return parallel_tiles(cache.width, cache.height, ctx.cancel, [&](int x0, int y0, int x1, int y1) {

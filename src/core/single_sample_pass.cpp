@@ -13,6 +13,7 @@ bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFact
   size_pixel_factors(factors, cache.width, cache.height, 1, lights);
   const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
   const MaterialExponents exponents = material_exponents(scene);
+  const std::vector<std::int32_t> materials = object_materials(scene);
   const ShadingModel model = scene.render.model;
   const int width = cache.width;
   const bool done = for_each_packet(cache, ctx, [&](SamplePacket& packet) {
@@ -22,7 +23,8 @@ bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFact
     bool coverage = false;
     auto on_light = [&](std::size_t li, const LightLanes& lanes) {
       if (!coverage) {  // first light: the primary hits are final by now
-        single_sample_coverage(scene, packet.object, kPacketLanes, material, weight, background);
+        single_sample_coverage(materials.data(), packet.object, kPacketLanes, material, weight,
+                               background);
         coverage = true;
       }
       single_sample_light(exponents, scene.render.pow, material, lanes.diffuse_weight,
@@ -35,7 +37,8 @@ bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFact
     const long long rays = trace_sample(packet, cache, ctx, pattern, sample_stratum(pattern, 0),
                                         cache.planes[0], on_light);
     if (!coverage) {
-      single_sample_coverage(scene, packet.object, kPacketLanes, material, weight, background);
+      single_sample_coverage(materials.data(), packet.object, kPacketLanes, material, weight,
+                             background);
     }
     store_lanes(packet, width, material, factors.material.data());
     store_lanes(packet, width, weight, factors.weight.data());

@@ -29,12 +29,19 @@ struct HitGeometry {
   std::int32_t sphere, smooth;  // 0 or 1
 };
 
+// Which kinds of primitive a batch of lanes holds: the packet code instantiates surface_from
+// for the kinds present, so a packet of flat walls does no sphere or interpolation maths.
+struct LaneKinds {
+  bool spheres, smooth;
+};
+
 // dir must be unit length, in double: the hit point is rebuilt as origin + t dir in double and
 // rounded once, since a float direction alone moves the point by 1e-7 of the distance to the eye
 // (enough to shift a steep highlight by more than the contract's 1e-4). t is the hit distance
 // (refined for spheres, refine_sphere_hit). Written with selects, not branches: the packet code
-// (sample_packet.cpp) runs it over 16 lanes at once, so every lane computes both kinds of
-// normal and keeps its own.
+// (sample_packet.cpp) runs it over 16 lanes at once, so every lane computes each kind of normal
+// the batch holds (Spheres, Smooth: whether any lane may be one) and keeps its own.
+template <bool Spheres = true, bool Smooth = true>
 inline Surface surface_from(const HitGeometry& g, const glm::vec3& origin, const glm::dvec3& dir,
                             float t) {
   auto select = [](bool c, const glm::vec3& a, const glm::vec3& b) {
@@ -44,18 +51,25 @@ inline Surface surface_from(const HitGeometry& g, const glm::vec3& origin, const
   const glm::dvec3 p = glm::dvec3(origin) + static_cast<double>(t) * dir;
   s.p = glm::vec3(p);
   s.v = -glm::vec3(dir);
-  // Sphere: from the unrounded point; at shininess 1000 a float normal alone moves the highlight
-  // by more than 1e-4.
-  const glm::vec3 n_sphere(glm::normalize(p - glm::dvec3(g.a)));
   const glm::vec3 n_face = g.a;
-  const glm::vec3 interpolated = (1.0f - g.u - g.v) * g.n0 + g.u * g.n1 + g.v * g.n2;
-  const float len = glm::length(interpolated);
-  // Opposite vertex normals can cancel; the geometric normal is then the only sane choice.
-  const bool use_smooth = (g.smooth != 0) & (len > 1e-6f);
-  const glm::vec3 n_smooth = interpolated * (1.0f / (use_smooth ? len : 1.0f));
-  const bool sphere = g.sphere != 0;
-  s.ng = select(sphere, n_sphere, n_face);
-  s.n = select(sphere, n_sphere, select(use_smooth, n_smooth, n_face));
+  s.ng = n_face;
+  s.n = n_face;
+  if constexpr (Smooth) {
+    const glm::vec3 interpolated = (1.0f - g.u - g.v) * g.n0 + g.u * g.n1 + g.v * g.n2;
+    const float len = glm::length(interpolated);
+    // Opposite vertex normals can cancel; the geometric normal is then the only sane choice.
+    const bool use_smooth = (g.smooth != 0) & (len > 1e-6f);
+    const glm::vec3 n_smooth = interpolated * (1.0f / (use_smooth ? len : 1.0f));
+    s.n = select(use_smooth, n_smooth, n_face);
+  }
+  if constexpr (Spheres) {
+    // From the unrounded point; at shininess 1000 a float normal alone moves the highlight by
+    // more than 1e-4.
+    const glm::vec3 n_sphere(glm::normalize(p - glm::dvec3(g.a)));
+    const bool sphere = g.sphere != 0;
+    s.ng = select(sphere, n_sphere, s.ng);
+    s.n = select(sphere, n_sphere, s.n);
+  }
   const float side = glm::dot(s.ng, s.v) < 0.0f ? -1.0f : 1.0f;  // two-sided surfaces
   s.ng *= side;
   s.n *= side;
