@@ -69,5 +69,25 @@ TEST(SingleSamplePass, EqualsTracingThenBuildingFactorsOnTheCornellTeapot) {
   expect_fused_equals_staged(scene);
 }
 
+// Nothing to hit and no materials: every table the lanes gather from still has its entry 0.
+TEST(SingleSamplePass, SceneWithoutObjectsOrMaterialsShowsTheBackground) {
+  Scene scene;
+  scene.background = {0.25f, 0.5f, 0.75f};
+  scene.lights.push_back(test::make_light({0, 3, 5}));
+  scene.render.width = 37;
+  scene.render.height = 23;
+  const EmbreeScene embree(scene);
+  const RenderContext ctx = make_render_context(scene, embree);
+  SampleCache cache = make_sample_cache(scene, 37, 23, 1);
+  PixelFactors factors;
+  ASSERT_TRUE(trace_single_sample(cache, ctx, factors));
+  TermImages out;
+  combine_terms(factors, ctx, out, true);
+  for (const glm::vec3& p : out.total.pixels) {
+    EXPECT_EQ(p, glm::vec3(0.25f, 0.5f, 0.75f));
+  }
+  for (const glm::vec3& p : out.specular.pixels) EXPECT_EQ(p, glm::vec3(0.0f));
+}
+
 }  // namespace
 }  // namespace gloss

@@ -23,34 +23,6 @@ struct BandExtras {
   std::vector<float> weight, diffuse, specular;
 };
 
-// Material constants folded with the light colours and the scene ambient, per material.
-struct MaterialTerms {
-  glm::vec3 emissive, ambient;   // ke, ka * (A_scene + sum La)
-  std::vector<glm::vec3> kd_ld;  // kd * Ld_i, per planned light
-  std::vector<glm::vec3> ks_ls;  // ks * Ls_i (* energy normalisation), per planned light
-};
-
-std::vector<MaterialTerms> fold_materials(const RenderContext& ctx) {
-  const Scene& scene = *ctx.scene;
-  glm::vec3 ambient_light = scene.ambient;
-  for (const PointLight& light : scene.lights) ambient_light += light.ambient;
-  std::vector<MaterialTerms> out(scene.materials.size());
-  for (std::size_t m = 0; m < scene.materials.size(); ++m) {
-    const Material& mat = scene.materials[m];
-    MaterialTerms& t = out[m];
-    t.emissive = mat.emission;
-    t.ambient = mat.ambient * ambient_light;
-    const float norm = scene.render.energy_normalize
-                           ? energy_normalization(scene.render.model, mat.shininess)
-                           : 1.0f;
-    for (int index : ctx.plan.lights) {
-      const PointLight& light = scene.lights[static_cast<std::size_t>(index)];
-      t.kd_ld.push_back(mat.diffuse * light.diffuse);
-      t.ks_ls.push_back(mat.specular * norm * light.specular);
-    }
-  }
-  return out;
-}
 }  // namespace
 
 std::size_t PixelFactors::bytes() const {
@@ -66,8 +38,8 @@ void size_pixel_factors(PixelFactors& out, int width, int height, int samples, s
   out.samples = samples;
   out.lights = lights;
   out.material.resize(pixels);
-  out.weight.resize(pixels);
-  out.background.resize(pixels);
+  out.weight.resize(samples > 1 ? pixels : 0);
+  out.background.resize(samples > 1 ? pixels : 0);
   out.diffuse.resize(pixels * lights);
   out.specular.resize(pixels * lights);
   out.extra_pixel.clear();
@@ -80,11 +52,12 @@ void size_pixel_factors(PixelFactors& out, int width, int height, int samples, s
 std::vector<std::int32_t> object_materials(const Scene& scene) {
   std::vector<std::int32_t> out;
   for (const Object& object : scene.objects) out.push_back(object.material);
+  if (out.empty()) out.push_back(-1);  // missed lanes gather entry 0
   return out;
 }
 
 void single_sample_coverage(const std::int32_t* object_material, const std::int32_t* object, int n,
-                            std::int32_t* material, float* weight, float* background) {
+                            std::int32_t* material) {
   alignas(64) std::int32_t index[kMaxPowerLanes];
   for (int i = 0; i < n; ++i) index[i] = std::max(object[i], 0);
   if (n == kMaxPowerLanes) {
@@ -92,11 +65,7 @@ void single_sample_coverage(const std::int32_t* object_material, const std::int3
   } else {
     for (int i = 0; i < n; ++i) material[i] = object_material[index[i]];
   }
-  for (int i = 0; i < n; ++i) {
-    material[i] = object[i] < 0 ? -1 : material[i];
-    weight[i] = object[i] < 0 ? 0.0f : 1.0f;
-    background[i] = object[i] < 0 ? 1.0f : 0.0f;
-  }
+  for (int i = 0; i < n; ++i) material[i] = object[i] < 0 ? -1 : material[i];
 }
 
 void single_sample_light(const MaterialExponents& exponents, PowMode mode,
@@ -129,8 +98,7 @@ bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pix
   // One sample: no grouping, the lane helpers the fused first pass uses, row by row.
   auto single = [&](std::size_t idx, int m) {
     const SamplePlane& plane = cache.planes[0];
-    single_sample_coverage(materials.data(), &plane.object[idx], m, &out.material[idx],
-                           &out.weight[idx], &out.background[idx]);
+    single_sample_coverage(materials.data(), &plane.object[idx], m, &out.material[idx]);
     for (std::size_t li = 0; li < lights; ++li) {
       const LightFactorPlane& f = plane.lights[li];
       single_sample_light(exponents, pow_mode, &out.material[idx], &f.diffuse_weight[idx],
@@ -230,75 +198,6 @@ bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pix
     out.extra_specular.insert(out.extra_specular.end(), t.specular.begin(), t.specular.end());
   }
   return true;
-}
-
-void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermImages& out,
-                   bool terms) {
-  const std::vector<MaterialTerms> folded = fold_materials(ctx);
-  const glm::vec3 background = ctx.scene->background;
-  const int w = factors.width, h = factors.height;
-  const std::size_t pixels = static_cast<std::size_t>(w) * h;
-  const std::size_t lights = factors.lights;
-  auto fit = [&](Image& image) {
-    if (image.width != w || image.height != h) image = Image(w, h);
-  };
-  fit(out.total);
-  if (terms) {
-    fit(out.emissive);
-    fit(out.ambient);
-    fit(out.diffuse);
-    fit(out.specular);
-  }
-  // One material's contribution to one pixel, from its weight and per-light factor means.
-  auto contribution = [&](std::int32_t material, float weight, const float* diffuse,
-                          const float* specular, std::size_t stride, glm::vec3 term[4]) {
-    const MaterialTerms& mt = folded[static_cast<std::size_t>(material)];
-    term[0] = weight * mt.emissive;
-    term[1] = weight * mt.ambient;
-    term[2] = glm::vec3(0.0f);
-    term[3] = glm::vec3(0.0f);
-    for (std::size_t li = 0; li < lights; ++li) {
-      term[2] += mt.kd_ld[li] * diffuse[li * stride];
-      term[3] += mt.ks_ls[li] * specular[li * stride];
-    }
-  };
-  ForkJoinFence fence;
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, pixels, 16384),
-      [&](const tbb::blocked_range<std::size_t>& range) {
-        const ForkJoinFence::Task task(fence);
-        DenormalsOff denormals_off;
-        for (std::size_t i = range.begin(); i != range.end(); ++i) {
-          glm::vec3 term[4] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
-          const std::int32_t m = factors.material[i];
-          if (m >= 0) {
-            contribution(m, factors.weight[i], &factors.diffuse[i], &factors.specular[i], pixels,
-                         term);
-          }
-          out.total.pixels[i] =
-              term[0] + term[1] + term[2] + term[3] + factors.background[i] * background;
-          if (terms) {
-            out.emissive.pixels[i] = term[0];
-            out.ambient.pixels[i] = term[1];
-            out.diffuse.pixels[i] = term[2];
-            out.specular.pixels[i] = term[3];
-          }
-        }
-      });
-  fence.join();
-  for (std::size_t e = 0; e < factors.extra_pixel.size(); ++e) {
-    glm::vec3 term[4];
-    contribution(factors.extra_material[e], factors.extra_weight[e],
-                 &factors.extra_diffuse[e * lights], &factors.extra_specular[e * lights], 1, term);
-    const std::size_t i = factors.extra_pixel[e];
-    out.total.pixels[i] += term[0] + term[1] + term[2] + term[3];
-    if (terms) {
-      out.emissive.pixels[i] += term[0];
-      out.ambient.pixels[i] += term[1];
-      out.diffuse.pixels[i] += term[2];
-      out.specular.pixels[i] += term[3];
-    }
-  }
 }
 
 }  // namespace gloss

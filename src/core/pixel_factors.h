@@ -6,7 +6,9 @@
 //   specular_i = mean over those samples of att * vis * c^alpha    (per planned light i)
 // and any edit of constants or colours is a cheap recombination (combine_terms) with no rays.
 // A pixel keeps its first material in the dense arrays; further materials (silhouettes) go to
-// a short list of extras. Bytes per pixel: 12 + 8 per planned light, plus the extras.
+// a short list of extras. With one sample per pixel the weight is 1 on a hit and the background
+// share 1 on a miss, so those two arrays stay empty. Bytes per pixel: 4 + 8 per planned light,
+// plus 8 with more than one sample, plus the extras.
 #include <cstdint>
 #include <vector>
 
@@ -23,8 +25,8 @@ struct PixelFactors {
   int samples = 0;                       // samples per pixel summed in
   std::size_t lights = 0;                // planned lights
   std::vector<std::int32_t> material;    // first material hit, -1 when none
-  std::vector<float> weight;             // share of samples on it
-  std::vector<float> background;         // share of samples that missed
+  std::vector<float> weight;             // share of samples on it (empty: samples == 1)
+  std::vector<float> background;         // share of samples that missed (empty: samples == 1)
   std::vector<float> diffuse, specular;  // [light * pixels + pixel]
   // Further materials of mixed pixels, in pixel order.
   std::vector<std::uint32_t> extra_pixel;
@@ -49,7 +51,7 @@ std::vector<std::int32_t> object_materials(const Scene& scene);
 // object index and one light's factors (cosine: the model's). Shared by build_pixel_factors at
 // 1 spp and the fused first pass (single_sample_pass.h), so both give the same bits.
 void single_sample_coverage(const std::int32_t* object_material, const std::int32_t* object, int n,
-                            std::int32_t* material, float* weight, float* background);
+                            std::int32_t* material);
 void single_sample_light(const MaterialExponents& exponents, PowMode mode,
                          const std::int32_t* material, const float* diffuse_weight,
                          const float* spec_weight, const float* cosine, int n, float* diffuse,

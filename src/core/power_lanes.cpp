@@ -24,6 +24,10 @@ MaterialExponents material_exponents(const Scene& scene) {
                           ? static_cast<float>(std::exp2(-120.0 / static_cast<double>(m.shininess)))
                           : 0.0f);
   }
+  if (e.alpha.empty()) {  // lanes without a material gather entry 0
+    e.alpha.push_back(0.0f);
+    e.floor.push_back(0.0f);
+  }
   return e;
 }
 

@@ -18,13 +18,11 @@ bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFact
   const int width = cache.width;
   const bool done = for_each_packet(cache, ctx, [&](SamplePacket& packet) {
     alignas(64) std::int32_t material[kPacketLanes];
-    alignas(64) float weight[kPacketLanes], background[kPacketLanes];
     alignas(64) float diffuse[kPacketLanes], specular[kPacketLanes];
     bool coverage = false;
     auto on_light = [&](std::size_t li, const LightLanes& lanes) {
       if (!coverage) {  // first light: the primary hits are final by now
-        single_sample_coverage(materials.data(), packet.object, kPacketLanes, material, weight,
-                               background);
+        single_sample_coverage(materials.data(), packet.object, kPacketLanes, material);
         coverage = true;
       }
       single_sample_light(exponents, scene.render.pow, material, lanes.diffuse_weight,
@@ -37,12 +35,9 @@ bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFact
     const long long rays = trace_sample(packet, cache, ctx, pattern, sample_stratum(pattern, 0),
                                         cache.planes[0], on_light);
     if (!coverage) {
-      single_sample_coverage(materials.data(), packet.object, kPacketLanes, material, weight,
-                             background);
+      single_sample_coverage(materials.data(), packet.object, kPacketLanes, material);
     }
     store_lanes(packet, width, material, factors.material.data());
-    store_lanes(packet, width, weight, factors.weight.data());
-    store_lanes(packet, width, background, factors.background.data());
     return rays;
   });
   if (!done) drop_planes(cache, 0);
