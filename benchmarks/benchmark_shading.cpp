@@ -9,10 +9,12 @@
 #include "embree_scene.h"
 #include "parallel_tiles.h"
 #include "pixel_factors.h"
+#include "power_lanes.h"
 #include "render_context.h"
 #include "sample_cache.h"
 #include "scene_loader.h"
 #include "shading.h"
+#include "single_sample_pass.h"
 
 namespace gloss {
 namespace {
@@ -38,6 +40,30 @@ void BM_ShadingKernel(benchmark::State& state) {
 }
 BENCHMARK(BM_ShadingKernel)->Arg(32)->Arg(1000000);
 
+// The renderer's c^alpha over 16-lane runs (power_lanes.h): range(0) alpha, range(1) 1 = fast.
+void BM_PowerLanes(benchmark::State& state) {
+  Scene scene;
+  Material m;
+  m.shininess = static_cast<float>(state.range(0));
+  scene.materials.push_back(m);
+  const MaterialExponents exponents = material_exponents(scene);
+  const PowMode mode = state.range(1) != 0 ? PowMode::fast : PowMode::exact;
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::vector<float> c(4096), out(4096);
+  for (float& x : c) x = u(rng);
+  const std::int32_t material[kMaxPowerLanes] = {};
+  const DenormalsOff denormals_off;  // as in the render threads
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < c.size(); i += kMaxPowerLanes) {
+      specular_power_lanes(exponents, material, &c[i], &out[i], kMaxPowerLanes, mode);
+    }
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<long long>(c.size()));
+}
+BENCHMARK(BM_PowerLanes)->Args({32, 0})->Args({1000000, 0})->Args({32, 1})->Args({1000000, 1});
+
 // The cached state of the benchmark scene at 640x360, 1 spp, built once.
 struct Cached {
   Scene scene;
@@ -56,13 +82,7 @@ struct Cached {
     add_samples(cache, ctx, 1);
     build_pixel_factors(cache, ctx, factors);
   }
-  RenderContext context() const {
-    RenderContext ctx;
-    ctx.scene = &scene;
-    ctx.embree = embree.get();
-    ctx.plan = make_render_plan(scene);
-    return ctx;
-  }
+  RenderContext context() const { return make_render_context(scene, *embree); }
 };
 
 Cached& cached() {
@@ -100,6 +120,21 @@ void BM_ReshadeExponent(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * 640 * 360);
 }
 BENCHMARK(BM_ReshadeExponent)->Arg(32)->Arg(1000000)->Unit(benchmark::kMicrosecond);
+
+// The engine's first full-resolution pass: trace, light factors and pixel factors, fused.
+void BM_FirstPass(benchmark::State& state) {
+  Cached& c = cached();
+  const RenderContext ctx = c.context();
+  SampleCache cache = make_sample_cache(c.scene, 640, 360, 1);
+  PixelFactors factors;
+  for (auto _ : state) {
+    reset_sample_cache(cache, c.scene, 640, 360, 1);
+    trace_single_sample(cache, ctx, factors);
+    benchmark::DoNotOptimize(factors.specular.data());
+  }
+  state.SetItemsProcessed(state.iterations() * 640 * 360);
+}
+BENCHMARK(BM_FirstPass)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace gloss

@@ -15,7 +15,8 @@
 
 // The loops over kPacketLanes below are written so GCC vectorizes them (checked with
 // -fopt-info-vec): structure-of-arrays loads and stores, inline maths, selects instead of
-// branches. Gathers from the scene (objects, triangles) stay scalar.
+// branches. Surface data comes by 16-lane gathers from the surface table; only the refinement
+// of sphere hits stays scalar.
 
 namespace gloss {
 
