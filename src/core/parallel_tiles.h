@@ -12,7 +12,7 @@
 
 namespace gloss {
 
-constexpr int kTileSize = 32;  // pixels; a multiple of the 4 x 4 ray packets
+constexpr int kTileSize = 32;  // pixels; two 16-pixel ray packets wide
 
 // Sets FTZ and DAZ in MXCSR for its lifetime, then restores the caller's mode.
 class DenormalsOff {

@@ -22,12 +22,13 @@ namespace gloss {
 
 struct PixelFactors {
   int width = 0, height = 0;
-  int samples = 0;                       // samples per pixel summed in
-  std::size_t lights = 0;                // planned lights
-  std::vector<std::int32_t> material;    // first material hit, -1 when none
-  std::vector<float> weight;             // share of samples on it (empty: samples == 1)
-  std::vector<float> background;         // share of samples that missed (empty: samples == 1)
-  std::vector<float> diffuse, specular;  // [light * pixels + pixel]
+  int samples = 0;         // samples per pixel summed in
+  std::size_t lights = 0;  // planned lights
+  // Dense arrays, fully written by each build (so left uninitialised on resize).
+  UninitializedBuffer<std::int32_t> material;  // first material hit, -1 when none
+  UninitializedBuffer<float> weight;           // share of samples on it (empty: samples == 1)
+  UninitializedBuffer<float> background;       // share of samples that missed (empty: samples == 1)
+  UninitializedBuffer<float> diffuse, specular;  // [light * pixels + pixel]
   // Further materials of mixed pixels, in pixel order.
   std::vector<std::uint32_t> extra_pixel;
   std::vector<std::int32_t> extra_material;

@@ -22,10 +22,7 @@ namespace gloss {
 
 SamplePacket::SamplePacket(int bx0, int by0, int bx1, int by1)
     : x0(bx0), y0(by0), x1(bx1), y1(by1) {
-  for (int i = 0; i < kPacketLanes; ++i) {
-    const int x = x0 + i % kPacketSide, y = y0 + i / kPacketSide;
-    valid[i] = x < x1 && y < y1 ? -1 : 0;
-  }
+  for (int i = 0; i < kPacketLanes; ++i) valid[i] = x0 + i < x1 && y0 < y1 ? -1 : 0;
 }
 
 void packet_directions(SamplePacket& packet, const SampleCache& cache, const SamplePattern& pattern,
@@ -33,12 +30,12 @@ void packet_directions(SamplePacket& packet, const SampleCache& cache, const Sam
   alignas(64) double px[kPacketLanes], py[kPacketLanes];
   if (pattern.count <= 1) {  // pixel centres; sample_offset would say so lane by lane
     for (int i = 0; i < kPacketLanes; ++i) {
-      px[i] = static_cast<double>(packet.x0 + i % kPacketSide) + 0.5;
-      py[i] = static_cast<double>(packet.y0 + i / kPacketSide + cache.row0) + 0.5;
+      px[i] = static_cast<double>(packet.x0 + i) + 0.5;
+      py[i] = static_cast<double>(packet.y0 + cache.row0) + 0.5;
     }
   } else {
     for (int i = 0; i < kPacketLanes; ++i) {  // integer hashing
-      const int x = packet.x0 + i % kPacketSide, row = packet.y0 + i / kPacketSide + cache.row0;
+      const int x = packet.x0 + i, row = packet.y0 + cache.row0;
       const SampleOffset o = sample_offset(pattern, stratum, x, row);
       px[i] = static_cast<double>(x) + static_cast<double>(o.dx);
       py[i] = static_cast<double>(row) + static_cast<double>(o.dy);
@@ -88,11 +85,11 @@ long long trace_primary(SamplePacket& packet, const SampleCache& cache, const Re
 }
 
 void store_hits(const SamplePacket& packet, int width, SamplePlane& plane) {
-  store_lanes(packet, width, packet.object, plane.object.data());
-  store_lanes(packet, width, packet.prim, plane.prim.data());
-  store_lanes(packet, width, packet.t, plane.t.data());
-  store_lanes(packet, width, packet.u, plane.u.data());
-  store_lanes(packet, width, packet.v, plane.v.data());
+  stream_lanes(packet, width, packet.object, plane.object.data());
+  stream_lanes(packet, width, packet.prim, plane.prim.data());
+  stream_lanes(packet, width, packet.t, plane.t.data());
+  stream_lanes(packet, width, packet.u, plane.u.data());
+  stream_lanes(packet, width, packet.v, plane.v.data());
 }
 
 void load_hits(SamplePacket& packet, int width, const SamplePlane& plane) {
@@ -238,10 +235,10 @@ long long packet_light(const SamplePacket& packet, const SurfaceLanes& surfaces,
 
 void store_light(const SamplePacket& packet, int width, const LightLanes& lanes,
                  LightFactorPlane& plane) {
-  store_lanes(packet, width, lanes.diffuse_weight, plane.diffuse_weight.data());
-  store_lanes(packet, width, lanes.spec_weight, plane.spec_weight.data());
-  store_lanes(packet, width, lanes.cos_phong, plane.cos_phong.data());
-  store_lanes(packet, width, lanes.cos_blinn, plane.cos_blinn.data());
+  stream_lanes(packet, width, lanes.diffuse_weight, plane.diffuse_weight.data());
+  stream_lanes(packet, width, lanes.spec_weight, plane.spec_weight.data());
+  stream_lanes(packet, width, lanes.cos_phong, plane.cos_phong.data());
+  stream_lanes(packet, width, lanes.cos_blinn, plane.cos_blinn.data());
 }
 
 }  // namespace gloss

@@ -29,15 +29,15 @@ bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFact
                           lanes.spec_weight,
                           model == ShadingModel::phong ? lanes.cos_phong : lanes.cos_blinn,
                           kPacketLanes, diffuse, specular);
-      store_lanes(packet, width, diffuse, &factors.diffuse[li * pixels]);
-      store_lanes(packet, width, specular, &factors.specular[li * pixels]);
+      stream_lanes(packet, width, diffuse, &factors.diffuse[li * pixels]);
+      stream_lanes(packet, width, specular, &factors.specular[li * pixels]);
     };
     const long long rays = trace_sample(packet, cache, ctx, pattern, sample_stratum(pattern, 0),
                                         cache.planes[0], on_light);
     if (!coverage) {
       single_sample_coverage(materials.data(), packet.object, kPacketLanes, material);
     }
-    store_lanes(packet, width, material, factors.material.data());
+    stream_lanes(packet, width, material, factors.material.data());
     return rays;
   });
   if (!done) drop_planes(cache, 0);

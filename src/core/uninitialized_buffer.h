@@ -2,6 +2,7 @@
 // std::vector whose resize leaves trivially constructible elements uninitialised: the renderer's
 // caches are fully overwritten by the stage that fills them, so zeroing them first would only
 // cost a memory pass (measured: about 8% of a 1280x720 render in page clearing and memset).
+// Storage is aligned to 64-byte cache lines, so packets can stream whole lines into it.
 #include <memory>
 #include <new>
 #include <vector>
@@ -14,9 +15,13 @@ struct DefaultInitAllocator : std::allocator<T> {
   struct rebind {
     using other = DefaultInitAllocator<U>;
   };
+  static constexpr std::align_val_t kAlignment{64};
+
   DefaultInitAllocator() = default;
   template <class U>
   DefaultInitAllocator(const DefaultInitAllocator<U>&) noexcept {}
+  T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), kAlignment)); }
+  void deallocate(T* p, std::size_t) noexcept { ::operator delete(p, kAlignment); }
   template <class U>
   void construct(U* p) noexcept(noexcept(::new (static_cast<void*>(p)) U)) {
     ::new (static_cast<void*>(p)) U;  // default-, not value-initialisation
