@@ -113,18 +113,31 @@ LaneKinds gather_geometry(const SamplePacket& packet, const SurfaceTable& table,
                           GeometryLanes& out) {
   alignas(64) std::int32_t record[kPacketLanes];
 #if defined(__AVX512F__)
-  // In registers: 16 scalar stores read back as one vector stall on store forwarding.
+  // In registers: lanes stored one by one and read back as a vector stall on store forwarding.
   const __m512i object = _mm512_load_si512(packet.object);
+  const __m512i prim = _mm512_load_si512(packet.prim);
+  const std::int32_t first = packet.object[0];
   const __mmask16 hit = _mm512_cmpge_epi32_mask(object, _mm512_setzero_si512());
-  const __m512i base =
-      _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), hit, object, table.base.data(), 4);
-  _mm512_store_si512(record, _mm512_maskz_add_epi32(hit, base, _mm512_load_si512(packet.prim)));
+  __m512i base, kind;
+  if (first >= 0 && _mm512_cmpeq_epi32_mask(object, _mm512_set1_epi32(first)) == 0xffff) {
+    // One object (most packets): its base and kind, no gathers.
+    base =
+        _mm512_set1_epi32(static_cast<std::int32_t>(table.base[static_cast<std::size_t>(first)]));
+    kind = _mm512_set1_epi32(table.kind[static_cast<std::size_t>(first)]);
+  } else {
+    base = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), hit, object, table.base.data(), 4);
+    kind = _mm512_mask_i32gather_epi32(_mm512_set1_epi32(kSphere), hit, object, table.kind.data(),
+                                       4);  // missed lanes: record 0, a sphere
+  }
+  _mm512_store_si512(record, _mm512_maskz_add_epi32(hit, base, prim));
+  _mm512_store_si512(out.kind, kind);
 #else
   for (int i = 0; i < kPacketLanes; ++i) {
     record[i] = static_cast<std::int32_t>(table.record(packet.object[i], packet.prim[i]));
+    out.kind[i] = packet.object[i] < 0 ? kSphere  // record 0
+                                       : table.kind[static_cast<std::size_t>(packet.object[i])];
   }
 #endif
-  gather16(table.kind.data(), record, out.kind);
   for (int c = 0; c < 3; ++c)
     gather16(table.a[static_cast<std::size_t>(c)].data(), record, out.a[c]);
   int spheres = 0, smooth = 0;  // missed lanes count as spheres (record 0)

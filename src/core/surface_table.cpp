@@ -5,8 +5,7 @@
 namespace gloss {
 
 namespace {
-void push(SurfaceTable& t, PrimitiveKind kind, const glm::vec3& a, const glm::vec3 (&n)[3]) {
-  t.kind.push_back(kind);
+void push(SurfaceTable& t, const glm::vec3& a, const glm::vec3 (&n)[3]) {
   for (int c = 0; c < 3; ++c) t.a[static_cast<std::size_t>(c)].push_back(a[c]);
   for (int k = 0; k < 3; ++k) {
     for (int c = 0; c < 3; ++c) t.normals[static_cast<std::size_t>(3 * k + c)].push_back(n[k][c]);
@@ -17,13 +16,15 @@ void push(SurfaceTable& t, PrimitiveKind kind, const glm::vec3& a, const glm::ve
 SurfaceTable make_surface_table(const Scene& scene) {
   SurfaceTable t;
   const glm::vec3 none[3] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
-  push(t, kSphere, glm::vec3(1.0f), none);
+  push(t, glm::vec3(1.0f), none);
   for (const Object& object : scene.objects) {
-    t.base.push_back(static_cast<std::uint32_t>(t.kind.size()));
+    t.base.push_back(static_cast<std::uint32_t>(t.a[0].size()));
     if (object.type == ObjectType::sphere) {
-      push(t, kSphere, object.center, none);
+      t.kind.push_back(kSphere);
+      push(t, object.center, none);
       continue;
     }
+    t.kind.push_back(object.mesh && object.mesh->smooth() ? kSmoothTriangle : kFlatTriangle);
     if (!object.mesh) continue;
     const Mesh& mesh = *object.mesh;
     for (const glm::uvec3& tri : mesh.triangles) {
@@ -33,9 +34,9 @@ SurfaceTable make_surface_table(const Scene& scene) {
       const glm::vec3 face(glm::normalize(glm::cross(p1 - p0, p2 - p0)));
       if (mesh.smooth()) {
         const glm::vec3 n[3] = {mesh.normals[tri.x], mesh.normals[tri.y], mesh.normals[tri.z]};
-        push(t, kSmoothTriangle, face, n);
+        push(t, face, n);
       } else {
-        push(t, kFlatTriangle, face, none);
+        push(t, face, none);
       }
     }
   }

@@ -15,9 +15,9 @@ enum PrimitiveKind : std::int32_t { kFlatTriangle = 0, kSmoothTriangle = 1, kSph
 
 struct SurfaceTable {
   // Record of primitive p of object k: base[k] + p. Record 0 is a placeholder for missed lanes
-  // (a unit sphere at the origin's corner (1, 1, 1)): any valid input, its result is discarded.
+  // (a sphere centred at (1, 1, 1)): any valid input, its result is discarded.
   std::vector<std::uint32_t> base;
-  std::vector<std::int32_t> kind;             // PrimitiveKind, per record
+  std::vector<std::int32_t> kind;             // PrimitiveKind of each object's primitives
   std::array<std::vector<float>, 3> a;        // sphere centre, or unit face normal (x, y, z)
   std::array<std::vector<float>, 9> normals;  // n0, n1, n2 of smooth triangles (x, y, z each)
 
