@@ -1,3 +1,4 @@
+#include <cassert>
 #include <type_traits>
 
 #include <tbb/parallel_for.h>
@@ -27,6 +28,8 @@ void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermIm
     fit(out.specular);
   }
   const Recombination recombination(ctx);
+  // The factors were built for the same plan (an edit that changes it is classed `light`).
+  assert(recombination.lights() == lights);
   // The pixel loop, instantiated per (one sample, term images) so it holds no such branches.
   auto pixels_loop = [&](auto single_tag, auto terms_tag, std::size_t begin, std::size_t end) {
     constexpr bool kSingle = decltype(single_tag)::value;  // weight, background from material
@@ -37,7 +40,8 @@ void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermIm
       const float weight = kSingle ? 1.0f : factors.weight[i];
       const float missed = kSingle ? (m < 0 ? 1.0f : 0.0f) : factors.background[i];
       if (m >= 0) {
-        recombination.terms(m, weight, &factors.diffuse[i], &factors.specular[i], pixels, term);
+        recombination.terms(m, weight, factors.diffuse.data() + i, factors.specular.data() + i,
+                            pixels, term);
       }
       out.total.pixels[i] = recombination.total(term, missed);
       if constexpr (kTerms) {
@@ -66,8 +70,8 @@ void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermIm
   for (std::size_t e = 0; e < factors.extra_pixel.size(); ++e) {
     glm::vec3 term[4];
     recombination.terms(factors.extra_material[e], factors.extra_weight[e],
-                        &factors.extra_diffuse[e * lights], &factors.extra_specular[e * lights], 1,
-                        term);
+                        factors.extra_diffuse.data() + e * lights,
+                        factors.extra_specular.data() + e * lights, 1, term);
     const std::size_t i = factors.extra_pixel[e];
     out.total.pixels[i] += term[0] + term[1] + term[2] + term[3];
     if (terms) {

@@ -38,8 +38,8 @@ void size_pixel_factors(PixelFactors& out, int width, int height, int samples, s
   out.samples = samples;
   out.lights = lights;
   out.material.resize(pixels);
-  out.weight.resize(samples > 1 ? pixels : 0);
-  out.background.resize(samples > 1 ? pixels : 0);
+  out.weight.resize(samples != 1 ? pixels : 0);
+  out.background.resize(samples != 1 ? pixels : 0);
   out.diffuse.resize(pixels * lights);
   out.specular.resize(pixels * lights);
   out.extra_pixel.clear();

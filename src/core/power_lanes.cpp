@@ -33,41 +33,51 @@ MaterialExponents material_exponents(const Scene& scene) {
 
 void specular_power_lanes(const MaterialExponents& exponents, const std::int32_t* material,
                           const float* c, float* out, int n, PowMode mode) {
-  alignas(64) float base[kMaxPowerLanes], alpha[kMaxPowerLanes], floor[kMaxPowerLanes];
-  alignas(64) std::int32_t index[kMaxPowerLanes];
-  for (int i = 0; i < n; ++i) index[i] = std::max(material[i], 0);
-  if (n == kMaxPowerLanes) {  // a handful of materials, in L1
-    gather16(exponents.alpha.data(), index, alpha);
-    gather16(exponents.floor.data(), index, floor);
-  } else {
-    for (int i = 0; i < n; ++i) {
-      alpha[i] = exponents.alpha[static_cast<std::size_t>(index[i])];
-      floor[i] = exponents.floor[static_cast<std::size_t>(index[i])];
-    }
+  // Always 16 lanes (the spare ones padded as missed): every call runs the same code, so a run
+  // clipped at the image's edge gets the same bits as a full one (the vector and scalar powf
+  // of a loop's remainder may differ by an ulp).
+  constexpr int kLanes = kMaxPowerLanes;
+  alignas(64) float cos[kLanes], base[kLanes], alpha[kLanes], floor[kLanes], result[kLanes];
+  alignas(64) std::int32_t mat[kLanes], index[kLanes];
+  for (int i = 0; i < kLanes; ++i) {
+    cos[i] = 0.0f;
+    mat[i] = -1;
   }
   for (int i = 0; i < n; ++i) {
-    floor[i] = material[i] < 0 ? std::numeric_limits<float>::infinity() : floor[i];
+    cos[i] = c[i];
+    mat[i] = material[i];
+  }
+  for (int i = 0; i < kLanes; ++i) index[i] = std::max(mat[i], 0);
+  gather16(exponents.alpha.data(), index, alpha);  // a handful of materials, in L1
+  gather16(exponents.floor.data(), index, floor);
+  for (int i = 0; i < kLanes; ++i) {
+    floor[i] = mat[i] < 0 ? std::numeric_limits<float>::infinity() : floor[i];
   }
   if (mode == PowMode::fast) {
-    for (int i = 0; i < n; ++i)
-      out[i] = c[i] >= floor[i] ? fast_specular_power(c[i], alpha[i]) : 0.0f;
-    return;
-  }
-  // Lanes whose result is fixed (0 or 1) call powf(1, 1): the vector powf then stays on its fast
-  // path. The arguments go through memory so GCC cannot fold the selects into the call (it
-  // otherwise passes the raw lanes, result selects being enough for correctness but not speed).
-  int needed = 0;  // lanes that need powf at all: c^1 = c exactly (matte walls have alpha 1)
-  for (int i = 0; i < n; ++i) {
-    const bool fixed = !(c[i] >= floor[i]) || c[i] >= 1.0f || alpha[i] == 0.0f;
-    base[i] = fixed ? 1.0f : c[i];
-    alpha[i] = fixed ? 1.0f : alpha[i];
-    needed += alpha[i] != 1.0f ? 1 : 0;
-  }
-  if (needed > 0) {
+    for (int i = 0; i < kLanes; ++i) {
+      result[i] = cos[i] >= floor[i] ? fast_specular_power(cos[i], alpha[i]) : 0.0f;
+    }
+  } else {
+    // Lanes whose result is fixed (0 or 1) call powf(1, 1): the vector powf then stays on its
+    // fast path. The arguments go through memory so GCC cannot fold the selects into the call
+    // (it otherwise passes the raw lanes, result selects being enough for correctness but not
+    // speed).
+    int needed = 0;  // lanes that need powf at all: c^1 = c exactly (matte walls have alpha 1)
+    for (int i = 0; i < kLanes; ++i) {
+      const bool fixed = !(cos[i] >= floor[i]) || cos[i] >= 1.0f || alpha[i] == 0.0f;
+      base[i] = fixed ? 1.0f : cos[i];
+      alpha[i] = fixed ? 1.0f : alpha[i];
+      needed += alpha[i] != 1.0f ? 1 : 0;
+    }
+    if (needed > 0) {
 #pragma omp simd
-    for (int i = 0; i < n; ++i) base[i] = powf(base[i], alpha[i]);
+      for (int i = 0; i < kLanes; ++i) base[i] = powf(base[i], alpha[i]);
+    }
+    for (int i = 0; i < kLanes; ++i) {
+      result[i] = cos[i] >= floor[i] && cos[i] > 0.0f ? base[i] : 0.0f;
+    }
   }
-  for (int i = 0; i < n; ++i) out[i] = c[i] >= floor[i] && c[i] > 0.0f ? base[i] : 0.0f;
+  for (int i = 0; i < n; ++i) out[i] = result[i];
 }
 
 }  // namespace gloss

@@ -9,6 +9,7 @@ bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFact
   const Scene& scene = *ctx.scene;
   const std::size_t lights = ctx.plan.lights.size();
   const std::size_t pixels = cache.pixel_count();
+  drop_planes(cache, 0);  // the first sample of a fresh image (callers reset the cache)
   append_planes(cache, lights, 1);
   size_pixel_factors(factors, cache.width, cache.height, 1, lights);
   const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);

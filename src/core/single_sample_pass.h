@@ -9,8 +9,8 @@
 
 namespace gloss {
 
-// cache must hold no sample yet. false when cancelled (the cache is then left empty and the
-// factors incomplete).
+// Any samples the cache holds are dropped first. false when cancelled (the cache is then left empty
+// and the factors incomplete).
 bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFactors& factors);
 
 }  // namespace gloss
