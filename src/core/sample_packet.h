@@ -103,8 +103,8 @@ void store_lanes(const SamplePacket& packet, int width, const T* lanes, T* image
 template <class T>
 void stream_lanes(const SamplePacket& packet, int width, const T* lanes, T* image) {
   static_assert(sizeof(T) == 4 && kPacketLanes == 16, "one 64-byte line of lanes");
-  T* row = image + static_cast<std::size_t>(packet.y0) * width + packet.x0;
 #if defined(__AVX512F__)
+  T* row = image + static_cast<std::size_t>(packet.y0) * width + packet.x0;
   if (packet.x1 - packet.x0 == kPacketLanes && reinterpret_cast<std::uintptr_t>(row) % 64 == 0) {
     _mm512_stream_si512(reinterpret_cast<__m512i*>(row), _mm512_loadu_si512(lanes));
     return;
