@@ -7,7 +7,7 @@
 
 #include "assets.h"
 #include "embree_scene.h"
-#include "parallel_tiles.h"
+#include "parallel_loops.h"
 #include "pixel_factors.h"
 #include "power_lanes.h"
 #include "render_context.h"

@@ -69,6 +69,45 @@ TEST(SingleSamplePass, EqualsTracingThenBuildingFactorsOnTheCornellTeapot) {
   expect_fused_equals_staged(scene);
 }
 
+// A light edit on a one-sample image: fused (relight_single_sample) against recomputing the
+// light factors and then the pixel factors.
+TEST(SingleSamplePass, RelightEqualsRecomputingLightFactorsThenBuildingFactors) {
+  Scene scene = load_scene(std::string(GLOSS_ASSETS_DIR) + "/scenes/cornell-teapot.json");
+  scene.render.width = 150;
+  scene.render.height = 90;
+  const EmbreeScene embree(scene);
+  Scene moved = scene;
+  moved.lights[0].position += glm::vec3(0.2f, -0.1f, 0.05f);
+  moved.lights[0].attenuation = {1.0f, 0.2f, 0.1f};
+  const RenderContext before = make_render_context(scene, embree);
+  const RenderContext after = make_render_context(moved, embree);
+
+  SampleCache fused_cache = make_sample_cache(scene, 150, 90, 1);
+  PixelFactors fused;
+  ASSERT_TRUE(trace_single_sample(fused_cache, before, fused));
+  ASSERT_TRUE(relight_single_sample(fused_cache, after, fused));
+
+  SampleCache staged_cache = make_sample_cache(scene, 150, 90, 1);
+  PixelFactors staged;
+  ASSERT_TRUE(add_samples(staged_cache, before, 1));
+  ASSERT_TRUE(recompute_light_factors(staged_cache, after));
+  ASSERT_TRUE(build_pixel_factors(staged_cache, after, staged));
+
+  expect_same_bits(fused.material, staged.material, "material");
+  expect_same_bits(fused.diffuse, staged.diffuse, "diffuse");
+  expect_same_bits(fused.specular, staged.specular, "specular");
+  expect_same_bits(fused_cache.planes[0].lights[0].cos_phong,
+                   staged_cache.planes[0].lights[0].cos_phong, "cos_phong");
+  // And the light really moved: the factors differ from the first light's.
+  PixelFactors first;
+  SampleCache first_cache = make_sample_cache(scene, 150, 90, 1);
+  ASSERT_TRUE(trace_single_sample(first_cache, before, first));
+  std::size_t changed = 0;
+  for (std::size_t i = 0; i < first.diffuse.size(); ++i)
+    changed += first.diffuse[i] != fused.diffuse[i];
+  EXPECT_GT(changed, first.diffuse.size() / 2);
+}
+
 // Nothing to hit and no materials: every table the lanes gather from still has its entry 0.
 TEST(SingleSamplePass, SceneWithoutObjectsOrMaterialsShowsTheBackground) {
   Scene scene;

@@ -179,8 +179,7 @@ BenchReport run_benchmark(const Scene& input, const BenchOptions& options) {
     moved.lights[0].position += glm::vec3(0.05f, 0.0f, 0.0f);
     const RenderContext ctx = make_render_context(moved, embree);
     report.light_move_ms = time_median(options.runs, [&] {
-      recompute_light_factors(cache, ctx);
-      build_pixel_factors(cache, ctx, factors);
+      relight_single_sample(cache, ctx, factors);  // the engine's path for a 1-spp image
       combine_terms(factors, ctx, reshaded, false);
     });
   }

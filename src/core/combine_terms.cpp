@@ -3,7 +3,7 @@
 
 #include <tbb/parallel_for.h>
 
-#include "parallel_tiles.h"
+#include "parallel_loops.h"
 #include "pixel_factors.h"
 #include "recombination.h"
 

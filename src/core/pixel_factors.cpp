@@ -5,7 +5,7 @@
 #include <tbb/parallel_for.h>
 
 #include "lane_gather.h"
-#include "parallel_tiles.h"
+#include "parallel_loops.h"
 #include "power_lanes.h"
 
 namespace gloss {

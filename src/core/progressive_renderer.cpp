@@ -161,7 +161,12 @@ bool ProgressiveRenderer::Impl::step() {
     factors_done = true;
   } else if (dirty == ChangeClass::light) {
     redo = ChangeClass::light;
-    ok = recompute_light_factors(cache, ctx);
+    if (cache.samples() == 1) {  // one pass: light factors and pixel factors
+      ok = relight_single_sample(cache, ctx, factors);
+      factors_done = true;
+    } else {
+      ok = recompute_light_factors(cache, ctx);
+    }
   } else if (dirty == ChangeClass::none && level < options.preview_levels) {
     // The next resolution is traced aside; the current one stays until it is complete.
     SampleCache previous = std::move(cache);

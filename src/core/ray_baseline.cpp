@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "camera.h"
-#include "parallel_tiles.h"
+#include "parallel_loops.h"
 #include "ray_packet.h"
 
 namespace gloss {
@@ -22,10 +22,11 @@ long long trace_rays_raw(const Scene& scene, const EmbreeScene& embree, int widt
     }
   }
   std::atomic<long long> total{0};
-  parallel_tiles(width, height, nullptr, [&](int x0, int y0, int x1, int y1) {
+  // Bands of whole rows and 16-pixel packets, as the renderer (sample_packet.h).
+  parallel_rows(width, height, nullptr, [&](int y0, int y1) {
+    const int x0 = 0, x1 = width;
     long long rays = 0;
     RTCIntersectContext context = coherent_context();
-    // Packets of 16 pixels in a row, as the renderer's (sample_packet.h).
     for (int y = y0; y < y1; ++y) {
       for (int bx = x0; bx < x1; bx += 16) {
         RTCRayHit16 rh;

@@ -11,7 +11,8 @@ namespace gloss {
 
 // Traces the primary rays of a width x height, 1-spp image of scene.camera and, for every hit,
 // one shadow ray per light with non-black diffuse or specular (when shadows are on), in the same
-// 16-ray packets and tiles as the renderer, with no shading and no output. Returns the ray count.
+// 16-ray packets and bands of rows as the renderer, with no shading and no output. Returns the ray
+// count.
 long long trace_rays_raw(const Scene& scene, const EmbreeScene& embree, int width, int height);
 
 // One parallel streaming pass that reads read_bytes and writes write_bytes (float arrays, one

@@ -12,7 +12,7 @@
 
 #include "camera.h"
 #include "embree_scene.h"
-#include "parallel_tiles.h"
+#include "parallel_loops.h"
 #include "reference_hit.h"
 #include "sampling.h"
 #include "scene_loader.h"

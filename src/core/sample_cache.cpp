@@ -84,10 +84,12 @@ bool add_samples(SampleCache& cache, const RenderContext& ctx, int count) {
   return done;
 }
 
+void size_planes(SampleCache& cache, std::size_t lights) {
+  for (SamplePlane& plane : cache.planes) size_plane(plane, cache.pixel_count(), lights);
+}
+
 bool recompute_light_factors(SampleCache& cache, const RenderContext& ctx) {
-  for (SamplePlane& plane : cache.planes) {
-    size_plane(plane, cache.pixel_count(), ctx.plan.lights.size());
-  }
+  size_planes(cache, ctx.plan.lights.size());
   const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
   return for_each_packet(cache, ctx, [&](SamplePacket& packet) {
     long long rays = 0;

@@ -72,6 +72,10 @@ bool add_samples(SampleCache& cache, const RenderContext& ctx, int count);
 void append_planes(SampleCache& cache, std::size_t lights, int count);
 void drop_planes(SampleCache& cache, int first);
 
+// Sizes every plane for the cache's pixels and `lights` planned lights (before light factors
+// are recomputed for another plan).
+void size_planes(SampleCache& cache, std::size_t lights);
+
 // Recomputes the light factors (shadow rays included) of every plane for the context's scene
 // and plan, reusing the primary hits. false when cancelled (the factors are then stale).
 bool recompute_light_factors(SampleCache& cache, const RenderContext& ctx);

@@ -15,7 +15,7 @@
 #include <immintrin.h>
 #endif
 
-#include "parallel_tiles.h"
+#include "parallel_loops.h"
 #include "render_context.h"
 #include "sample_cache.h"
 #include "sampling.h"
@@ -157,16 +157,16 @@ long long trace_sample(SamplePacket& packet, const SampleCache& cache, const Ren
   return rays + shade_sample(packet, cache, ctx, plane, on_light);
 }
 
-// Runs f(packet) -> rays over the cached region's packets, tile by tile on oneTBB
-// workers (as the Embree baseline, ray_baseline.cpp; bands of whole rows measured the same);
-// adds the rays to ctx.rays. false when cancelled.
+// Runs f(packet) -> rays over the cached region's packets, band by band of whole rows on
+// oneTBB workers (parallel_rows): the caches' arrays are then read and written as long
+// streams. Adds the rays to ctx.rays. false when cancelled.
 template <class F>
 bool for_each_packet(const SampleCache& cache, const RenderContext& ctx, F&& f) {
-  return parallel_tiles(cache.width, cache.height, ctx.cancel, [&](int x0, int y0, int x1, int y1) {
+  return parallel_rows(cache.width, cache.height, ctx.cancel, [&](int y0, int y1) {
     long long rays = 0;
     for (int y = y0; y < y1; ++y) {
-      for (int x = x0; x < x1; x += kPacketLanes) {
-        SamplePacket packet(x, y, std::min(x + kPacketLanes, x1), y + 1);
+      for (int x = 0; x < cache.width; x += kPacketLanes) {
+        SamplePacket packet(x, y, std::min(x + kPacketLanes, cache.width), y + 1);
         rays += f(packet);
       }
     }

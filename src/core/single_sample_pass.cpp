@@ -5,19 +5,22 @@
 
 namespace gloss {
 
-bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFactors& factors) {
+namespace {
+// A pass over the packets of a cache holding one sample per pixel: sample(packet, on_light)
+// fills plane 0 for the packet (tracing the hits or reusing them) and hands each planned
+// light's lanes to on_light, which turns them into pixel factors on the spot.
+template <class Sample>
+bool fused_factors_pass(const SampleCache& cache, const RenderContext& ctx, PixelFactors& factors,
+                        Sample&& sample) {
   const Scene& scene = *ctx.scene;
   const std::size_t lights = ctx.plan.lights.size();
   const std::size_t pixels = cache.pixel_count();
-  drop_planes(cache, 0);  // the first sample of a fresh image (callers reset the cache)
-  append_planes(cache, lights, 1);
   size_pixel_factors(factors, cache.width, cache.height, 1, lights);
-  const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
   const MaterialExponents exponents = material_exponents(scene);
   const std::vector<std::int32_t> materials = object_materials(scene);
   const ShadingModel model = scene.render.model;
   const int width = cache.width;
-  const bool done = for_each_packet(cache, ctx, [&](SamplePacket& packet) {
+  return for_each_packet(cache, ctx, [&](SamplePacket& packet) {
     alignas(64) std::int32_t material[kPacketLanes];
     alignas(64) float diffuse[kPacketLanes], specular[kPacketLanes];
     bool coverage = false;
@@ -33,16 +36,38 @@ bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFact
       stream_lanes(packet, width, diffuse, &factors.diffuse[li * pixels]);
       stream_lanes(packet, width, specular, &factors.specular[li * pixels]);
     };
-    const long long rays = trace_sample(packet, cache, ctx, pattern, sample_stratum(pattern, 0),
-                                        cache.planes[0], on_light);
+    const long long rays = sample(packet, on_light);
     if (!coverage) {
       single_sample_coverage(materials.data(), packet.object, kPacketLanes, material);
     }
     stream_lanes(packet, width, material, factors.material.data());
     return rays;
   });
+}
+}  // namespace
+
+bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFactors& factors) {
+  drop_planes(cache, 0);  // the first sample of a fresh image (callers reset the cache)
+  append_planes(cache, ctx.plan.lights.size(), 1);
+  const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
+  const int stratum = sample_stratum(pattern, 0);
+  const bool done =
+      fused_factors_pass(cache, ctx, factors, [&](SamplePacket& packet, auto& on_light) {
+        return trace_sample(packet, cache, ctx, pattern, stratum, cache.planes[0], on_light);
+      });
   if (!done) drop_planes(cache, 0);
   return done;
+}
+
+bool relight_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFactors& factors) {
+  size_planes(cache, ctx.plan.lights.size());
+  const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
+  const int stratum = sample_stratum(pattern, 0);
+  return fused_factors_pass(cache, ctx, factors, [&](SamplePacket& packet, auto& on_light) {
+    packet_directions(packet, cache, pattern, stratum);
+    load_hits(packet, cache.width, cache.planes[0]);
+    return shade_sample(packet, cache, ctx, cache.planes[0], on_light);
+  });
 }
 
 }  // namespace gloss

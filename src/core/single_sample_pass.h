@@ -13,4 +13,10 @@ namespace gloss {
 // and the factors incomplete).
 bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFactors& factors);
 
+// For a cache of one sample per pixel (a light edit in the first full-resolution pass): the
+// light factors from the cached hits and the pixel factors in one pass, equal to
+// recompute_light_factors followed by build_pixel_factors. false when cancelled (factors and
+// light factors are then stale).
+bool relight_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFactors& factors);
+
 }  // namespace gloss
