@@ -56,14 +56,14 @@ std::vector<std::int32_t> object_materials(const Scene& scene) {
   return out;
 }
 
-void single_sample_coverage(const std::int32_t* object_material, const std::int32_t* object, int n,
-                            std::int32_t* material) {
+void single_sample_coverage(const std::vector<std::int32_t>& object_material,
+                            const std::int32_t* object, int n, std::int32_t* material) {
   alignas(64) std::int32_t index[kMaxPowerLanes];
   for (int i = 0; i < n; ++i) index[i] = std::max(object[i], 0);
   if (n == kMaxPowerLanes) {
-    gather16(object_material, index, material);
+    gather16(object_material.data(), object_material.size(), index, material);
   } else {
-    for (int i = 0; i < n; ++i) material[i] = object_material[index[i]];
+    for (int i = 0; i < n; ++i) material[i] = object_material[static_cast<std::size_t>(index[i])];
   }
   for (int i = 0; i < n; ++i) material[i] = object[i] < 0 ? -1 : material[i];
 }
@@ -98,7 +98,7 @@ bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pix
   // One sample: no grouping, the lane helpers the fused first pass uses, row by row.
   auto single = [&](std::size_t idx, int m) {
     const SamplePlane& plane = cache.planes[0];
-    single_sample_coverage(materials.data(), &plane.object[idx], m, &out.material[idx]);
+    single_sample_coverage(materials, &plane.object[idx], m, &out.material[idx]);
     for (std::size_t li = 0; li < lights; ++li) {
       const LightFactorPlane& f = plane.lights[li];
       single_sample_light(exponents, pow_mode, &out.material[idx], &f.diffuse_weight[idx],

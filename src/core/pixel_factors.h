@@ -51,8 +51,8 @@ std::vector<std::int32_t> object_materials(const Scene& scene);
 // The factors of n <= kMaxPowerLanes pixels covered by one sample each, from that sample's
 // object index and one light's factors (cosine: the model's). Shared by build_pixel_factors at
 // 1 spp and the fused first pass (single_sample_pass.h), so both give the same bits.
-void single_sample_coverage(const std::int32_t* object_material, const std::int32_t* object, int n,
-                            std::int32_t* material);
+void single_sample_coverage(const std::vector<std::int32_t>& object_material,
+                            const std::int32_t* object, int n, std::int32_t* material);
 void single_sample_light(const MaterialExponents& exponents, PowMode mode,
                          const std::int32_t* material, const float* diffuse_weight,
                          const float* spec_weight, const float* cosine, int n, float* diffuse,

@@ -48,8 +48,9 @@ void specular_power_lanes(const MaterialExponents& exponents, const std::int32_t
     mat[i] = material[i];
   }
   for (int i = 0; i < kLanes; ++i) index[i] = std::max(mat[i], 0);
-  gather16(exponents.alpha.data(), index, alpha);  // a handful of materials, in L1
-  gather16(exponents.floor.data(), index, floor);
+  const LaneGather by_material(index);  // a handful of materials: a permute, no gather
+  by_material(exponents.alpha.data(), exponents.alpha.size(), alpha);
+  by_material(exponents.floor.data(), exponents.floor.size(), floor);
   for (int i = 0; i < kLanes; ++i) {
     floor[i] = mat[i] < 0 ? std::numeric_limits<float>::infinity() : floor[i];
   }

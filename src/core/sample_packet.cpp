@@ -120,14 +120,20 @@ LaneKinds gather_geometry(const SamplePacket& packet, const SurfaceTable& table,
   const __mmask16 hit = _mm512_cmpge_epi32_mask(object, _mm512_setzero_si512());
   __m512i base, kind;
   if (first >= 0 && _mm512_cmpeq_epi32_mask(object, _mm512_set1_epi32(first)) == 0xffff) {
-    // One object (most packets): its base and kind, no gathers.
+    // One object (most packets): its base and kind.
     base =
         _mm512_set1_epi32(static_cast<std::int32_t>(table.base[static_cast<std::size_t>(first)]));
     kind = _mm512_set1_epi32(table.kind[static_cast<std::size_t>(first)]);
   } else {
-    base = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), hit, object, table.base.data(), 4);
-    kind = _mm512_mask_i32gather_epi32(_mm512_set1_epi32(kSphere), hit, object, table.kind.data(),
-                                       4);  // missed lanes: record 0, a sphere
+    alignas(64) std::int32_t index[kPacketLanes], kinds[kPacketLanes];
+    alignas(64) std::uint32_t bases[kPacketLanes];
+    _mm512_store_si512(index, _mm512_maskz_mov_epi32(hit, object));  // missed lanes: 0
+    const LaneGather by_object(index);
+    by_object(table.base.data(), table.base.size(), bases);
+    by_object(table.kind.data(), table.kind.size(), kinds);
+    base = _mm512_maskz_mov_epi32(hit, _mm512_load_si512(bases));
+    // Missed lanes: record 0, a sphere.
+    kind = _mm512_mask_mov_epi32(_mm512_set1_epi32(kSphere), hit, _mm512_load_si512(kinds));
   }
   _mm512_store_si512(record, _mm512_maskz_add_epi32(hit, base, prim));
   _mm512_store_si512(out.kind, kind);
@@ -138,8 +144,10 @@ LaneKinds gather_geometry(const SamplePacket& packet, const SurfaceTable& table,
                                        : table.kind[static_cast<std::size_t>(packet.object[i])];
   }
 #endif
+  const LaneGather by_record(record);
+  const std::size_t records = table.a[0].size();
   for (int c = 0; c < 3; ++c)
-    gather16(table.a[static_cast<std::size_t>(c)].data(), record, out.a[c]);
+    by_record(table.a[static_cast<std::size_t>(c)].data(), records, out.a[c]);
   int spheres = 0, smooth = 0;  // missed lanes count as spheres (record 0)
   for (int i = 0; i < kPacketLanes; ++i) {
     spheres += out.kind[i] == kSphere && packet.object[i] >= 0 ? 1 : 0;
@@ -149,7 +157,7 @@ LaneKinds gather_geometry(const SamplePacket& packet, const SurfaceTable& table,
     std::memset(out.n, 0, sizeof out.n);
   } else {
     for (int c = 0; c < 9; ++c) {
-      gather16(table.normals[static_cast<std::size_t>(c)].data(), record, out.n[c]);
+      by_record(table.normals[static_cast<std::size_t>(c)].data(), records, out.n[c]);
     }
   }
   return {spheres > 0, smooth > 0};

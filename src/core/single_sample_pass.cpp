@@ -26,7 +26,7 @@ bool fused_factors_pass(const SampleCache& cache, const RenderContext& ctx, Pixe
     bool coverage = false;
     auto on_light = [&](std::size_t li, const LightLanes& lanes) {
       if (!coverage) {  // first light: the primary hits are final by now
-        single_sample_coverage(materials.data(), packet.object, kPacketLanes, material);
+        single_sample_coverage(materials, packet.object, kPacketLanes, material);
         coverage = true;
       }
       single_sample_light(exponents, scene.render.pow, material, lanes.diffuse_weight,
@@ -38,7 +38,7 @@ bool fused_factors_pass(const SampleCache& cache, const RenderContext& ctx, Pixe
     };
     const long long rays = sample(packet, on_light);
     if (!coverage) {
-      single_sample_coverage(materials.data(), packet.object, kPacketLanes, material);
+      single_sample_coverage(materials, packet.object, kPacketLanes, material);
     }
     stream_lanes(packet, width, material, factors.material.data());
     return rays;
