@@ -49,6 +49,14 @@ void expect_fused_equals_staged(const Scene& scene) {
     expect_same_bits(fused_cache.planes[0].lights[li].cos_blinn,
                      staged_cache.planes[0].lights[li].cos_blinn, "cos_blinn");
   }
+  // Given a total image, the same pass writes what combine_terms makes of the factors.
+  Image total(3, 2, glm::vec3(-1.0f));  // the wrong size: resized
+  ASSERT_TRUE(trace_single_sample(fused_cache, ctx, fused, &total));
+  TermImages combined;
+  combine_terms(staged, ctx, combined, false);
+  ASSERT_EQ(total.width, w);
+  ASSERT_EQ(total.height, h);
+  expect_same_bits(total.pixels, combined.total.pixels, "total");
 }
 
 // 37 x 23: neither side a multiple of the 4 x 4 packets or the 32-pixel tiles.
@@ -59,6 +67,13 @@ TEST(SingleSamplePass, EqualsTracingThenBuildingFactorsOnASphereOverAFloor) {
   expect_fused_equals_staged(scene);
   scene.render.model = ShadingModel::blinn_phong;
   scene.render.pow = PowMode::fast;
+  expect_fused_equals_staged(scene);
+  // Two lights (their terms summed in plan order), a background, an emissive floor.
+  scene.background = {0.05f, 0.1f, 0.2f};
+  PointLight second = test::make_light({-3, 2, 1}, {0.3f, 0.6f, 0.9f}, {0.7f, 0.2f, 0.4f});
+  second.ambient = glm::vec3(0.05f);
+  scene.lights.push_back(second);
+  scene.materials[1].emission = {0.02f, 0.01f, 0.0f};
   expect_fused_equals_staged(scene);
 }
 
@@ -98,6 +113,11 @@ TEST(SingleSamplePass, RelightEqualsRecomputingLightFactorsThenBuildingFactors) 
   expect_same_bits(fused.specular, staged.specular, "specular");
   expect_same_bits(fused_cache.planes[0].lights[0].cos_phong,
                    staged_cache.planes[0].lights[0].cos_phong, "cos_phong");
+  Image total;
+  ASSERT_TRUE(relight_single_sample(fused_cache, after, fused, &total));
+  TermImages combined;
+  combine_terms(staged, after, combined, false);
+  expect_same_bits(total.pixels, combined.total.pixels, "total");
   // And the light really moved: the factors differ from the first light's.
   PixelFactors first;
   SampleCache first_cache = make_sample_cache(scene, 150, 90, 1);
@@ -126,6 +146,9 @@ TEST(SingleSamplePass, SceneWithoutObjectsOrMaterialsShowsTheBackground) {
     EXPECT_EQ(p, glm::vec3(0.25f, 0.5f, 0.75f));
   }
   for (const glm::vec3& p : out.specular.pixels) EXPECT_EQ(p, glm::vec3(0.0f));
+  Image total;
+  ASSERT_TRUE(trace_single_sample(cache, ctx, factors, &total));
+  for (const glm::vec3& p : total.pixels) EXPECT_EQ(p, glm::vec3(0.25f, 0.5f, 0.75f));
 }
 
 }  // namespace

@@ -61,15 +61,19 @@ std::pair<double, double> time_medians(int runs, const std::function<void()>& f,
   return {median(tf), median(tg)};
 }
 
-// A full 1-spp render through the engine's stages, BVH already built: trace, light factors and
-// per-pixel factors (one fused pass, as the engine's first full-resolution pass), recombination
-// into the total image (and the four term images when terms is set).
+// A full 1-spp render through the engine's stages, BVH already built: trace, light factors,
+// per-pixel factors and the total image in one fused pass, as the engine's first
+// full-resolution pass; with terms, the four term images by recombination after it.
 void full_render(const Scene& scene, const EmbreeScene& embree, SampleCache& cache,
                  PixelFactors& factors, TermImages& out, bool terms) {
   const RenderContext ctx = make_render_context(scene, embree);
   reset_sample_cache(cache, scene, scene.render.width, scene.render.height, 1);
-  trace_single_sample(cache, ctx, factors);
-  combine_terms(factors, ctx, out, terms);
+  if (terms) {
+    trace_single_sample(cache, ctx, factors);
+    combine_terms(factors, ctx, out, true);
+  } else {
+    trace_single_sample(cache, ctx, factors, &out.total);  // the total made in the same pass
+  }
 }
 
 double peak_rss_mb() {
@@ -179,8 +183,8 @@ BenchReport run_benchmark(const Scene& input, const BenchOptions& options) {
     moved.lights[0].position += glm::vec3(0.05f, 0.0f, 0.0f);
     const RenderContext ctx = make_render_context(moved, embree);
     report.light_move_ms = time_median(options.runs, [&] {
-      relight_single_sample(cache, ctx, factors);  // the engine's path for a 1-spp image
-      combine_terms(factors, ctx, reshaded, false);
+      // The engine's path for a 1-spp image: factors and total in one pass.
+      relight_single_sample(cache, ctx, factors, &reshaded.total);
     });
   }
 

@@ -25,8 +25,14 @@ class LaneGather {
   explicit LaneGather(const std::int32_t* index) {
 #if defined(__AVX512F__)
     m_index = _mm512_load_si512(index);
-    m_low = lowest(m_index);
-    m_span = -lowest(_mm512_sub_epi32(_mm512_setzero_si512(), m_index)) - m_low;
+    const __m512i first = _mm512_set1_epi32(index[0]);
+    if (_mm512_cmpeq_epi32_mask(m_index, first) == 0xffff) {  // one entry: no reductions
+      m_low = index[0];
+      m_span = 0;
+    } else {
+      m_low = lowest(m_index);
+      m_span = -lowest(_mm512_sub_epi32(_mm512_setzero_si512(), m_index)) - m_low;
+    }
     m_offset = _mm512_sub_epi32(m_index, _mm512_set1_epi32(m_low));
 #else
     m_index = index;

@@ -68,7 +68,7 @@ void specular_power_lanes(const MaterialExponents& exponents, const std::int32_t
       const bool fixed = !(cos[i] >= floor[i]) || cos[i] >= 1.0f || alpha[i] == 0.0f;
       base[i] = fixed ? 1.0f : cos[i];
       alpha[i] = fixed ? 1.0f : alpha[i];
-      needed += alpha[i] != 1.0f ? 1 : 0;
+      needed |= alpha[i] != 1.0f ? 1 : 0;  // an OR: no horizontal sum
     }
     if (needed > 0) {
 #pragma omp simd

@@ -78,7 +78,9 @@ struct ProgressiveRenderer::Impl {
   bool take_inbox();
   bool step();
   void start_level(int new_level);
-  void publish(double pass_ms, long long rays, bool converged);
+  // Publishes frame, its images made from the current factors.
+  void publish(std::shared_ptr<RenderedFrame> frame, double pass_ms, long long rays,
+               bool converged);
   bool converged_state() const {
     return dirty == ChangeClass::none && level == options.preview_levels &&
            cache.samples() >= scene->render.spp;
@@ -154,15 +156,18 @@ bool ProgressiveRenderer::Impl::step() {
   ChangeClass redo = ChangeClass::none;  // what a cancellation leaves to do
   bool ok = true;
   bool factors_done = false;  // the fused first pass builds the pixel factors too
+  // ... and, when only the total is shown, the frame's total image as well.
+  auto frame = std::make_shared<RenderedFrame>();
+  Image* const total = worker_terms ? nullptr : &frame->images.total;
   if (dirty == ChangeClass::full) {
     start_level(options.preview_levels > 0 ? 0 : options.preview_levels);
     redo = ChangeClass::full;
-    ok = trace_single_sample(cache, ctx, factors);
+    ok = trace_single_sample(cache, ctx, factors, total);
     factors_done = true;
   } else if (dirty == ChangeClass::light) {
     redo = ChangeClass::light;
     if (cache.samples() == 1) {  // one pass: light factors and pixel factors
-      ok = relight_single_sample(cache, ctx, factors);
+      ok = relight_single_sample(cache, ctx, factors, total);
       factors_done = true;
     } else {
       ok = recompute_light_factors(cache, ctx);
@@ -173,7 +178,7 @@ bool ProgressiveRenderer::Impl::step() {
     const int previous_level = level;
     start_level(level + 1);
     redo = ChangeClass::exponent;  // cancelled: the factors must be rebuilt from `previous`
-    ok = trace_single_sample(cache, ctx, factors);
+    ok = trace_single_sample(cache, ctx, factors, total);
     factors_done = true;
     if (!ok) {
       cache = std::move(previous);
@@ -195,13 +200,13 @@ bool ProgressiveRenderer::Impl::step() {
     return false;
   }
   dirty = ChangeClass::none;
-  publish(ms_between(start, Clock::now()), rays.load(), converged_state());
+  if (!factors_done || total == nullptr) combine_terms(factors, ctx, frame->images, worker_terms);
+  publish(std::move(frame), ms_between(start, Clock::now()), rays.load(), converged_state());
   return true;
 }
 
-void ProgressiveRenderer::Impl::publish(double pass_ms, long long rays, bool converged) {
-  auto frame = std::make_shared<RenderedFrame>();
-  combine_terms(factors, ctx, frame->images, worker_terms);
+void ProgressiveRenderer::Impl::publish(std::shared_ptr<RenderedFrame> frame, double pass_ms,
+                                        long long rays, bool converged) {
   FrameInfo& info = frame->info;
   info.generation = worker_generation;
   info.pass = pass++;

@@ -27,6 +27,13 @@ Recombination::Recombination(const RenderContext& ctx)
       for (int c = 0; c < 3; ++c) m_flat.push_back(ks_ls[c]);
     }
   }
+  m_materials = scene.materials.size();
+  m_columns.resize(m_flat.size());
+  for (std::size_t m = 0; m < m_materials; ++m) {
+    for (std::size_t j = 0; j < m_stride; ++j) {
+      m_columns[j * m_materials + m] = m_flat[m * m_stride + j];
+    }
+  }
 }
 
 }  // namespace gloss

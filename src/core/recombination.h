@@ -17,6 +17,13 @@ class Recombination {
   explicit Recombination(const RenderContext& ctx);
 
   std::size_t lights() const { return m_lights; }
+  std::size_t materials() const { return m_materials; }
+  const glm::vec3& background() const { return m_background; }
+
+  // Constant j of every material, by material index: the flat table's column j (0-2 ke, 3-5
+  // ka (A + sum La), then per light kd Ld and ks Ls), for code that fetches it for 16 lanes at
+  // once (total_lanes.h).
+  const float* column(std::size_t j) const { return m_columns.data() + j * m_materials; }
 
   // One material's four terms (emissive, ambient, diffuse, specular) in one pixel, from its
   // weight and per-light factor means: light li's at diffuse[li * step], specular[li * step].
@@ -44,6 +51,8 @@ class Recombination {
   std::size_t m_stride = 6;  // floats per material in m_flat
   // Per material: ke, ka (A + sum La), then per light kd Ld, ks Ls; 3 floats each.
   std::vector<float> m_flat;
+  std::size_t m_materials = 0;
+  std::vector<float> m_columns;  // m_flat by column: [j * materials + material]
   glm::vec3 m_background{0.0f};
 };
 

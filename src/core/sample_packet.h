@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <cstring>
 
-#if defined(__AVX512F__)
+#if defined(__SSE2__)
 #include <immintrin.h>
 #endif
 
@@ -115,7 +115,7 @@ void stream_lanes(const SamplePacket& packet, int width, const T* lanes, T* imag
 
 // Orders this thread's streaming stores before whatever it does next (the end of a task).
 inline void finish_streaming_stores() {
-#if defined(__AVX512F__)
+#if defined(__SSE2__)
   _mm_sfence();
 #endif
 }

@@ -1,0 +1,65 @@
+#include "total_lanes.h"
+
+#include "lane_gather.h"
+
+namespace gloss {
+
+namespace {
+// Material indices to fetch the constants with: missed lanes read material 0 (if any) and
+// discard it.
+void material_index(const std::int32_t* material, std::int32_t (&index)[kTotalLanes]) {
+  for (int i = 0; i < kTotalLanes; ++i) index[i] = material[i] < 0 ? 0 : material[i];
+}
+}  // namespace
+
+TotalLanes::TotalLanes(const Recombination& recombination) : m_recombination(recombination) {
+  for (int c = 0; c < 3; ++c) {
+    for (int i = 0; i < kTotalLanes; ++i) m_diffuse[c][i] = m_specular[c][i] = 0.0f;
+  }
+}
+
+// `omp simd` (-fopenmp-simd): GCC otherwise unrolls these 16-lane loops and leaves them scalar.
+void TotalLanes::add_light(const std::int32_t* material, std::size_t li, const float* diffuse,
+                           const float* specular) {
+  alignas(64) std::int32_t index[kTotalLanes];
+  material_index(material, index);
+  const LaneGather by_material(index);
+  const std::size_t materials = m_recombination.materials();
+  alignas(64) float k[kTotalLanes];
+  for (int c = 0; c < 3; ++c) {
+    by_material(m_recombination.column(6 + 6 * li + static_cast<std::size_t>(c)), materials, k);
+#pragma omp simd
+    for (int i = 0; i < kTotalLanes; ++i) m_diffuse[c][i] += k[i] * diffuse[i];
+    by_material(m_recombination.column(9 + 6 * li + static_cast<std::size_t>(c)), materials, k);
+#pragma omp simd
+    for (int i = 0; i < kTotalLanes; ++i) m_specular[c][i] += k[i] * specular[i];
+  }
+}
+
+void TotalLanes::store(const std::int32_t* material, float (&rgb)[3 * kTotalLanes]) const {
+  alignas(64) std::int32_t index[kTotalLanes];
+  material_index(material, index);
+  const LaneGather by_material(index);
+  const std::size_t materials = m_recombination.materials();
+  alignas(64) float emission[kTotalLanes], ambient[kTotalLanes], total[3][kTotalLanes];
+  for (int c = 0; c < 3; ++c) {
+    by_material(m_recombination.column(static_cast<std::size_t>(c)), materials, emission);
+    by_material(m_recombination.column(3 + static_cast<std::size_t>(c)), materials, ambient);
+    const float background = m_recombination.background()[c];
+#pragma omp simd
+    for (int i = 0; i < kTotalLanes; ++i) {
+      // Recombination: ((((weight ke + weight ka) + diffuse) + specular) + missed background),
+      // all terms zero on a missed lane.
+      const bool hit = material[i] >= 0;
+      const float missed = hit ? 0.0f : 1.0f;
+      const float sum = ((hit ? emission[i] : 0.0f) + (hit ? ambient[i] : 0.0f)) +
+                        (hit ? m_diffuse[c][i] : 0.0f) + (hit ? m_specular[c][i] : 0.0f);
+      total[c][i] = sum + missed * background;
+    }
+  }
+  for (int i = 0; i < kTotalLanes; ++i) {
+    for (int c = 0; c < 3; ++c) rgb[3 * i + c] = total[c][i];
+  }
+}
+
+}  // namespace gloss
