@@ -58,25 +58,31 @@ std::vector<std::int32_t> object_materials(const Scene& scene) {
 
 void single_sample_coverage(const std::vector<std::int32_t>& object_material,
                             const std::int32_t* object, int n, std::int32_t* material) {
-  alignas(64) std::int32_t index[kMaxPowerLanes];
-  for (int i = 0; i < n; ++i) index[i] = std::max(object[i], 0);
-  if (n == kMaxPowerLanes) {
+  if (n == kMaxPowerLanes) {  // fixed-count loops: straight vector code
+    alignas(64) std::int32_t index[kMaxPowerLanes];
+    for (int i = 0; i < kMaxPowerLanes; ++i) index[i] = std::max(object[i], 0);
     gather16(object_material.data(), object_material.size(), index, material);
-  } else {
-    for (int i = 0; i < n; ++i) material[i] = object_material[static_cast<std::size_t>(index[i])];
+    for (int i = 0; i < kMaxPowerLanes; ++i) material[i] = object[i] < 0 ? -1 : material[i];
+    return;
   }
-  for (int i = 0; i < n; ++i) material[i] = object[i] < 0 ? -1 : material[i];
+  for (int i = 0; i < n; ++i) {
+    material[i] =
+        object[i] < 0 ? -1 : object_material[static_cast<std::size_t>(std::max(object[i], 0))];
+  }
 }
 
 void single_sample_light(const MaterialExponents& exponents, PowMode mode,
                          const std::int32_t* material, const float* diffuse_weight,
                          const float* spec_weight, const float* cosine, int n, float* diffuse,
                          float* specular) {
-  alignas(64) float power[kMaxPowerLanes];
-  specular_power_lanes(exponents, material, cosine, power, n, mode);
-  for (int i = 0; i < n; ++i) {
-    diffuse[i] = material[i] < 0 ? 0.0f : diffuse_weight[i];
-    specular[i] = material[i] < 0 ? 0.0f : spec_weight[i] * power[i];
+  specular_lanes(exponents, material, cosine, spec_weight, specular, n, mode);
+  auto lanes = [&](int count) {
+    for (int i = 0; i < count; ++i) diffuse[i] = material[i] < 0 ? 0.0f : diffuse_weight[i];
+  };
+  if (n == kMaxPowerLanes) {
+    lanes(kMaxPowerLanes);  // a constant count: straight vector code
+  } else {
+    lanes(n);
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include "fast_power.h"
 #include "lane_gather.h"
+#include "lane_mask.h"
 
 // glibc's libmvec has vector variants of powf (_ZGV{b,c,d,e}N*vv_powf, glibc >= 2.22), but
 // <math.h> declares them only under -ffast-math, which the renderer must not use (its NaN and
@@ -31,22 +32,17 @@ MaterialExponents material_exponents(const Scene& scene) {
   return e;
 }
 
-void specular_power_lanes(const MaterialExponents& exponents, const std::int32_t* material,
-                          const float* c, float* out, int n, PowMode mode) {
-  // Always 16 lanes (the spare ones padded as missed): every call runs the same code, so a run
-  // clipped at the image's edge gets the same bits as a full one (the vector and scalar powf
-  // of a loop's remainder may differ by an ulp).
-  constexpr int kLanes = kMaxPowerLanes;
-  alignas(64) float cos[kLanes], base[kLanes], alpha[kLanes], floor[kLanes], result[kLanes];
-  alignas(64) std::int32_t mat[kLanes], index[kLanes];
-  for (int i = 0; i < kLanes; ++i) {
-    cos[i] = 0.0f;
-    mat[i] = -1;
-  }
-  for (int i = 0; i < n; ++i) {
-    cos[i] = c[i];
-    mat[i] = material[i];
-  }
+namespace {
+constexpr int kLanes = kMaxPowerLanes;
+
+// specular_power_lanes on exactly 16 lanes: loops of a fixed count, which GCC turns into
+// straight vector code (with a run-time count it adds copies, checks and remainder loops).
+// With weight, out = weight * c^alpha (0 on missed lanes) in the same loop: the powers then
+// need no trip through memory before their only use.
+void power16(const MaterialExponents& exponents, const std::int32_t* mat, const float* cos,
+             const float* weight, float* out, PowMode mode) {
+  alignas(64) float base[kLanes], alpha[kLanes], floor[kLanes];
+  alignas(64) std::int32_t index[kLanes];
   for (int i = 0; i < kLanes; ++i) index[i] = std::max(mat[i], 0);
   const LaneGather by_material(index);  // a handful of materials: a permute, no gather
   by_material(exponents.alpha.data(), exponents.alpha.size(), alpha);
@@ -56,29 +52,64 @@ void specular_power_lanes(const MaterialExponents& exponents, const std::int32_t
   }
   if (mode == PowMode::fast) {
     for (int i = 0; i < kLanes; ++i) {
-      result[i] = cos[i] >= floor[i] ? fast_specular_power(cos[i], alpha[i]) : 0.0f;
+      base[i] = cos[i] >= floor[i] ? fast_specular_power(cos[i], alpha[i]) : 0.0f;
     }
   } else {
     // Lanes whose result is fixed (0 or 1) call powf(1, 1): the vector powf then stays on its
     // fast path. The arguments go through memory so GCC cannot fold the selects into the call
     // (it otherwise passes the raw lanes, result selects being enough for correctness but not
     // speed).
-    int needed = 0;  // lanes that need powf at all: c^1 = c exactly (matte walls have alpha 1)
     for (int i = 0; i < kLanes; ++i) {
       const bool fixed = !(cos[i] >= floor[i]) || cos[i] >= 1.0f || alpha[i] == 0.0f;
       base[i] = fixed ? 1.0f : cos[i];
       alpha[i] = fixed ? 1.0f : alpha[i];
-      needed |= alpha[i] != 1.0f ? 1 : 0;  // an OR: no horizontal sum
     }
-    if (needed > 0) {
+    if (any_lane_differs(alpha, 1.0f)) {  // else c^1 = c exactly (matte walls have alpha 1)
 #pragma omp simd
       for (int i = 0; i < kLanes; ++i) base[i] = powf(base[i], alpha[i]);
     }
     for (int i = 0; i < kLanes; ++i) {
-      result[i] = cos[i] >= floor[i] && cos[i] > 0.0f ? base[i] : 0.0f;
+      base[i] = cos[i] >= floor[i] && cos[i] > 0.0f ? base[i] : 0.0f;
     }
   }
+  if (weight == nullptr) {
+    for (int i = 0; i < kLanes; ++i) out[i] = base[i];
+  } else {
+    for (int i = 0; i < kLanes; ++i) out[i] = mat[i] < 0 ? 0.0f : weight[i] * base[i];
+  }
+}
+}  // namespace
+
+namespace {
+// power16 on n <= 16 lanes. Always 16 lanes (fewer are padded as missed): every call runs the
+// same code, so a run clipped at the image's edge gets the same bits as a full one (the vector
+// and scalar powf of a loop's remainder may differ by an ulp).
+void power_lanes(const MaterialExponents& exponents, const std::int32_t* material, const float* c,
+                 const float* weight, float* out, int n, PowMode mode) {
+  if (n == kLanes) {
+    power16(exponents, material, c, weight, out, mode);
+    return;
+  }
+  alignas(64) float cos[kLanes], w[kLanes], result[kLanes];
+  alignas(64) std::int32_t mat[kLanes];
+  for (int i = 0; i < kLanes; ++i) {
+    cos[i] = i < n ? c[i] : 0.0f;
+    mat[i] = i < n ? material[i] : -1;
+    w[i] = i < n && weight != nullptr ? weight[i] : 0.0f;
+  }
+  power16(exponents, mat, cos, weight != nullptr ? w : nullptr, result, mode);
   for (int i = 0; i < n; ++i) out[i] = result[i];
+}
+}  // namespace
+
+void specular_power_lanes(const MaterialExponents& exponents, const std::int32_t* material,
+                          const float* c, float* out, int n, PowMode mode) {
+  power_lanes(exponents, material, c, nullptr, out, n, mode);
+}
+
+void specular_lanes(const MaterialExponents& exponents, const std::int32_t* material,
+                    const float* c, const float* weight, float* out, int n, PowMode mode) {
+  power_lanes(exponents, material, c, weight, out, n, mode);
 }
 
 }  // namespace gloss

@@ -28,4 +28,9 @@ constexpr int kMaxPowerLanes = 16;
 void specular_power_lanes(const MaterialExponents& exponents, const std::int32_t* material,
                           const float* c, float* out, int n, PowMode mode);
 
+// out[i] = weight[i] * c[i]^alpha(material[i]), 0 where material < 0: the same powers, in
+// the loop that makes them.
+void specular_lanes(const MaterialExponents& exponents, const std::int32_t* material,
+                    const float* c, const float* weight, float* out, int n, PowMode mode);
+
 }  // namespace gloss

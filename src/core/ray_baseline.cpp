@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "camera.h"
+#include "lane_mask.h"
 #include "parallel_loops.h"
 #include "ray_packet.h"
 
@@ -37,8 +38,8 @@ long long trace_rays_raw(const Scene& scene, const EmbreeScene& embree, int widt
           const glm::vec3 d = primary_direction(cam, x + 0.5f, y + 0.5f, width, height);
           set_packet_ray(rh.ray, i, cam.eye, d);
           rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
-          rays += valid[i] ? 1 : 0;
         }
+        rays += count_set_lanes(valid);
         rtcIntersect16(valid, embree.handle(), &context, &rh);
         for (const glm::vec3& light : lights) {
           RTCRay16 sr;
@@ -52,8 +53,8 @@ long long trace_rays_raw(const Scene& scene, const EmbreeScene& embree, int widt
             const glm::vec3 o = svalid[i] ? p + 1e-4f * glm::normalize(ng) : glm::vec3(0.0f);
             const glm::vec3 to = light - o;
             set_packet_ray(sr, i, o, to, kShadowRayEnd);
-            rays += svalid[i] ? 1 : 0;
           }
+          rays += count_set_lanes(svalid);
           rtcOccluded16(svalid, embree.handle(), &context, &sr);
         }
       }

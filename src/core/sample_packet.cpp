@@ -9,6 +9,7 @@
 
 #include "camera.h"
 #include "lane_gather.h"
+#include "lane_mask.h"
 #include "ray_packet.h"
 #include "shading.h"
 #include "surface.h"
@@ -98,7 +99,7 @@ long long trace_primary(SamplePacket& packet, const SampleCache& cache, const Re
   }
   RTCIntersectContext context = coherent_context();
   rtcIntersect16(packet.valid, ctx.embree->handle(), &context, &rh);
-  long long rays = 0;
+  const long long rays = count_set_lanes(packet.valid);
   for (int i = 0; i < kPacketLanes; ++i) {
     const bool hit = packet.valid[i] != 0 && rh.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
     packet.object[i] = hit ? static_cast<std::int32_t>(rh.hit.geomID[i]) : -1;
@@ -106,7 +107,6 @@ long long trace_primary(SamplePacket& packet, const SampleCache& cache, const Re
     packet.t[i] = hit ? rh.ray.tfar[i] : 0.0f;
     packet.u[i] = hit ? rh.hit.u[i] : 0.0f;
     packet.v[i] = hit ? rh.hit.v[i] : 0.0f;
-    rays += packet.valid[i] != 0 ? 1 : 0;
   }
   if (ctx.plan.spheres) {
     for (int i = 0; i < kPacketLanes; ++i) {
@@ -173,28 +173,31 @@ LaneKinds gather_geometry(const SamplePacket& packet, const SurfaceTable& table,
   }
   _mm512_store_si512(record, _mm512_maskz_add_epi32(hit, base, prim));
   _mm512_store_si512(out.kind, kind);
+  // Missed lanes hold a sphere record (0) but never need sphere maths.
+  const LaneKinds kinds = {_mm512_mask_cmpeq_epi32_mask(hit, kind, _mm512_set1_epi32(kSphere)) != 0,
+                           _mm512_cmpeq_epi32_mask(kind, _mm512_set1_epi32(kSmoothTriangle)) != 0};
 #else
   for (int i = 0; i < kPacketLanes; ++i) {
     record[i] = static_cast<std::int32_t>(table.record(packet.object[i], packet.prim[i]));
     out.kind[i] = packet.object[i] < 0 ? kSphere  // record 0
                                        : table.kind[static_cast<std::size_t>(packet.object[i])];
   }
+  LaneKinds kinds = {false, false};
+  for (int i = 0; i < kPacketLanes; ++i) {
+    kinds.spheres |= out.kind[i] == kSphere && packet.object[i] >= 0;
+    kinds.smooth |= out.kind[i] == kSmoothTriangle;
+  }
 #endif
   const LaneGather by_record(record);
   const std::size_t records = table.a[0].size();
   for (int c = 0; c < 3; ++c)
     by_record(table.a[static_cast<std::size_t>(c)].data(), records, out.a[c]);
-  int spheres = 0, smooth = 0;  // missed lanes count as spheres (record 0)
-  for (int i = 0; i < kPacketLanes; ++i) {
-    spheres += out.kind[i] == kSphere && packet.object[i] >= 0 ? 1 : 0;
-    smooth += out.kind[i] == kSmoothTriangle ? 1 : 0;
-  }
-  if (smooth > 0) {  // else no lane reads the vertex normals (left unset)
+  if (kinds.smooth) {  // else no lane reads the vertex normals (left unset)
     for (int c = 0; c < 9; ++c) {
       by_record(table.normals[static_cast<std::size_t>(c)].data(), records, out.n[c]);
     }
   }
-  return {spheres > 0, smooth > 0};
+  return kinds;
 }
 
 glm::vec3 lane_vec(const float (&a)[9][kPacketLanes], int k, int i) {
@@ -259,8 +262,8 @@ long long packet_light(const SamplePacket& packet, const SurfaceLanes& surfaces,
     for (int i = 0; i < kPacketLanes; ++i) {
       const glm::vec3 org = shadow_ray_origin(surfaces.get(i), packet.t[i]);
       set_packet_ray(ray, i, org, light.position - org, kShadowRayEnd);
-      rays += lit[i] != 0 ? 1 : 0;
     }
+    rays = count_set_lanes(lit);
     RTCIntersectContext context = coherent_context();
     rtcOccluded16(lit, ctx.embree->handle(), &context, &ray);
     for (int i = 0; i < kPacketLanes; ++i) {
