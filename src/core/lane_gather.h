@@ -11,6 +11,7 @@
 // on which one ran.
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <type_traits>
 
 #if defined(__AVX512F__)
@@ -45,7 +46,12 @@ class LaneGather {
     static_assert(sizeof(T) == 4, "32-bit lanes");
 #if defined(__AVX512F__)
     __m512i lanes;
-    if (size <= 16) {  // the whole array in one register (masked: reads nothing past its end)
+    if (m_span == 0 && static_cast<std::size_t>(m_low) < size) {  // one entry: a broadcast
+      std::int32_t bits;
+      std::memcpy(&bits, src + m_low, sizeof bits);
+      lanes = _mm512_set1_epi32(bits);
+    } else if (size <=
+               16) {  // the whole array in one register (masked: reads nothing past its end)
       const __mmask16 present = static_cast<__mmask16>((1u << size) - 1u);
       lanes =
           _mm512_maskz_permutexvar_epi32(0xffff, m_index, _mm512_maskz_loadu_epi32(present, src));

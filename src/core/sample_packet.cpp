@@ -154,24 +154,27 @@ LaneKinds gather_geometry(const SamplePacket& packet, const SurfaceTable& table,
   const __m512i prim = _mm512_load_si512(packet.prim);
   const std::int32_t first = packet.object[0];
   const __mmask16 hit = _mm512_cmpge_epi32_mask(object, _mm512_setzero_si512());
-  __m512i base, kind;
+  __m512i base, stride, kind;
   if (first >= 0 && _mm512_cmpeq_epi32_mask(object, _mm512_set1_epi32(first)) == 0xffff) {
-    // One object (most packets): its base and kind.
-    base =
-        _mm512_set1_epi32(static_cast<std::int32_t>(table.base[static_cast<std::size_t>(first)]));
-    kind = _mm512_set1_epi32(table.kind[static_cast<std::size_t>(first)]);
+    // One object (most packets): its base, stride and kind.
+    const std::size_t k = static_cast<std::size_t>(first);
+    base = _mm512_set1_epi32(static_cast<std::int32_t>(table.base[k]));
+    stride = _mm512_set1_epi32(static_cast<std::int32_t>(table.stride[k]));
+    kind = _mm512_set1_epi32(table.kind[k]);
   } else {
     alignas(64) std::int32_t index[kPacketLanes], kinds[kPacketLanes];
-    alignas(64) std::uint32_t bases[kPacketLanes];
+    alignas(64) std::uint32_t bases[kPacketLanes], strides[kPacketLanes];
     _mm512_store_si512(index, _mm512_maskz_mov_epi32(hit, object));  // missed lanes: 0
     const LaneGather by_object(index);
     by_object(table.base.data(), table.base.size(), bases);
+    by_object(table.stride.data(), table.stride.size(), strides);
     by_object(table.kind.data(), table.kind.size(), kinds);
     base = _mm512_maskz_mov_epi32(hit, _mm512_load_si512(bases));
+    stride = _mm512_load_si512(strides);
     // Missed lanes: record 0, a sphere.
     kind = _mm512_mask_mov_epi32(_mm512_set1_epi32(kSphere), hit, _mm512_load_si512(kinds));
   }
-  _mm512_store_si512(record, _mm512_maskz_add_epi32(hit, base, prim));
+  _mm512_store_si512(record, _mm512_maskz_add_epi32(hit, base, _mm512_mullo_epi32(prim, stride)));
   _mm512_store_si512(out.kind, kind);
   // Missed lanes hold a sphere record (0) but never need sphere maths.
   const LaneKinds kinds = {_mm512_mask_cmpeq_epi32_mask(hit, kind, _mm512_set1_epi32(kSphere)) != 0,
