@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <functional>
 #include <mutex>
-#include <tuple>
 #include <utility>
 
 #include <tbb/global_control.h>
@@ -43,13 +42,19 @@ double time_median(int runs, const std::function<void()>& f) {
   return median(t);
 }
 
-// Medians of f and g timed alternately (f, g, f, g ... after one warm-up of each), so that both
-// see the same state of a noisy machine: the report's ratios are taken within such pairs.
-std::pair<double, double> time_medians(int runs, const std::function<void()>& f,
-                                       const std::function<void()>& g) {
+// f timed against a baseline g: medians of each, and the median of the ratios f / g within
+// pairs. The runs alternate (f, g, f, g ... after one warm-up of each), so the two of a pair
+// see the same state of a noisy machine (this one's speed drifts by 20% over minutes); the
+// median of the paired ratios is the report's ratio, less disturbed by that drift than the
+// ratio of the two medians.
+struct Paired {
+  double f_ms, g_ms, ratio;
+};
+
+Paired time_paired(int runs, const std::function<void()>& f, const std::function<void()>& g) {
   f();
   g();
-  std::vector<double> tf, tg;
+  std::vector<double> tf, tg, ratios;
   for (int i = 0; i < runs; ++i) {
     Clock::time_point start = Clock::now();
     f();
@@ -57,8 +62,9 @@ std::pair<double, double> time_medians(int runs, const std::function<void()>& f,
     start = Clock::now();
     g();
     tg.push_back(ms_since(start));
+    ratios.push_back(tf.back() / tg.back());
   }
-  return {median(tf), median(tg)};
+  return {median(tf), median(tg), median(ratios)};
 }
 
 // A full 1-spp render through the engine's stages, BVH already built: trace, light factors,
@@ -139,12 +145,15 @@ BenchReport run_benchmark(const Scene& input, const BenchOptions& options) {
   PixelFactors factors;
   TermImages out;
 
-  std::tie(report.retrace_ms, report.embree_raw_ms) = time_medians(
-      options.runs, [&] { full_render(scene, embree, cache, factors, out, false); },
+  const Paired retrace = time_paired(
+      std::max(15, 2 * options.runs),  // some 20 ms a pair: more pairs, a steadier ratio
+      [&] { full_render(scene, embree, cache, factors, out, false); },
       [&] {
         report.rays_per_frame = trace_rays_raw(scene, embree, options.width, options.height);
       });
-  report.retrace_ratio = report.retrace_ms / report.embree_raw_ms;
+  report.retrace_ms = retrace.f_ms;
+  report.embree_raw_ms = retrace.g_ms;
+  report.retrace_ratio = retrace.ratio;
   report.retrace_terms_ms =
       time_median(options.runs, [&] { full_render(scene, embree, cache, factors, out, true); });
   full_render(scene, embree, cache, factors, out, false);  // the 1-spp caches, for the edits
@@ -158,10 +167,12 @@ BenchReport run_benchmark(const Scene& input, const BenchOptions& options) {
   TermImages reshaded;
   StreamingPass stream(factors.bytes(), pixels * sizeof(glm::vec3));
   const int short_runs = std::max(15, 3 * options.runs);  // a few ms each: more samples
-  std::tie(report.reshade_ms, report.bandwidth_floor_ms) = time_medians(
+  const Paired reshade = time_paired(
       short_runs, [&] { combine_terms(factors, edited_ctx, reshaded, false); },
       [&] { stream.run(); });
-  report.reshade_ratio = report.reshade_ms / report.bandwidth_floor_ms;
+  report.reshade_ms = reshade.f_ms;
+  report.bandwidth_floor_ms = reshade.g_ms;
+  report.reshade_ratio = reshade.ratio;
   report.reshade_terms_ms =
       time_median(short_runs, [&] { combine_terms(factors, edited_ctx, reshaded, true); });
 

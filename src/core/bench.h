@@ -1,6 +1,7 @@
 #pragma once
 // The engine benchmark behind `gloss-cli bench`: every figure is the median of several runs and
-// every ratio is taken against a baseline measured in the same process (ray_baseline.h).
+// every ratio is taken against a baseline measured in the same process (ray_baseline.h), as the
+// median of the ratios within alternating pairs of runs.
 #include <string>
 #include <vector>
 
