@@ -33,4 +33,18 @@ inline bool any_lane_differs(const float* lanes, float value) {
 #endif
 }
 
+// lanes[0] when all 16 lanes hold that value and it is not negative, else -1 (one material or
+// object for a whole packet, the common case, which callers then treat as a scalar).
+inline std::int32_t common_lane_value(const std::int32_t* lanes) {
+  const std::int32_t first = lanes[0];
+#if defined(__AVX512F__)
+  const bool all =
+      _mm512_cmpeq_epi32_mask(_mm512_loadu_si512(lanes), _mm512_set1_epi32(first)) == 0xffff;
+#else
+  bool all = true;
+  for (int i = 1; i < 16; ++i) all &= lanes[i] == first;
+#endif
+  return all && first >= 0 ? first : -1;
+}
+
 }  // namespace gloss

@@ -1,6 +1,7 @@
 #include "total_lanes.h"
 
 #include "lane_gather.h"
+#include "lane_mask.h"
 
 namespace gloss {
 
@@ -9,6 +10,13 @@ namespace {
 // discard it.
 void material_index(const std::int32_t* material, std::int32_t (&index)[kTotalLanes]) {
   for (int i = 0; i < kTotalLanes; ++i) index[i] = material[i] < 0 ? 0 : material[i];
+}
+
+// Channels to pixels: rgb[3 i + c] = total[c][i].
+void interleave(const float (&total)[3][kTotalLanes], float (&rgb)[3 * kTotalLanes]) {
+  for (int i = 0; i < kTotalLanes; ++i) {
+    for (int c = 0; c < 3; ++c) rgb[3 * i + c] = total[c][i];
+  }
 }
 }  // namespace
 
@@ -21,6 +29,19 @@ TotalLanes::TotalLanes(const Recombination& recombination) : m_recombination(rec
 // `omp simd` (-fopenmp-simd): GCC otherwise unrolls these 16-lane loops and leaves them scalar.
 void TotalLanes::add_light(const std::int32_t* material, std::size_t li, const float* diffuse,
                            const float* specular) {
+  const std::int32_t one = common_lane_value(material);
+  if (one >= 0) {  // one material: its constants as scalars
+    const std::size_t m = static_cast<std::size_t>(one);
+    for (std::size_t c = 0; c < 3; ++c) {
+      const float kd = m_recombination.column(6 + 6 * li + c)[m];
+      const float ks = m_recombination.column(9 + 6 * li + c)[m];
+#pragma omp simd
+      for (int i = 0; i < kTotalLanes; ++i) m_diffuse[c][i] += kd * diffuse[i];
+#pragma omp simd
+      for (int i = 0; i < kTotalLanes; ++i) m_specular[c][i] += ks * specular[i];
+    }
+    return;
+  }
   alignas(64) std::int32_t index[kTotalLanes];
   material_index(material, index);
   const LaneGather by_material(index);
@@ -37,11 +58,28 @@ void TotalLanes::add_light(const std::int32_t* material, std::size_t li, const f
 }
 
 void TotalLanes::store(const std::int32_t* material, float (&rgb)[3 * kTotalLanes]) const {
+  alignas(64) float total[3][kTotalLanes];
+  const std::int32_t one = common_lane_value(material);
+  if (one >= 0) {  // one material, every lane a hit: its constants as scalars
+    const std::size_t m = static_cast<std::size_t>(one);
+    for (std::size_t c = 0; c < 3; ++c) {
+      const float emission = m_recombination.column(c)[m];
+      const float ambient = m_recombination.column(3 + c)[m];
+      const float missed_background = 0.0f * m_recombination.background()[c];
+#pragma omp simd
+      for (int i = 0; i < kTotalLanes; ++i) {
+        total[c][i] =
+            (((emission + ambient) + m_diffuse[c][i]) + m_specular[c][i]) + missed_background;
+      }
+    }
+    interleave(total, rgb);
+    return;
+  }
   alignas(64) std::int32_t index[kTotalLanes];
   material_index(material, index);
   const LaneGather by_material(index);
   const std::size_t materials = m_recombination.materials();
-  alignas(64) float emission[kTotalLanes], ambient[kTotalLanes], total[3][kTotalLanes];
+  alignas(64) float emission[kTotalLanes], ambient[kTotalLanes];
   for (int c = 0; c < 3; ++c) {
     by_material(m_recombination.column(static_cast<std::size_t>(c)), materials, emission);
     by_material(m_recombination.column(3 + static_cast<std::size_t>(c)), materials, ambient);
@@ -57,9 +95,7 @@ void TotalLanes::store(const std::int32_t* material, float (&rgb)[3 * kTotalLane
       total[c][i] = sum + missed * background;
     }
   }
-  for (int i = 0; i < kTotalLanes; ++i) {
-    for (int c = 0; c < 3; ++c) rgb[3 * i + c] = total[c][i];
-  }
+  interleave(total, rgb);
 }
 
 }  // namespace gloss
