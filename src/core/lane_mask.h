@@ -33,6 +33,17 @@ inline bool any_lane_differs(const float* lanes, float value) {
 #endif
 }
 
+// Whether every lane is negative (every sample of a packet missed: material or object -1).
+inline bool all_lanes_negative(const std::int32_t* lanes) {
+#if defined(__AVX512F__)
+  return _mm512_cmpge_epi32_mask(_mm512_loadu_si512(lanes), _mm512_setzero_si512()) == 0;
+#else
+  bool all = true;
+  for (int i = 0; i < 16; ++i) all &= lanes[i] < 0;
+  return all;
+#endif
+}
+
 // lanes[0] when all 16 lanes hold that value and it is not negative, else -1 (one material or
 // object for a whole packet, the common case, which callers then treat as a scalar).
 inline std::int32_t common_lane_value(const std::int32_t* lanes) {

@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 
 #include "lane_gather.h"
+#include "lane_mask.h"
 #include "parallel_loops.h"
 #include "power_lanes.h"
 
@@ -58,7 +59,11 @@ std::vector<std::int32_t> object_materials(const Scene& scene) {
 
 void single_sample_coverage(const std::vector<std::int32_t>& object_material,
                             const std::int32_t* object, int n, std::int32_t* material) {
-  if (n == kMaxPowerLanes) {  // fixed-count loops: straight vector code
+  if (n == kMaxPowerLanes) {           // fixed-count loops: straight vector code
+    if (all_lanes_negative(object)) {  // all missed (image borders)
+      for (int i = 0; i < kMaxPowerLanes; ++i) material[i] = -1;
+      return;
+    }
     alignas(64) std::int32_t index[kMaxPowerLanes];
     for (int i = 0; i < kMaxPowerLanes; ++i) index[i] = std::max(object[i], 0);
     gather16(object_material.data(), object_material.size(), index, material);
@@ -75,6 +80,10 @@ void single_sample_light(const MaterialExponents& exponents, PowMode mode,
                          const std::int32_t* material, const float* diffuse_weight,
                          const float* spec_weight, const float* cosine, int n, float* diffuse,
                          float* specular) {
+  if (n == kMaxPowerLanes && all_lanes_negative(material)) {  // all missed (image borders)
+    for (int i = 0; i < kMaxPowerLanes; ++i) diffuse[i] = specular[i] = 0.0f;
+    return;
+  }
   specular_lanes(exponents, material, cosine, spec_weight, specular, n, mode);
   auto lanes = [&](int count) {
     for (int i = 0; i < count; ++i) diffuse[i] = material[i] < 0 ? 0.0f : diffuse_weight[i];

@@ -127,12 +127,31 @@ void load_lanes(const SamplePacket& packet, int width, const T* image, T* lanes,
   for (int i = 0; i < packet.x1 - packet.x0; ++i) lanes[i] = row[i];
 }
 
+// Whether some lane's primary ray hit something.
+inline bool any_hit(const SamplePacket& packet) {
+#if defined(__AVX512F__)
+  return _mm512_cmpge_epi32_mask(_mm512_load_si512(packet.object), _mm512_setzero_si512()) != 0;
+#else
+  bool any = false;
+  for (int i = 0; i < kPacketLanes; ++i) any |= packet.object[i] >= 0;
+  return any;
+#endif
+}
+
 // Surfaces of the packet's hits, then per planned light the factors, stored in plane and each
 // also handed to on_light(li, lanes) for a consumer fused into the same pass. Returns the
 // shadow rays traced.
 template <class OnLight>
 long long shade_sample(const SamplePacket& packet, const SampleCache& cache,
                        const RenderContext& ctx, SamplePlane& plane, OnLight&& on_light) {
+  if (!any_hit(packet)) {  // all background (image borders): every light's factors are zero
+    LightLanes none{};
+    for (std::size_t li = 0; li < ctx.plan.lights.size(); ++li) {
+      store_light(packet, cache.width, none, plane.lights[li]);
+      on_light(li, none);
+    }
+    return 0;
+  }
   SurfaceLanes surfaces;
   packet_surfaces(packet, cache, ctx, surfaces);
   long long rays = 0;

@@ -29,6 +29,7 @@ TotalLanes::TotalLanes(const Recombination& recombination) : m_recombination(rec
 // `omp simd` (-fopenmp-simd): GCC otherwise unrolls these 16-lane loops and leaves them scalar.
 void TotalLanes::add_light(const std::int32_t* material, std::size_t li, const float* diffuse,
                            const float* specular) {
+  if (all_lanes_negative(material)) return;  // all missed: store ignores the sums
   const std::int32_t one = common_lane_value(material);
   if (one >= 0) {  // one material: its constants as scalars
     const std::size_t m = static_cast<std::size_t>(one);
@@ -59,6 +60,14 @@ void TotalLanes::add_light(const std::int32_t* material, std::size_t li, const f
 
 void TotalLanes::store(const std::int32_t* material, float (&rgb)[3 * kTotalLanes]) const {
   alignas(64) float total[3][kTotalLanes];
+  if (all_lanes_negative(material)) {  // all missed: 0 + 1 background, exactly the background
+    for (std::size_t c = 0; c < 3; ++c) {
+      const float background = m_recombination.background()[c];
+      for (int i = 0; i < kTotalLanes; ++i) total[c][i] = background;
+    }
+    interleave(total, rgb);
+    return;
+  }
   const std::int32_t one = common_lane_value(material);
   if (one >= 0) {  // one material, every lane a hit: its constants as scalars
     const std::size_t m = static_cast<std::size_t>(one);
