@@ -78,9 +78,7 @@ void power16(const MaterialExponents& exponents, const std::int32_t* mat, const 
     for (int i = 0; i < kLanes; ++i) out[i] = mat[i] < 0 ? 0.0f : weight[i] * base[i];
   }
 }
-}  // namespace
 
-namespace {
 // power16 on n <= 16 lanes. Always 16 lanes (fewer are padded as missed): every call runs the
 // same code, so a run clipped at the image's edge gets the same bits as a full one (the vector
 // and scalar powf of a loop's remainder may differ by an ulp).
