@@ -11,8 +11,8 @@ namespace gloss {
 
 struct BenchOptions {
   int width = 1280, height = 720;  // pixels
-  int runs = 7;                    // repetitions per figure; the median is reported
-  int converge_spp = 16;           // target of converge_16spp_ms
+  int runs = 7;           // repetitions per figure, the median reported; at least 15 for the ratios
+  int converge_spp = 16;  // target of converge_16spp_ms
   std::vector<int> tessellation_levels{2, 4, 8, 16, 32};  // for scenes with a teapot
 };
 

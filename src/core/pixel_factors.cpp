@@ -71,8 +71,7 @@ void single_sample_coverage(const std::vector<std::int32_t>& object_material,
     return;
   }
   for (int i = 0; i < n; ++i) {
-    material[i] =
-        object[i] < 0 ? -1 : object_material[static_cast<std::size_t>(std::max(object[i], 0))];
+    material[i] = object[i] < 0 ? -1 : object_material[static_cast<std::size_t>(object[i])];
   }
 }
 

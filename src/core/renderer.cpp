@@ -46,17 +46,13 @@ TermImages render(const Scene& scene, const RenderOptions& options) {
   TermImages band;
   for (int row0 = 0; row0 < h; row0 += band_rows) {
     cache = make_sample_cache(scene, w, h, spp, row0, std::min(band_rows, h - row0));
-    if (spp == 1 && !options.terms) {
-      trace_single_sample(cache, ctx, factors, &band.total);  // the same bits, one pass
+    if (spp == 1) {  // the same bits, one pass (with the total, unless terms are wanted)
+      trace_single_sample(cache, ctx, factors, options.terms ? nullptr : &band.total);
     } else {
-      if (spp == 1) {
-        trace_single_sample(cache, ctx, factors);
-      } else {
-        add_samples(cache, ctx, spp);
-        build_pixel_factors(cache, ctx, factors);
-      }
-      combine_terms(factors, ctx, band, options.terms);
+      add_samples(cache, ctx, spp);
+      build_pixel_factors(cache, ctx, factors);
     }
+    if (spp != 1 || options.terms) combine_terms(factors, ctx, band, options.terms);
     copy_rows(band.total, row0, out.total);
     if (options.terms) {
       copy_rows(band.emissive, row0, out.emissive);

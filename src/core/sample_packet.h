@@ -15,6 +15,7 @@
 #include <immintrin.h>
 #endif
 
+#include "lane_mask.h"
 #include "parallel_loops.h"
 #include "render_context.h"
 #include "sample_cache.h"
@@ -129,13 +130,7 @@ void load_lanes(const SamplePacket& packet, int width, const T* image, T* lanes,
 
 // Whether some lane's primary ray hit something.
 inline bool any_hit(const SamplePacket& packet) {
-#if defined(__AVX512F__)
-  return _mm512_cmpge_epi32_mask(_mm512_load_si512(packet.object), _mm512_setzero_si512()) != 0;
-#else
-  bool any = false;
-  for (int i = 0; i < kPacketLanes; ++i) any |= packet.object[i] >= 0;
-  return any;
-#endif
+  return !all_lanes_negative(packet.object);
 }
 
 // Surfaces of the packet's hits, then per planned light the factors, stored in plane and each

@@ -37,6 +37,8 @@ SurfaceTable make_surface_table(const Scene& scene) {
           p2(mesh.positions[tri.z]);
       faces.emplace_back(glm::normalize(glm::cross(p1 - p0, p2 - p0)));
     }
+    // Exact equality (-0 and +0 components count as equal: the wall keeps its first
+    // triangle's signs of zero, which no shading result depends on beyond the sign of a 0).
     const bool one_normal =
         !mesh.smooth() && !faces.empty() &&
         std::all_of(faces.begin(), faces.end(), [&](const glm::vec3& f) { return f == faces[0]; });

@@ -60,9 +60,11 @@ void TotalLanes::add_light(const std::int32_t* material, std::size_t li, const f
 
 void TotalLanes::store(const std::int32_t* material, float (&rgb)[3 * kTotalLanes]) const {
   alignas(64) float total[3][kTotalLanes];
-  if (all_lanes_negative(material)) {  // all missed: 0 + 1 background, exactly the background
+  if (all_lanes_negative(material)) {  // all missed: the terms are 0, the total 0 + background
     for (std::size_t c = 0; c < 3; ++c) {
-      const float background = m_recombination.background()[c];
+      // Added to 0 as the general path does (a -0 or, with denormals off, a denormal background
+      // then comes out as it does there).
+      const float background = 0.0f + m_recombination.background()[c];
       for (int i = 0; i < kTotalLanes; ++i) total[c][i] = background;
     }
     interleave(total, rgb);
