@@ -5,16 +5,16 @@
 #include <random>
 #include <vector>
 
-#include "assets.h"
-#include "embree_scene.h"
-#include "parallel_loops.h"
-#include "pixel_factors.h"
-#include "power_lanes.h"
-#include "render_context.h"
-#include "sample_cache.h"
-#include "scene_loader.h"
-#include "shading.h"
-#include "single_sample_pass.h"
+#include "base/assets.h"
+#include "engine/parallel_loops.h"
+#include "engine/render_context.h"
+#include "engine/shade/pixel_factors.h"
+#include "engine/shade/power_lanes.h"
+#include "engine/trace/embree_scene.h"
+#include "engine/trace/sample_cache.h"
+#include "engine/trace/single_sample_pass.h"
+#include "io/scene_loader.h"
+#include "shading/shading.h"
 
 namespace gloss {
 namespace {
@@ -52,11 +52,11 @@ void BM_PowerLanes(benchmark::State& state) {
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   std::vector<float> c(4096), out(4096);
   for (float& x : c) x = u(rng);
-  const std::int32_t material[kMaxPowerLanes] = {};
+  const std::int32_t material[kLanes] = {};
   const DenormalsOff denormals_off;  // as in the render threads
   for (auto _ : state) {
-    for (std::size_t i = 0; i < c.size(); i += kMaxPowerLanes) {
-      specular_power_lanes(exponents, material, &c[i], &out[i], kMaxPowerLanes, mode);
+    for (std::size_t i = 0; i < c.size(); i += kLanes) {
+      specular_power_lanes(exponents, material, &c[i], &out[i], kLanes, mode);
     }
     benchmark::DoNotOptimize(out.data());
   }

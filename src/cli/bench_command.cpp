@@ -3,11 +3,11 @@
 #include <iostream>
 #include <string>
 
-#include "assets.h"
-#include "atomic_file.h"
-#include "bench.h"
-#include "commands.h"
-#include "scene_loader.h"
+#include "analysis/bench.h"
+#include "base/assets.h"
+#include "base/atomic_file.h"
+#include "cli/commands.h"
+#include "io/scene_loader.h"
 
 namespace gloss {
 
@@ -45,7 +45,5 @@ void add_bench_command(CLI::App& app) {
       ->check(CLI::Range(1, 1000));
   cmd->callback([args] { run_bench(*args); });
 }
-
-[[maybe_unused]] const bool bench_registered = register_command(30, add_bench_command);
 
 }  // namespace gloss

@@ -8,8 +8,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "commands.h"
-#include "error.h"
+#include "base/error.h"
+#include "base/version.h"
+#include "cli/commands.h"
 
 namespace {
 
@@ -36,11 +37,14 @@ std::string parsed_file(const CLI::App& app) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Setup: every registered subcommand (render, presets, and those added by later files).
+  // Setup: the subcommands, in the order --help lists them.
   CLI::App app{"gloss-cli: renders gloss scene files (Phong / Blinn-Phong) without a window"};
-  app.set_version_flag("--version", std::string("gloss-cli ") + gloss::kGlossVersion);
+  app.set_version_flag("--version", std::string("gloss-cli ") + gloss::gloss_version());
   app.require_subcommand(1);
-  for (gloss::AddCommand add : gloss::registered_commands()) add(app);
+  gloss::add_render_command(app);
+  gloss::add_presets_command(app);
+  gloss::add_bench_command(app);
+  gloss::add_tradeoff_command(app);
 
   // Run: the chosen subcommand's callback runs inside parse.
   try {

@@ -4,8 +4,8 @@
 #include <iostream>
 #include <string>
 
-#include "commands.h"
-#include "preset_table.h"
+#include "cli/commands.h"
+#include "io/preset_table.h"
 
 namespace gloss {
 
@@ -51,7 +51,5 @@ void add_presets_command(CLI::App& app) {
       "presets", "List the 24 material presets: ka, kd, ks, shininess_raw and exponent (x128)");
   sub->callback([] { run_presets(); });
 }
-
-[[maybe_unused]] const bool presets_registered = register_command(20, add_presets_command);
 
 }  // namespace gloss

@@ -13,13 +13,14 @@
 
 #include <unistd.h>
 
-#include "commands.h"
-#include "error.h"
-#include "image_io.h"
-#include "reference_renderer.h"
-#include "renderer.h"
-#include "scene_loader.h"
-#include "text_distance.h"
+#include "base/error.h"
+#include "base/text_distance.h"
+#include "base/version.h"
+#include "cli/commands.h"
+#include "engine/renderer.h"
+#include "io/image_io.h"
+#include "io/scene_loader.h"
+#include "reference/reference_renderer.h"
 
 namespace gloss {
 
@@ -108,7 +109,7 @@ std::string settings_summary(const RenderSettings& r, const std::string& precisi
 class OutputWriter {
  public:
   OutputWriter(const Scene& scene, const std::string& precision) : m_srgb(scene.render.srgb) {
-    m_text = {{"Software", std::string("gloss ") + kGlossVersion},
+    m_text = {{"Software", std::string("gloss ") + gloss_version()},
               {"gloss:scene", scene_to_json_text(scene)},
               {"gloss:settings", settings_summary(scene.render, precision)}};
   }
@@ -206,7 +207,5 @@ void add_render_command(CLI::App& app) {
       "float (default: the fast renderer) or double (the reference path, docs/accuracy.md)");
   sub->callback([args] { run_render(*args); });
 }
-
-[[maybe_unused]] const bool render_registered = register_command(10, add_render_command);
 
 }  // namespace gloss

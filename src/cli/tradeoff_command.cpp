@@ -18,12 +18,12 @@
 
 #include <tbb/info.h>
 
-#include "assets.h"
-#include "atomic_file.h"
-#include "commands.h"
-#include "error.h"
-#include "scene_loader.h"
-#include "tradeoff.h"
+#include "analysis/tradeoff.h"
+#include "base/assets.h"
+#include "base/atomic_file.h"
+#include "base/error.h"
+#include "cli/commands.h"
+#include "io/scene_loader.h"
 
 extern char** environ;
 
@@ -218,7 +218,5 @@ void add_tradeoff_command(CLI::App& app) {
   cmd->add_flag("--quick", args->quick, "The editor's quick settings: 256 wide, 3 runs, 64 spp");
   cmd->callback([args] { run_tradeoff_command(*args); });
 }
-
-[[maybe_unused]] const bool tradeoff_registered = register_command(40, add_tradeoff_command);
 
 }  // namespace gloss

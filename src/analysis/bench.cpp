@@ -1,0 +1,312 @@
+#include "analysis/bench.h"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <functional>
+#include <mutex>
+#include <utility>
+
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+#include <nlohmann/json.hpp>
+
+#include "analysis/ray_baseline.h"
+#include "base/timing.h"
+#include "engine/progressive_renderer.h"
+#include "engine/render_context.h"
+#include "engine/shade/pixel_factors.h"
+#include "engine/trace/embree_scene.h"
+#include "engine/trace/sample_cache.h"
+#include "engine/trace/single_sample_pass.h"
+#include "io/scene_loader.h"
+
+namespace gloss {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+
+// Median wall time of f over runs repetitions (after one warm-up run).
+double time_median(int runs, const std::function<void()>& f) {
+  f();
+  std::vector<double> t;
+  for (int i = 0; i < runs; ++i) {
+    const Clock::time_point start = Clock::now();
+    f();
+    t.push_back(ms_since(start));
+  }
+  return median(t);
+}
+
+// f timed against a baseline g: medians of each, and the median of the ratios f / g within
+// pairs. The runs alternate (f, g, f, g ... after one warm-up of each), so the two of a pair
+// see the same state of a noisy machine (this one's speed drifts by 20% over minutes); the
+// median of the paired ratios is the report's ratio, less disturbed by that drift than the
+// ratio of the two medians.
+struct Paired {
+  double f_ms, g_ms, ratio;
+};
+
+Paired time_paired(int runs, const std::function<void()>& f, const std::function<void()>& g) {
+  f();
+  g();
+  std::vector<double> tf, tg, ratios;
+  for (int i = 0; i < runs; ++i) {
+    Clock::time_point start = Clock::now();
+    f();
+    tf.push_back(ms_since(start));
+    start = Clock::now();
+    g();
+    tg.push_back(ms_since(start));
+    ratios.push_back(tf.back() / tg.back());
+  }
+  return {median(tf), median(tg), median(ratios)};
+}
+
+// A full 1-spp render through the engine's stages, BVH already built: trace, light factors,
+// per-pixel factors and the total image in one fused pass, as the engine's first
+// full-resolution pass; with terms, the four term images by recombination after it.
+void full_render(const Scene& scene, const EmbreeScene& embree, SampleCache& cache,
+                 PixelFactors& factors, TermImages& out, bool terms) {
+  const RenderContext ctx = make_render_context(scene, embree);
+  reset_sample_cache(cache, scene, scene.render.width, scene.render.height, 1);
+  if (terms) {
+    trace_single_sample(cache, ctx, factors);
+    combine_terms(factors, ctx, out, true);
+  } else {
+    trace_single_sample(cache, ctx, factors, &out.total);  // the total made in the same pass
+  }
+}
+
+double peak_rss_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+// From a camera change to the first published pass and to convergence, in the engine.
+void measure_engine(const Scene& base, const BenchOptions& options, BenchReport& report) {
+  Scene scene = base;
+  scene.render.spp = options.converge_spp;
+  ProgressiveRenderer engine;
+  std::mutex mutex;
+  std::condition_variable cv;
+  std::uint64_t generation = 0;
+  double first = -1, converged = -1;
+  engine.set_on_publish([&] {
+    const auto frame = engine.latest();
+    std::lock_guard<std::mutex> lock(mutex);
+    if (frame->info.generation != generation) return;
+    if (first < 0) first = frame->info.since_change_ms;
+    if (frame->info.converged) converged = frame->info.since_change_ms;
+    cv.notify_all();
+  });
+  std::vector<double> firsts, converges;
+  for (int run = 0; run <= options.runs; ++run) {
+    scene.camera = orbit_camera(base.camera, run % 2 == 0 ? 2.0f : -2.0f, 0.0f);
+    {
+      std::unique_lock<std::mutex> lock(mutex);
+      ++generation;
+      first = converged = -1;
+    }
+    engine.set_scene(scene);
+    std::unique_lock<std::mutex> lock(mutex);
+    cv.wait(lock, [&] { return converged >= 0; });
+    if (run > 0) {  // run 0 warms up (first Embree build of this scene)
+      firsts.push_back(first);
+      converges.push_back(converged);
+    }
+  }
+  engine.set_on_publish(nullptr);
+  report.first_preview_ms = median(firsts);
+  report.converge_16spp_ms = median(converges);
+}
+
+}  // namespace
+
+BenchReport run_benchmark(const Scene& input, const BenchOptions& options) {
+  BenchReport report;
+  Scene scene = input;
+  scene.render.width = options.width;
+  scene.render.height = options.height;
+  scene.render.spp = 1;
+  report.scene = scene.path;
+  report.width = options.width;
+  report.height = options.height;
+  report.threads = tbb::this_task_arena::max_concurrency();
+  const std::size_t pixels = static_cast<std::size_t>(options.width) * options.height;
+
+  const EmbreeScene embree(scene);
+  SampleCache cache;
+  PixelFactors factors;
+  TermImages out;
+
+  const Paired retrace = time_paired(
+      std::max(15, 2 * options.runs),  // some 20 ms a pair: more pairs, a steadier ratio
+      [&] { full_render(scene, embree, cache, factors, out, false); },
+      [&] {
+        report.rays_per_frame = trace_rays_raw(scene, embree, options.width, options.height);
+      });
+  report.retrace_ms = retrace.f_ms;
+  report.embree_raw_ms = retrace.g_ms;
+  report.retrace_ratio = retrace.ratio;
+  report.retrace_terms_ms =
+      time_median(options.runs, [&] { full_render(scene, embree, cache, factors, out, true); });
+  full_render(scene, embree, cache, factors, out, false);  // the 1-spp caches, for the edits
+  report.cache_bytes_per_pixel = static_cast<double>(factors.bytes()) / pixels;
+  report.sample_cache_bytes_per_sample = static_cast<double>(cache.bytes()) / pixels;
+
+  // Material edit: recombination only, into the frame the viewport shows (total).
+  Scene edited = scene;
+  for (Material& m : edited.materials) m.diffuse *= 0.9f;
+  const RenderContext edited_ctx = make_render_context(edited, embree);
+  TermImages reshaded;
+  StreamingPass stream(factors.bytes(), pixels * sizeof(glm::vec3));
+  const int short_runs = std::max(15, 3 * options.runs);  // a few ms each: more samples
+  const Paired reshade = time_paired(
+      short_runs, [&] { combine_terms(factors, edited_ctx, reshaded, false); },
+      [&] { stream.run(); });
+  report.reshade_ms = reshade.f_ms;
+  report.bandwidth_floor_ms = reshade.g_ms;
+  report.reshade_ratio = reshade.ratio;
+  report.reshade_terms_ms =
+      time_median(short_runs, [&] { combine_terms(factors, edited_ctx, reshaded, true); });
+
+  // Shininess edit: re-sum the per-sample cosines, then recombine; alpha 32 against 1e6.
+  for (float alpha : {32.0f, 1e6f}) {
+    Scene shiny = scene;
+    for (Material& m : shiny.materials) m.shininess = alpha;
+    const RenderContext ctx = make_render_context(shiny, embree);
+    const double t = time_median(options.runs, [&] {
+      build_pixel_factors(cache, ctx, factors);
+      combine_terms(factors, ctx, reshaded, false);
+    });
+    (alpha == 32.0f ? report.exponent_ms_alpha32 : report.exponent_ms_alpha1e6) = t;
+  }
+
+  // Light move: shadow rays and factors from the cached primary hits.
+  Scene moved = scene;
+  if (!moved.lights.empty()) {
+    moved.lights[0].position += glm::vec3(0.05f, 0.0f, 0.0f);
+    const RenderContext ctx = make_render_context(moved, embree);
+    report.light_move_ms = time_median(options.runs, [&] {
+      // The engine's path for a 1-spp image: factors and total in one pass.
+      relight_single_sample(cache, ctx, factors, &reshaded.total);
+    });
+  }
+
+  // One thread, then all threads again right after. Not alternated: full renders timed right
+  // after one-thread arena runs read ~30% slower than the same renders timed on their own.
+  tbb::task_arena single(1);
+  report.single_thread_ms = time_median(options.runs, [&] {
+    single.execute([&] { full_render(scene, embree, cache, factors, out, false); });
+  });
+  const double all_threads_ms =
+      time_median(options.runs, [&] { full_render(scene, embree, cache, factors, out, false); });
+  report.threads_speedup = report.single_thread_ms / all_threads_ms;
+
+  measure_engine(scene, options, report);
+
+  if (has_object_type(scene, ObjectType::teapot)) {
+    for (int level : options.tessellation_levels) {
+      TessellationPoint point;
+      point.level = level;
+      const Clock::time_point start = Clock::now();
+      const Scene tess = with_teapot_tessellation(scene, level);
+      const EmbreeScene tess_embree(tess);
+      point.build_ms = ms_since(start);
+      for (const Object& o : tess.objects) {
+        if (o.type == ObjectType::teapot && o.mesh)
+          point.triangles += static_cast<long long>(o.mesh->triangles.size());
+      }
+      point.render_ms = time_median(std::max(3, options.runs / 2), [&] {
+        full_render(tess, tess_embree, cache, factors, out, false);
+      });
+      report.tessellation.push_back(point);
+    }
+  }
+  report.peak_rss_mb = peak_rss_mb();
+  return report;
+}
+
+std::string format_bench_table(const BenchReport& r) {
+  std::string s;
+  char line[256];
+  auto row = [&](const char* name, double value, const char* unit, const char* note) {
+    std::snprintf(line, sizeof line, "  %-30s %10.3f %-4s %s\n", name, value, unit, note);
+    s += line;
+  };
+  std::snprintf(line, sizeof line, "gloss bench: %s at %dx%d, %d threads (medians)\n",
+                r.scene.c_str(), r.width, r.height, r.threads);
+  s += line;
+  row("retrace_ms", r.retrace_ms, "ms", "full 1-spp render (trace + shade + total image)");
+  row("embree_raw_ms", r.embree_raw_ms, "ms", "same primary + shadow rays, no shading");
+  row("retrace_ratio", r.retrace_ratio, "", "target <= 1.5");
+  row("retrace_terms_ms", r.retrace_terms_ms, "ms", "the same + the 4 term images (term view)");
+  row("rays_per_frame", static_cast<double>(r.rays_per_frame), "", "");
+  row("reshade_ms", r.reshade_ms, "ms", "material edit, total image; target <= 3");
+  row("bandwidth_floor_ms", r.bandwidth_floor_ms, "ms", "streaming the same bytes");
+  row("reshade_ratio", r.reshade_ratio, "", "target <= 2");
+  row("reshade_terms_ms", r.reshade_terms_ms, "ms", "material edit, total + 4 term images");
+  row("exponent_ms_alpha32", r.exponent_ms_alpha32, "ms", "shininess edit to 32");
+  row("exponent_ms_alpha1e6", r.exponent_ms_alpha1e6, "ms", "shininess edit to 1e6");
+  row("light_move_ms", r.light_move_ms, "ms", "shadow rays + re-shade");
+  row("first_preview_ms", r.first_preview_ms, "ms", "camera change to first pass; target <= 10");
+  row("converge_16spp_ms", r.converge_16spp_ms, "ms", "camera change to 16 spp");
+  row("single_thread_ms", r.single_thread_ms, "ms", "full render on 1 thread");
+  row("threads_speedup", r.threads_speedup, "x", "target >= 1.7");
+  row("cache_bytes_per_pixel", r.cache_bytes_per_pixel, "B", "per-pixel factors");
+  row("sample_cache_bytes_per_sample", r.sample_cache_bytes_per_sample, "B", "per-sample cache");
+  row("peak_rss_mb", r.peak_rss_mb, "MB", "");
+  if (!r.tessellation.empty()) {
+    s += "  teapot tessellation: level, triangles, render_ms, build_ms\n";
+    for (const TessellationPoint& p : r.tessellation) {
+      std::snprintf(line, sizeof line, "    %6d %10lld %10.3f %10.3f\n", p.level, p.triangles,
+                    p.render_ms, p.build_ms);
+      s += line;
+    }
+  }
+  return s;
+}
+
+std::string bench_to_json(const BenchReport& r) {
+  nlohmann::json j;
+  j["scene"] = r.scene;
+  j["width"] = r.width;
+  j["height"] = r.height;
+  j["threads"] = r.threads;
+  j["retrace_ms"] = r.retrace_ms;
+  j["embree_raw_ms"] = r.embree_raw_ms;
+  j["retrace_ratio"] = r.retrace_ratio;
+  j["retrace_terms_ms"] = r.retrace_terms_ms;
+  j["rays_per_frame"] = r.rays_per_frame;
+  j["reshade_ms"] = r.reshade_ms;
+  j["bandwidth_floor_ms"] = r.bandwidth_floor_ms;
+  j["reshade_ratio"] = r.reshade_ratio;
+  j["reshade_terms_ms"] = r.reshade_terms_ms;
+  j["exponent_ms_alpha32"] = r.exponent_ms_alpha32;
+  j["exponent_ms_alpha1e6"] = r.exponent_ms_alpha1e6;
+  j["light_move_ms"] = r.light_move_ms;
+  j["first_preview_ms"] = r.first_preview_ms;
+  j["converge_16spp_ms"] = r.converge_16spp_ms;
+  j["single_thread_ms"] = r.single_thread_ms;
+  j["threads_speedup"] = r.threads_speedup;
+  j["cache_bytes_per_pixel"] = r.cache_bytes_per_pixel;
+  j["sample_cache_bytes_per_sample"] = r.sample_cache_bytes_per_sample;
+  j["peak_rss_mb"] = r.peak_rss_mb;
+  nlohmann::json tess = nlohmann::json::array();
+  for (const TessellationPoint& p : r.tessellation) {
+    tess.push_back({{"level", p.level},
+                    {"triangles", p.triangles},
+                    {"render_ms", p.render_ms},
+                    {"build_ms", p.build_ms}});
+  }
+  j["tessellation"] = tess;
+  return j.dump(2) + "\n";
+}
+
+}  // namespace gloss

@@ -1,0 +1,50 @@
+#pragma once
+// The engine benchmark behind `gloss-cli bench`: every figure is the median of several runs and
+// every ratio is taken against a baseline measured in the same process (ray_baseline.h), as the
+// median of the ratios within alternating pairs of runs.
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace gloss {
+
+struct BenchOptions {
+  int width = 1280, height = 720;  // pixels
+  int runs = 7;           // repetitions per figure, the median reported; at least 15 for the ratios
+  int converge_spp = 16;  // target of converge_16spp_ms
+  std::vector<int> tessellation_levels{2, 4, 8, 16, 32};  // for scenes with a teapot
+};
+
+struct TessellationPoint {
+  int level = 0;
+  long long triangles = 0;
+  double render_ms = 0;  // full 1-spp render, BVH already built
+  double build_ms = 0;   // tessellation + Embree BVH build
+};
+
+struct BenchReport {
+  std::string scene;
+  int width = 0, height = 0, threads = 0;
+  double retrace_ms = 0, embree_raw_ms = 0, retrace_ratio = 0;
+  double retrace_terms_ms = 0;  // full render with the four term images too
+  long long rays_per_frame = 0;
+  double reshade_ms = 0, bandwidth_floor_ms = 0, reshade_ratio = 0;
+  double reshade_terms_ms = 0;  // re-shade writing all four term images too
+  double exponent_ms_alpha32 = 0, exponent_ms_alpha1e6 = 0;  // shininess edit re-shade
+  double light_move_ms = 0;  // shadow rays + re-shade, primary hits reused
+  double first_preview_ms = 0, converge_16spp_ms = 0;
+  double single_thread_ms = 0, threads_speedup = 0;
+  double cache_bytes_per_pixel = 0;          // per-pixel factors (what a constant edit reads)
+  double sample_cache_bytes_per_sample = 0;  // per-sample cache (exponent and light edits)
+  double peak_rss_mb = 0;
+  std::vector<TessellationPoint> tessellation;
+};
+
+BenchReport run_benchmark(const Scene& scene, const BenchOptions& options);
+
+// The readable table and the JSON object (keys as in the issue: retrace_ms, ...).
+std::string format_bench_table(const BenchReport& report);
+std::string bench_to_json(const BenchReport& report);
+
+}  // namespace gloss

@@ -1,0 +1,366 @@
+#include "analysis/tradeoff.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <stdexcept>
+#include <tuple>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/image_resample.h"
+#include "base/timing.h"
+#include "engine/renderer.h"
+#include "io/scene_loader.h"
+#include "reference/reference_renderer.h"
+
+namespace gloss {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Which renderer a configuration goes through.
+enum class Path { fast, reference_double, gouraud_float };
+
+// One point of the knob space. tessellation 0: the scene has no teapot.
+struct Config {
+  int spp = 1;
+  int tessellation = 0;
+  PowMode pow = PowMode::exact;
+  Path path = Path::fast;
+  int divisor = 1;
+  bool shadows = true;
+
+  bool operator<(const Config& o) const {
+    return std::tie(spp, tessellation, pow, path, divisor, shadows) <
+           std::tie(o.spp, o.tessellation, o.pow, o.path, o.divisor, o.shadows);
+  }
+  bool operator==(const Config& o) const { return !(*this < o) && !(o < *this); }
+};
+
+struct Measurement {
+  double time_ms = 0;
+  ImageMetrics error;
+};
+
+std::string divisor_name(int d) {
+  return d == 1 ? "1" : "1/" + std::to_string(d);
+}
+
+void check_options(const TradeoffOptions& o) {
+  auto spp_ok = [](int s) { return s >= 1 && s <= kMaxSpp; };
+  if (o.runs < 1) throw std::invalid_argument("tradeoff: runs must be at least 1");
+  if (!spp_ok(o.reference_spp) || !spp_ok(o.base_spp) ||
+      !std::all_of(o.spp_levels.begin(), o.spp_levels.end(), spp_ok)) {
+    throw std::invalid_argument("tradeoff: samples per pixel must be 1.." +
+                                std::to_string(kMaxSpp));
+  }
+  if (o.width < 0 || o.height < 0 || o.width > kMaxImageSide || o.height > kMaxImageSide) {
+    throw std::invalid_argument("tradeoff: image size out of range");
+  }
+  for (int level : o.tessellation_levels) {
+    if (level < 1 || level > 64) throw std::invalid_argument("tradeoff: tessellation is 1..64");
+  }
+  for (int d : o.resolution_divisors) {
+    if (d < 1) throw std::invalid_argument("tradeoff: resolution divisors must be >= 1");
+  }
+  for (const std::string& k : o.knobs) {
+    const auto& all = tradeoff_knobs();
+    if (std::find(all.begin(), all.end(), k) == all.end()) {
+      throw std::invalid_argument("tradeoff: unknown knob '" + k + "'");
+    }
+  }
+}
+
+// Everything one run_tradeoff call shares: the scenes per tessellation, the reference image and
+// the errors already computed (rows of different knobs can name the same configuration).
+class Session {
+ public:
+  Session(const Scene& scene, const TradeoffOptions& options) : m_options(options) {
+    tradeoff_image_size(scene, options, m_width, m_height);
+    if (has_object_type(scene, ObjectType::teapot) && !options.tessellation_levels.empty()) {
+      m_finest =
+          *std::max_element(options.tessellation_levels.begin(), options.tessellation_levels.end());
+    }
+    m_scenes.emplace(m_finest, m_finest > 0 ? with_teapot_tessellation(scene, m_finest) : scene);
+    m_base.spp = options.base_spp;
+    m_base.tessellation = m_finest;
+    m_base.shadows = scene.render.shadows;
+    Scene& full = m_scenes.at(m_finest);
+    full.render.width = m_width;
+    full.render.height = m_height;
+    validate_scene(full);
+  }
+
+  bool cancelled() const {
+    return m_options.cancel != nullptr && m_options.cancel->load(std::memory_order_relaxed);
+  }
+
+  // The reference image; false when cancelled while it was being computed.
+  bool make_reference() {
+    Config ref = m_base;
+    ref.spp = m_options.reference_spp;
+    ref.path = Path::reference_double;
+    m_reference = render_config(ref);
+    return !cancelled();
+  }
+
+  // Median times and errors of one knob's configurations, measured together: round r renders
+  // every distinct configuration once, starting one further along each round, so that a change
+  // of machine load (other processes on the cores) falls on all of them alike and the knob's
+  // settings compare fairly. Images are deterministic: each configuration's error is computed
+  // once. false when cancelled.
+  bool measure_knob(const std::vector<Config>& configs, std::vector<Measurement>& out) {
+    std::vector<Config> distinct;
+    for (const Config& c : configs) {
+      if (std::find(distinct.begin(), distinct.end(), c) == distinct.end()) distinct.push_back(c);
+    }
+    const std::size_t n = distinct.size();
+    std::vector<std::vector<double>> times(n);
+    for (int run = 0; run < m_options.runs; ++run) {
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t i = (k + static_cast<std::size_t>(run)) % n;
+        if (cancelled()) return false;
+        const Clock::time_point start = Clock::now();
+        const Image image = render_config(distinct[i]);
+        times[i].push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        if (m_errors.find(distinct[i]) == m_errors.end()) {
+          m_errors.emplace(distinct[i], compare_images(image, m_reference));
+        }
+      }
+    }
+    if (cancelled()) return false;
+    out.clear();
+    for (const Config& c : configs) {
+      const std::size_t i = static_cast<std::size_t>(
+          std::find(distinct.begin(), distinct.end(), c) - distinct.begin());
+      out.push_back({median(times[i]), m_errors.at(c)});
+    }
+    return true;
+  }
+
+  int finest() const { return m_finest; }
+  // The configuration every row changes one knob of.
+  const Config& base() const { return m_base; }
+
+ private:
+  const Scene& scene_for(int tessellation) {
+    auto it = m_scenes.find(tessellation);
+    if (it == m_scenes.end()) {
+      Scene s = with_teapot_tessellation(m_scenes.at(m_finest), tessellation);
+      it = m_scenes.emplace(tessellation, std::move(s)).first;
+    }
+    return it->second;
+  }
+
+  // One render of c at full size (reduced sizes are upsampled), total image only.
+  Image render_config(const Config& c) {
+    Scene s = scene_for(c.tessellation);
+    s.render.width = std::max(1, (m_width + c.divisor / 2) / c.divisor);
+    s.render.height = std::max(1, (m_height + c.divisor / 2) / c.divisor);
+    s.render.spp = c.spp;
+    s.render.pow = c.pow;
+    s.render.shadows = c.shadows;
+    Image image;
+    if (c.path == Path::fast) {
+      RenderOptions options;
+      options.terms = false;
+      image = render(s, options).total;
+    } else {
+      ReferenceOptions options;
+      options.cancel = m_options.cancel;
+      options.gouraud = c.path == Path::gouraud_float;
+      image = c.path == Path::reference_double ? render_reference<double>(s, options).total
+                                               : render_reference<float>(s, options).total;
+    }
+    return c.divisor > 1 ? resize_bilinear(image, m_width, m_height) : image;
+  }
+
+  const TradeoffOptions& m_options;
+  int m_width = 0, m_height = 0;
+  int m_finest = 0;  // 0: no teapot
+  Config m_base;
+  std::map<int, Scene> m_scenes;
+  Image m_reference;
+  std::map<Config, ImageMetrics> m_errors;
+};
+
+struct Setting {
+  std::string name;
+  Config config;
+  bool reference = false;
+};
+
+// The settings of one knob, each as a change of the base configuration.
+std::vector<Setting> settings_of(const std::string& knob, const Session& session,
+                                 const TradeoffOptions& o) {
+  const Config base = session.base();
+  std::vector<Setting> out;
+  auto add = [&](std::string name, auto change, bool reference) {
+    Config c = base;
+    change(c);
+    out.push_back({std::move(name), c, reference});
+  };
+  if (knob == "spp") {
+    for (int s : o.spp_levels) {
+      add(
+          std::to_string(s), [s](Config& c) { c.spp = s; }, s == o.reference_spp);
+    }
+  } else if (knob == "tessellation") {
+    if (session.finest() == 0) return out;  // no teapot: skipped (tradeoff_notes says so)
+    for (int level : o.tessellation_levels) {
+      add(
+          std::to_string(level), [level](Config& c) { c.tessellation = level; },
+          level == session.finest());
+    }
+  } else if (knob == "pow") {
+    add(
+        "exact", [](Config&) {}, true);
+    add(
+        "fast", [](Config& c) { c.pow = PowMode::fast; }, false);
+  } else if (knob == "precision") {
+    add(
+        "float", [](Config&) {}, false);
+    add(
+        "double", [](Config& c) { c.path = Path::reference_double; }, true);
+  } else if (knob == "shading") {
+    add(
+        "per-pixel", [](Config&) {}, true);
+    add(
+        "gouraud", [](Config& c) { c.path = Path::gouraud_float; }, false);
+  } else if (knob == "resolution") {
+    for (int d : o.resolution_divisors) {
+      add(
+          divisor_name(d), [d](Config& c) { c.divisor = d; }, d == 1);
+    }
+  } else if (knob == "shadows") {
+    add(
+        "on", [](Config& c) { c.shadows = true; }, base.shadows);
+    add(
+        "off", [](Config& c) { c.shadows = false; }, !base.shadows);
+  }
+  return out;
+}
+
+}  // namespace
+
+void tradeoff_image_size(const Scene& scene, const TradeoffOptions& options, int& width,
+                         int& height) {
+  const double aspect = double(scene.render.width) / double(scene.render.height);
+  width = options.width > 0 ? options.width : scene.render.width;
+  height = options.height > 0 ? options.height : scene.render.height;
+  if (options.width > 0 && options.height == 0) {
+    height = std::max(1, static_cast<int>(std::lround(options.width / aspect)));
+  } else if (options.height > 0 && options.width == 0) {
+    width = std::max(1, static_cast<int>(std::lround(options.height * aspect)));
+  }
+}
+
+TradeoffOptions quick_tradeoff_options() {
+  TradeoffOptions o;
+  o.width = 256;
+  o.runs = 3;
+  o.reference_spp = 64;
+  o.spp_levels = {1, 2, 4, 8, 16};
+  return o;
+}
+
+std::vector<std::string> tradeoff_notes(const Scene& scene, const TradeoffOptions& options) {
+  std::vector<std::string> notes;
+  std::size_t meshes = 0, other_meshes = 0;
+  for (const Object& o : scene.objects) {
+    meshes += o.type != ObjectType::sphere ? 1 : 0;
+    other_meshes += o.type != ObjectType::sphere && o.type != ObjectType::teapot ? 1 : 0;
+  }
+  const int finest = options.tessellation_levels.empty()
+                         ? 0
+                         : *std::max_element(options.tessellation_levels.begin(),
+                                             options.tessellation_levels.end());
+  notes.push_back("base of every row: " + std::to_string(options.base_spp) +
+                  " spp, full size, exact pow, float, per-pixel, shadows as the scene says" +
+                  (has_object_type(scene, ObjectType::teapot)
+                       ? ", teapot tessellation " + std::to_string(finest)
+                       : "") +
+                  "; error against double precision at " + std::to_string(options.reference_spp) +
+                  " spp, total image, linear values, every pixel");
+  if (!has_object_type(scene, ObjectType::teapot)) {
+    notes.push_back("tessellation: skipped, the scene has no teapot" +
+                    (other_meshes > 0
+                         ? " (its " + std::to_string(other_meshes) +
+                               " other mesh object(s) have fixed triangles: quads, boxes and "
+                               "OBJ files have no tessellation knob)"
+                         : std::string()));
+  } else if (other_meshes > 0) {
+    notes.push_back("tessellation: applies to the teapot only; the " +
+                    std::to_string(other_meshes) + " other mesh object(s) keep their triangles");
+  }
+  notes.push_back(
+      meshes == 0
+          ? "shading: no meshes, so gouraud equals per-pixel (spheres stay per pixel)"
+          : "shading: gouraud applies to " + std::to_string(meshes) +
+                " mesh object(s), spheres stay per pixel; its time comes from the single-ray "
+                "reference path in float, not the packet renderer");
+  notes.push_back(
+      "resolution: rendered at 1/d of the width and height, upsampled bilinearly "
+      "(upsampling included in the time)");
+  if (!scene.render.shadows) {
+    notes.push_back(
+        "shadows: off in the scene, so the reference has none and 'off' is its "
+        "setting");
+  }
+  return notes;
+}
+
+std::vector<TradeoffRow> run_tradeoff(const Scene& scene, const TradeoffOptions& options,
+                                      const std::function<bool(const TradeoffRow&)>& on_row) {
+  check_options(options);
+  Session session(scene, options);
+  std::vector<TradeoffRow> rows;
+  if (!session.make_reference()) return rows;
+  for (const std::string& knob : tradeoff_knobs()) {
+    if (!options.knobs.empty() &&
+        std::find(options.knobs.begin(), options.knobs.end(), knob) == options.knobs.end()) {
+      continue;
+    }
+    const std::vector<Setting> settings = settings_of(knob, session, options);
+    std::vector<Config> configs;
+    for (const Setting& setting : settings) configs.push_back(setting.config);
+    std::vector<Measurement> measured;
+    if (!session.measure_knob(configs, measured)) return rows;
+    for (std::size_t i = 0; i < settings.size(); ++i) {
+      TradeoffRow row;
+      row.knob = knob;
+      row.setting = settings[i].name;
+      row.time_ms = measured[i].time_ms;
+      row.error = measured[i].error;
+      row.reference_setting = settings[i].reference;
+      row.base_setting = settings[i].config == session.base();
+      rows.push_back(row);
+      if (on_row && !on_row(rows.back())) return rows;
+    }
+  }
+  return rows;
+}
+
+std::string tradeoff_to_csv(const std::vector<TradeoffRow>& rows) {
+  std::string csv = "knob,setting,time_ms,rmse,psnr_db,max_abs,pct_pixels_off\n";
+  char line[256];
+  for (const TradeoffRow& r : rows) {
+    char psnr[32];
+    if (std::isinf(r.error.psnr_db)) {
+      std::snprintf(psnr, sizeof psnr, "%s", r.error.psnr_db > 0 ? "inf" : "-inf");
+    } else {
+      std::snprintf(psnr, sizeof psnr, "%.3f", r.error.psnr_db);
+    }
+    std::snprintf(line, sizeof line, "%s,%s,%.3f,%.6g,%s,%.6g,%.4f\n", r.knob.c_str(),
+                  r.setting.c_str(), r.time_ms, r.error.rmse, psnr, r.error.max_abs,
+                  r.error.pct_pixels_off);
+    csv += line;
+  }
+  return csv;
+}
+
+}  // namespace gloss

@@ -1,0 +1,79 @@
+#pragma once
+// Speed against accuracy, measured: every setting of every accuracy knob rendered, timed (median
+// of several runs) and compared with a reference (double precision, reference_spp samples, exact
+// pow, finest teapot tessellation, per-pixel shading, full size, shadows as the scene says).
+// The base of every row is that reference configuration rendered by the fast float renderer at
+// base_spp; each row changes one knob of the base, so a row's error is the base's error plus what
+// its knob costs. Usable from a worker thread: cancel with the flag or by returning false from
+// on_row.
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "analysis/image_metrics.h"
+#include "scene/scene.h"
+
+namespace gloss {
+
+// The knobs, in the order run_tradeoff measures them.
+inline const std::vector<std::string>& tradeoff_knobs() {
+  static const std::vector<std::string> knobs{"spp",     "tessellation", "pow",    "precision",
+                                              "shading", "resolution",   "shadows"};
+  return knobs;
+}
+
+struct TradeoffOptions {
+  int width = 0, height = 0;  // full-size image, pixels; 0: the scene's (one 0: from its aspect)
+  int runs = 5;               // timed renders per row; the median is reported
+  int reference_spp = 256;    // samples per pixel of the reference
+  int base_spp = 4;           // samples per pixel of every row whose knob is not spp
+  std::vector<int> spp_levels{1, 2, 4, 8, 16, 32, 64};    // spp knob, fast float renderer
+  std::vector<int> tessellation_levels{2, 4, 8, 16, 32};  // teapot segments per patch side
+  std::vector<int> resolution_divisors{8, 4, 2, 1};       // preview at 1/d, upsampled
+  std::vector<std::string> knobs;             // names from tradeoff_knobs() to measure; empty: all
+  const std::atomic<bool>* cancel = nullptr;  // checked between renders and inside references
+};
+
+// The full image size options give for scene: width and height, either taken from the scene's
+// render block when 0 (one 0: from the scene's aspect, rounded, at least 1).
+void tradeoff_image_size(const Scene& scene, const TradeoffOptions& options, int& width,
+                         int& height);
+
+// Settings for a quick look from the editor's Quality panel: 256 pixels wide, 3 runs, a 64-spp
+// reference, spp up to 16. A few seconds on the shipped scenes.
+TradeoffOptions quick_tradeoff_options();
+
+struct TradeoffRow {
+  std::string knob;     // one of tradeoff_knobs()
+  std::string setting;  // spp: "1".."64"; tessellation: "2".."32"; pow: "exact", "fast";
+                        // precision: "float", "double"; shading: "per-pixel", "gouraud";
+                        // resolution: "1/8".."1"; shadows: "on", "off"
+  double time_ms = 0;   // median wall time of one render: BVH build, trace, shade (resolution:
+                        // the reduced render plus the bilinear upsampling to full size); the
+                        // base's own time differs a little from knob to knob (timed with each)
+  ImageMetrics error;   // total image against the reference, every pixel
+  bool reference_setting = false;  // the reference's own setting of this knob
+  bool base_setting = false;       // the base's setting: the row renders the base configuration
+};
+
+// What the rows cannot say by themselves about this scene (a skipped knob, what gouraud touches,
+// where times come from); one line each, for the table and the panel.
+std::vector<std::string> tradeoff_notes(const Scene& scene, const TradeoffOptions& options);
+
+// Measures the knobs of options.knobs for scene and returns the rows in order. A knob's settings
+// are timed together, round-robin (run r renders each setting once), so that load from other
+// processes falls on them alike; the rows of a knob arrive together once it is measured, each
+// passed to on_row (may be empty). Returning false from on_row stops early with the rows so far,
+// and so does options.cancel (checked between renders and inside reference renders). Throws
+// InputError for a scene that cannot be rendered, std::invalid_argument for options out of range
+// (runs < 1, spp outside 1..kMaxSpp, unknown knob, tessellation outside 1..64, divisor < 1).
+std::vector<TradeoffRow> run_tradeoff(
+    const Scene& scene, const TradeoffOptions& options,
+    const std::function<bool(const TradeoffRow&)>& on_row = nullptr);
+
+// CSV with the header knob,setting,time_ms,rmse,psnr_db,max_abs,pct_pixels_off ("inf" for the
+// PSNR of an exact match).
+std::string tradeoff_to_csv(const std::vector<TradeoffRow>& rows);
+
+}  // namespace gloss

@@ -1,0 +1,27 @@
+#include "base/error.h"
+
+namespace gloss {
+
+namespace {
+std::string format_input_error(const std::string& file, const std::string& message, int line,
+                               int column, const std::string& field) {
+  std::string out = file.empty() ? std::string("<input>") : file;
+  if (line > 0) {
+    out += ":" + std::to_string(line);
+    if (column > 0) out += ":" + std::to_string(column);
+  }
+  if (!field.empty()) out += ": " + field;
+  return out + ": " + message;
+}
+}  // namespace
+
+InputError::InputError(std::string file, std::string message, int line, int column,
+                       std::string field)
+    : std::runtime_error(format_input_error(file, message, line, column, field)),
+      m_file(std::move(file)),
+      m_message(std::move(message)),
+      m_field(std::move(field)),
+      m_line(line),
+      m_column(column) {}
+
+}  // namespace gloss

@@ -1,0 +1,93 @@
+#include "editor/gl/display_shader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "editor/gl/shader_sources.h"
+#include "editor/model/heat_map.h"
+
+namespace gloss {
+
+namespace {
+
+GLuint compile(GLenum stage, const char* source, const char* name) {
+  const GLuint shader = glCreateShader(stage);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    char log[2048] = {};
+    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    glDeleteShader(shader);
+    throw std::runtime_error(std::string("cannot compile ") + name + ": " + log);
+  }
+  return shader;
+}
+
+}  // namespace
+
+DisplayShader::DisplayShader() {
+  const GLuint vertex = compile(GL_VERTEX_SHADER, kDisplayVertexShader, "display.vert");
+  GLuint fragment = 0;
+  try {
+    fragment = compile(GL_FRAGMENT_SHADER, kDisplayFragmentShader, "display.frag");
+  } catch (...) {
+    glDeleteShader(vertex);
+    throw;
+  }
+  m_program = glCreateProgram();
+  glAttachShader(m_program, vertex);
+  glAttachShader(m_program, fragment);
+  glLinkProgram(m_program);
+  glDeleteShader(vertex);
+  glDeleteShader(fragment);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(m_program, GL_LINK_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    char log[2048] = {};
+    glGetProgramInfoLog(m_program, sizeof log, nullptr, log);
+    glDeleteProgram(m_program);
+    throw std::runtime_error(std::string("cannot link the display shaders: ") + log);
+  }
+  m_a = glGetUniformLocation(m_program, "u_a");
+  m_b = glGetUniformLocation(m_program, "u_b");
+  m_mode = glGetUniformLocation(m_program, "u_mode");
+  m_gain = glGetUniformLocation(m_program, "u_gain");
+  m_srgb = glGetUniformLocation(m_program, "u_srgb");
+  m_heat_scale = glGetUniformLocation(m_program, "u_heat_scale");
+  m_heat_ramp = glGetUniformLocation(m_program, "u_heat_ramp");
+  glGenVertexArrays(1, &m_vertex_array);
+}
+
+DisplayShader::~DisplayShader() {
+  if (m_vertex_array != 0) glDeleteVertexArrays(1, &m_vertex_array);
+  if (m_program != 0) glDeleteProgram(m_program);
+}
+
+void DisplayShader::draw(GLuint texture_a, GLuint texture_b, const DisplayParams& params) const {
+  glUseProgram(m_program);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, texture_a);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, texture_b != 0 ? texture_b : texture_a);
+  glUniform1i(m_a, 0);
+  glUniform1i(m_b, 1);
+  glUniform1i(m_mode, static_cast<GLint>(params.mode));
+  glUniform1f(m_gain, std::exp2(params.exposure));
+  glUniform1i(m_srgb, params.srgb ? 1 : 0);
+  glUniform1f(m_heat_scale, std::max(params.heat_scale, 1e-6f));
+  glUniform3fv(m_heat_ramp, kHeatRampSize, &kHeatRamp[0].x);
+  glDisable(GL_BLEND);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_DEPTH_TEST);
+  glBindVertexArray(m_vertex_array);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glActiveTexture(GL_TEXTURE0);
+  glUseProgram(0);
+}
+
+}  // namespace gloss

@@ -1,0 +1,49 @@
+#include "editor/model/autosave.h"
+
+#include <system_error>
+
+#include "base/atomic_file.h"
+#include "editor/model/command_layer.h"
+#include "editor/model/config_paths.h"
+
+namespace gloss {
+
+std::filesystem::path default_recovery_file() {
+  return state_dir() / "recovery.json";
+}
+
+Autosaver::Autosaver(std::filesystem::path file, std::uint64_t start_revision, double quiet_s,
+                     double max_delay_s)
+    : m_file(std::move(file)),
+      m_quiet_s(quiet_s),
+      m_max_delay_s(max_delay_s),
+      m_written_revision(start_revision),
+      m_seen_revision(start_revision) {}
+
+bool Autosaver::step(const CommandLayer& layer, int selected_object, double now_s) {
+  if (layer.revision() != m_seen_revision) {
+    m_seen_revision = layer.revision();
+    m_last_change_s = now_s;
+    if (m_first_change_s < 0.0) m_first_change_s = now_s;
+  }
+  if (m_written_revision == m_seen_revision) return false;
+  const bool quiet = now_s - m_last_change_s >= m_quiet_s;
+  const bool overdue = m_first_change_s >= 0.0 && now_s - m_first_change_s >= m_max_delay_s;
+  if (!quiet && !overdue) return false;
+
+  m_written_revision = m_seen_revision;
+  m_first_change_s = -1.0;
+  if (!layer.dirty()) {
+    discard();
+    return false;
+  }
+  write_text_atomically(m_file.string(), recovery_text(layer.scene(), selected_object));
+  return true;
+}
+
+void Autosaver::discard() {
+  std::error_code ignored;  // nothing to remove is fine
+  std::filesystem::remove(m_file, ignored);
+}
+
+}  // namespace gloss

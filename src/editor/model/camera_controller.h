@@ -1,0 +1,35 @@
+#pragma once
+// The viewport's mouse gestures as camera maths, free of any window system: orbit (camera.h's
+// orbit_camera), pan, zoom, and the projections used to draw and drag the light marker. Image
+// positions are pixels of a width x height view, y down, (x + 0.5, y + 0.5) = pixel (x, y).
+#include <glm/vec2.hpp>
+
+#include "scene/camera.h"
+
+namespace gloss {
+
+constexpr float kOrbitDegreesPerPixel = 0.3f;  // a 300-pixel drag turns 90 degrees
+constexpr float kZoomPerStep = 0.85f;          // eye-target distance factor per wheel step
+constexpr float kMinViewDistance = 1e-3f;      // world units
+
+// Moves eye and target together in the view plane so the point at the target's depth follows
+// the cursor: dx, dy in pixels (y down) of a view view_height pixels tall.
+Camera pan_camera(const Camera& camera, float dx_px, float dy_px, int view_height);
+
+// Moves the eye toward the target (steps > 0) or away: distance * kZoomPerStep^steps.
+Camera zoom_camera(const Camera& camera, float steps);
+
+// Image position of world point p; false when p is not in front of the eye.
+bool project_point(const Camera& camera, int width, int height, const glm::vec3& p,
+                   glm::vec2& image_position);
+
+// The world point under image position px that has the same depth along the view axis as
+// anchor: dragging a light keeps it in the plane facing the camera.
+glm::vec3 point_at_depth(const Camera& camera, int width, int height, const glm::vec2& px,
+                         const glm::vec3& anchor);
+
+// p rotated by degrees about the vertical (+y) axis through centre, counter-clockwise seen from
+// above.
+glm::vec3 rotate_about_y(const glm::vec3& p, const glm::vec3& centre, float degrees);
+
+}  // namespace gloss

@@ -1,0 +1,83 @@
+#include "editor/model/command_layer.h"
+
+#include <utility>
+
+namespace gloss {
+
+CommandLayer::CommandLayer(Scene scene) : m_scene(std::move(scene)) {}
+
+bool CommandLayer::execute(const Command& command) {
+  Scene next = m_scene;
+  apply_command(command, next);
+  if (same_scene(next, m_scene)) return false;
+
+  const std::string key = merge_key(command);
+  const bool merge = m_open && !key.empty() && !m_undo.empty() && m_undo.back().key == key;
+  if (merge) {
+    // The step keeps the document from before the gesture; its state id changes because the
+    // document after it did.
+    m_undo.back().label = command_label(command);
+    m_undo.back().state = m_next_state++;
+  } else {
+    m_undo.push_back({command_label(command), key, m_scene, m_next_state++});
+    if (m_undo.size() > kMaxSteps) m_undo.erase(m_undo.begin());
+  }
+  m_redo.clear();
+  m_scene = std::move(next);
+  m_open = !key.empty();
+  ++m_revision;
+  return true;
+}
+
+std::string CommandLayer::undo_label() const {
+  return m_undo.empty() ? std::string() : m_undo.back().label;
+}
+
+std::string CommandLayer::redo_label() const {
+  return m_redo.empty() ? std::string() : m_redo.back().label;
+}
+
+bool CommandLayer::undo() {
+  m_open = false;
+  if (m_undo.empty()) return false;
+  Step step = std::move(m_undo.back());
+  m_undo.pop_back();
+  std::swap(step.other, m_scene);
+  m_redo.push_back(std::move(step));
+  ++m_revision;
+  return true;
+}
+
+bool CommandLayer::redo() {
+  m_open = false;
+  if (m_redo.empty()) return false;
+  Step step = std::move(m_redo.back());
+  m_redo.pop_back();
+  std::swap(step.other, m_scene);
+  m_undo.push_back(std::move(step));
+  ++m_revision;
+  return true;
+}
+
+void CommandLayer::reset(Scene scene, bool saved) {
+  m_scene = std::move(scene);
+  m_undo.clear();
+  m_redo.clear();
+  m_open = false;
+  // State 0 is "no step applied"; a fresh id that no step carries keeps the document dirty.
+  m_saved_state = saved ? 0 : m_next_state++;
+  ++m_revision;
+}
+
+}  // namespace gloss
+
+namespace gloss {
+
+void CommandLayer::set_path(const std::string& path) {
+  move_document(m_scene, path);
+  for (Step& step : m_undo) move_document(step.other, path);
+  for (Step& step : m_redo) move_document(step.other, path);
+  ++m_revision;
+}
+
+}  // namespace gloss

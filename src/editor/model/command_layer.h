@@ -1,0 +1,75 @@
+#pragma once
+// The one owner of the document. Every edit arrives here as a Command; the layer applies it,
+// records an undo step, and counts revisions so the renderer, the autosave and the window title
+// can tell that something changed. Undo restores the exact earlier document (steps keep a copy of
+// the scene on the other side of the edit; meshes are shared, so copies are small).
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "editor/model/command.h"
+
+namespace gloss {
+
+class CommandLayer {
+ public:
+  explicit CommandLayer(Scene scene);
+
+  const Scene& scene() const { return m_scene; }
+
+  // Applies command and records an undo step, or merges into the open step when the command's
+  // merge key equals that step's (one slider drag = one step). Returns false, recording nothing,
+  // when the document did not change. Throws CommandError with the document unchanged.
+  bool execute(const Command& command);
+
+  // Ends the current gesture: the next command starts a new undo step.
+  void seal() { m_open = false; }
+
+  bool can_undo() const { return !m_undo.empty(); }
+  bool can_redo() const { return !m_redo.empty(); }
+  std::string undo_label() const;  // empty when there is nothing to undo
+  std::string redo_label() const;
+  bool undo();
+  bool redo();
+
+  // Replaces the document and forgets the history. saved: the document is what its file holds
+  // (false for a recovered session, which differs from its file).
+  void reset(Scene scene, bool saved);
+
+  // Records that the document now lives at path (save as): the path is the document's identity,
+  // not an edit, so every undo step takes it too (document.h's move_document) and no step is
+  // recorded.
+  void set_path(const std::string& path);
+
+  // Changes with every change of the document (edit, undo, redo, reset); never repeats.
+  std::uint64_t revision() const { return m_revision; }
+
+  // The saved state is the one whose file is on disk; dirty() says the document differs from it.
+  void mark_saved() { m_saved_state = current_state(); }
+  bool dirty() const { return current_state() != m_saved_state; }
+
+  std::size_t undo_count() const { return m_undo.size(); }
+  std::size_t redo_count() const { return m_redo.size(); }
+  // Steps kept; older steps are dropped (at 500 steps a gesture-sized step is ~1 scene copy).
+  static constexpr std::size_t kMaxSteps = 500;
+
+ private:
+  struct Step {
+    std::string label;
+    std::string key;
+    Scene other;          // the document on the other side of this step
+    std::uint64_t state;  // identifies the document after the step (see current_state)
+  };
+  std::uint64_t current_state() const { return m_undo.empty() ? 0 : m_undo.back().state; }
+
+  Scene m_scene;
+  std::vector<Step> m_undo;
+  std::vector<Step> m_redo;
+  bool m_open = false;  // the top undo step may still absorb commands with its key
+  std::uint64_t m_revision = 0;
+  std::uint64_t m_next_state = 1;
+  std::uint64_t m_saved_state = 0;
+};
+
+}  // namespace gloss

@@ -1,0 +1,48 @@
+#pragma once
+// Screenshot and export files: what goes into them and names that never replace a file. The
+// viewport and term-sheet exports are rendered by the core renderer at the document's full
+// resolution (scene.render), so they do not depend on the window's size or preview quality.
+#include <ctime>
+#include <filesystem>
+#include <string>
+
+#include "base/image.h"
+#include "editor/model/view_settings.h"
+#include "io/image_io.h"
+#include "scene/scene.h"
+
+namespace gloss {
+
+// "20251121-101530" (local time).
+std::string timestamp_text(std::time_t time);
+
+// Writes a PNG named folder/PREFIX-TIMESTAMP.png, or PREFIX-TIMESTAMP-2.png, -3 ... when the name
+// is taken. The finished file is hard-linked into place, which fails instead of replacing, so
+// two writers can never overwrite each other. Returns the path written; throws RuntimeFailure.
+std::filesystem::path write_png_unique(const std::filesystem::path& folder,
+                                       const std::string& prefix, const Image& image, bool srgb,
+                                       const TextChunks& text, std::time_t time);
+
+// Linear values times 2^stops (the viewport's exposure).
+Image exposed(const Image& image, float stops);
+
+// The term sheet, 2W x 2H: emissive + ambient | diffuse on top, specular | total below.
+Image term_sheet(const TermImages& terms);
+
+// The single image the viewport kind exports: the total, or the term a single-term view shows.
+Image viewport_image(const TermImages& terms, const ViewSettings& view);
+
+// PNG text chunks that reproduce an export: the scene JSON and the view settings.
+TextChunks export_text(const Scene& scene, const ViewSettings& view, ScreenshotKind kind);
+
+// Renders scene at scene.render's size and spp and returns the exposed image of kind (viewport
+// or terms; window screenshots come from the GL back buffer). Throws like render().
+Image render_export(const Scene& scene, const ViewSettings& view, ScreenshotKind kind);
+
+// Writes image for a script's `screenshot PATH`: a PATH naming a folder (existing, or ending in
+// '/') gets a unique timestamped name inside it; any other PATH is written atomically, replacing
+// what was there. Returns the path written; throws RuntimeFailure.
+std::filesystem::path write_export(const std::string& path, const Image& image, bool srgb,
+                                   const TextChunks& text);
+
+}  // namespace gloss

@@ -1,0 +1,85 @@
+#pragma once
+// Scripted mode: `gloss SCENE.json --script FILE` replays a text file of commands, one per line,
+// through the command layer. '#' starts a comment; blank lines are skipped. The line grammar is in
+// docs/editor.md. Document lines become Commands; the rest (wait, screenshot, view, quit ...) are
+// actions the editor's frame loop or the headless runner carry out.
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "editor/model/command.h"
+#include "editor/model/view_settings.h"
+
+namespace gloss {
+
+class CommandLayer;
+
+struct UndoAction {};
+struct RedoAction {};
+struct WaitAction {
+  double timeout_s = 300.0;  // a render that has not converged by then is an error
+};
+struct ScreenshotAction {
+  std::string path;  // a folder (existing, or ending in '/') gets a timestamped name inside it
+  ScreenshotKind kind = ScreenshotKind::viewport;
+};
+struct ViewAction {
+  ViewMode mode = ViewMode::render;
+  TermView term = TermView::total;  // for ViewMode::single
+};
+struct ExposureAction {
+  float stops = 0.0f;
+};
+struct EncodingAction {
+  bool srgb = false;
+};
+struct SelectAction {
+  int object = 0;
+};
+// Prints the editor's frame and latency measurements on stdout, then restarts the frame-time
+// window so consecutive `stats` lines measure the interval between them.
+struct StatsAction {};
+// Lets frames run for a while (measurements, animations).
+struct SleepAction {
+  double seconds = 1.0;
+};
+// Starts or stops the orbit-light animation.
+struct AnimateAction {
+  bool on = false;
+};
+struct QuitAction {};
+// The Quality panel's measurement (quality_measurement.h) at its quick settings: measure starts it
+// on the current scene and holds the script until it ends; start does not hold; cancel stops it;
+// csv writes the rows so far as tradeoff CSV to path, atomically.
+struct QualityAction {
+  enum class Verb { measure, start, cancel, csv };
+  Verb verb = Verb::measure;
+  std::string path;  // csv only
+};
+
+using ScriptAction =
+    std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction, ViewAction,
+                 ExposureAction, EncodingAction, SelectAction, StatsAction, SleepAction,
+                 AnimateAction, QuitAction, QualityAction>;
+
+struct ScriptLine {
+  int line = 0;  // 1-based line number in the file
+  std::string text;
+  ScriptAction action;
+};
+
+struct Script {
+  std::string file;  // for messages
+  std::vector<ScriptLine> lines;
+};
+
+// Parses every line first, so a typo anywhere fails before anything runs. Throws InputError
+// naming the file and the line ("FILE:LINE: MESSAGE").
+Script parse_script(const std::string& text, const std::string& file);
+Script load_script(const std::string& path);
+
+// Runs a command, undo or redo line through layer and returns true; returns false for any other
+// action. A failing command (no such object, nothing to undo) throws InputError naming the line.
+bool run_document_line(const ScriptLine& line, CommandLayer& layer, const std::string& file);
+
+}  // namespace gloss

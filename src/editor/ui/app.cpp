@@ -1,0 +1,244 @@
+#include "editor/ui/app.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include "base/error.h"
+#include "editor/model/camera_controller.h"
+#include "editor/model/config_paths.h"
+#include "editor/ui/script_player.h"
+
+namespace gloss {
+
+void FrameTimes::add(double value) {
+  ms[next] = value;
+  next = (next + 1) % kCount;
+  size = std::min(size + 1, kCount);
+}
+
+double FrameTimes::average() const {
+  double sum = 0.0;
+  for (int i = 0; i < size; ++i) sum += ms[i];
+  return size > 0 ? sum / size : 0.0;
+}
+
+double FrameTimes::largest() const {
+  double top = 0.0;
+  for (int i = 0; i < size; ++i) top = std::max(top, ms[i]);
+  return top;
+}
+
+App::App(GLFWwindow* glfw_window, Scene scene) : window(glfw_window), commands(std::move(scene)) {
+  glfwSetWindowUserPointer(window, this);  // the key queue's callback finds the App here
+  config_folder = config_dir();
+  recent = load_recent_files(config_folder / "recent.txt");
+  std::error_code ec;
+  view.screenshot_dir = std::filesystem::current_path(ec).string();
+  swatches.start();
+}
+
+App::~App() {
+  glfwSetWindowUserPointer(window, nullptr);
+}
+
+double App::now_s() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+bool execute(App& app, const Command& command) {
+  try {
+    return app.commands.execute(command);
+  } catch (const CommandError& e) {
+    app.notices.error(e.what(), app.now_s());
+    return false;
+  }
+}
+
+namespace {
+
+void animate_light(App& app, double now_s) {
+  const Scene& scene = app.commands.scene();
+  if (!app.view.orbit_light || scene.lights.empty()) return;
+  app.selected_light = std::clamp(app.selected_light, 0, static_cast<int>(scene.lights.size()) - 1);
+  // Steps longer than 0.1 s (a stalled frame) are cut so the light never jumps.
+  const float dt = static_cast<float>(std::min(now_s - app.last_frame_s, 0.1));
+  const PointLight light = scene.lights[app.selected_light];  // a copy: commands replace the vector
+  const glm::vec3 centre(scene.camera.target.x, light.position.y, scene.camera.target.z);
+  execute(app, SetLightValue{app.selected_light, LightField::position,
+                             rotate_about_y(light.position, centre, app.view.orbit_speed * dt)});
+}
+
+void draw_recovery_modal(App& app) {
+  if (!app.offered_recovery) return;
+  const char* id = "Recover unsaved session?";
+  if (!ImGui::IsPopupOpen(id)) ImGui::OpenPopup(id);
+  if (!ImGui::BeginPopupModal(id, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  const Recovery& r = *app.offered_recovery;
+  ImGui::TextUnformatted("gloss did not exit cleanly last time.");
+  ImGui::Text("An autosaved session from %s is available", r.saved_at.c_str());
+  ImGui::Text("(scene: %s).", r.scene.path.empty() ? "not saved to a file" : r.scene.path.c_str());
+  ImGui::Separator();
+  if (ImGui::Button("Recover", ImVec2(140, 0))) {
+    app.commands.reset(r.scene, false);
+    app.selected_object = std::max(0, r.selected_object);
+    app.notices.info("recovered the autosaved session", app.now_s());
+    app.offered_recovery.reset();
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Discard", ImVec2(140, 0))) {
+    if (app.autosaver) app.autosaver->discard();
+    app.offered_recovery.reset();
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+}
+
+void draw_quit_modal(App& app) {
+  if (!app.confirm_quit) return;
+  const char* id = "Unsaved changes";
+  if (!ImGui::IsPopupOpen(id)) ImGui::OpenPopup(id);
+  if (!ImGui::BeginPopupModal(id, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  const std::string& path = app.commands.scene().path;
+  ImGui::TextUnformatted("The scene has changes that are not saved.");
+  if (!path.empty() && ImGui::Button("Save and quit", ImVec2(150, 0))) {
+    try {
+      save_scene_as(app, path);
+      app.quit = true;
+    } catch (const std::exception& e) {
+      app.notices.error(e.what(), app.now_s());
+    }
+    app.confirm_quit = false;
+    ImGui::CloseCurrentPopup();
+  }
+  if (!path.empty()) ImGui::SameLine();
+  if (ImGui::Button("Quit without saving", ImVec2(150, 0))) {
+    app.quit = true;
+    app.confirm_quit = false;
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel", ImVec2(150, 0))) {
+    app.confirm_quit = false;
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+}
+
+void update_title(App& app) {
+  const std::string& path = app.commands.scene().path;
+  std::string title = "gloss - " + (path.empty() ? std::string("untitled")
+                                                 : std::filesystem::path(path).filename().string());
+  if (app.commands.dirty()) title += " *";
+  if (title != app.title) {
+    glfwSetWindowTitle(app.window, title.c_str());
+    app.title = title;
+  }
+}
+
+void draw_layout(App& app) {
+  draw_menu_bar(app);
+  const ImGuiViewport* main = ImGui::GetMainViewport();
+  const float menu_h = ImGui::GetFrameHeight();
+  const float status_h = ImGui::GetFrameHeight() + 6.0f;
+  const float top = main->Pos.y + menu_h;
+  const float height = std::max(main->Size.y - menu_h - status_h, 1.0f);
+  const float side = std::clamp(main->Size.x * 0.23f, 280.0f, 420.0f);
+  const float left = main->Pos.x, right = main->Pos.x + main->Size.x;
+  const float lights_h = std::floor(height * 0.5f);
+  draw_material_panel(app, ImVec2(left, top), ImVec2(side, height));
+  draw_lights_panel(app, ImVec2(right - side, top), ImVec2(side, lights_h));
+  draw_view_panel(app, ImVec2(right - side, top + lights_h), ImVec2(side, height - lights_h));
+  const ImVec2 viewport_pos(left + side, top);
+  const ImVec2 viewport_size(std::max(main->Size.x - 2.0f * side, 1.0f), height);
+  app.viewport.draw(app, viewport_pos, viewport_size);
+  draw_status_bar(app, ImVec2(left, top + height), ImVec2(main->Size.x, status_h));
+  // The Quality window opens over the viewport's right side (its table needs more width than a
+  // side panel has); it can be moved, resized and closed.
+  const float quality_w = std::min(480.0f, viewport_size.x);
+  draw_quality_panel(app, ImVec2(viewport_pos.x + viewport_size.x - quality_w, top),
+                     ImVec2(quality_w, height));
+  app.notices.draw(viewport_pos.x + viewport_size.x, top + height);
+  std::string chosen;
+  if (app.browser.draw(app.recent, chosen)) browser_action(app, chosen);
+  draw_help_window(app);
+  draw_recovery_modal(app);
+  draw_quit_modal(app);
+}
+
+}  // namespace
+
+void run_frame(App& app) {
+  const double frame_start = app.now_s();
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  replay_key_taps(app);
+  ImGui::NewFrame();
+
+  app.notices.expire(frame_start);
+  app.viewport.upload_frames(frame_start);
+  app.swatches.poll();
+  app.quality.poll();
+  poll_exports(app);
+  if (app.script) {
+    app.script->step(app);
+    if (app.script->finished() && !app.quit) app.script.reset();  // the editor stays open
+  }
+  handle_shortcuts(app);
+  animate_light(app, frame_start);
+  draw_layout(app);
+
+  // A gesture (slider drag, viewport drag, animation) is one undo step; it ends here.
+  if (!ImGui::IsAnyItemActive() && !app.viewport.gesture_active(frame_start) &&
+      !app.view.orbit_light) {
+    app.commands.seal();
+  }
+  app.viewport.sync(app.commands.scene(), app.commands.revision(), app.view, frame_start);
+  if (app.autosaver) {
+    try {
+      app.autosaver->step(app.commands, app.selected_object, frame_start);
+    } catch (const std::exception& e) {
+      app.notices.error(std::string("autosave failed: ") + e.what(), frame_start);
+    }
+  }
+  update_title(app);
+  if (glfwWindowShouldClose(app.window)) {
+    glfwSetWindowShouldClose(app.window, GLFW_FALSE);
+    request_quit(app);
+  }
+
+  ImGui::Render();
+  int fb_width = 0, fb_height = 0;
+  glfwGetFramebufferSize(app.window, &fb_width, &fb_height);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, fb_width, fb_height);
+  glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  if (app.capture.requested) capture_window(app);
+  glfwSwapBuffers(app.window);
+
+  const double frame_end = app.now_s();
+  app.viewport.frame_shown(frame_end);
+  app.frame_times.add((frame_end - frame_start) * 1000.0);
+  app.last_frame_s = frame_start;
+}
+
+double idle_timeout(const App& app) {
+  const double now = app.now_s();
+  if (app.capture.requested || app.viewport.gesture_active(now)) return 0.0;
+  // Published frames wake the loop at once (glfwPostEmptyEvent); these short timeouts cover
+  // what does not: the animation's next step (60 Hz), exports finishing, a script's next line.
+  if (app.view.orbit_light) return 1.0 / 60.0;
+  if (app.script || !app.exports.empty()) return 0.02;
+  if (app.quality.running()) return 0.1;  // rows arrive and the elapsed time counts up
+  double timeout = 0.5;  // keeps hover states and the status bar fresh without spinning
+  for (const Notice& n : app.notices.items) timeout = std::min(timeout, n.until_s - now);
+  return std::max(timeout, 0.0);
+}
+
+}  // namespace gloss

@@ -1,0 +1,153 @@
+#pragma once
+// The editor's state: the command layer (which owns the document), the view settings, the
+// viewport and panels' state, and what runs in the background (exports, autosave, a script).
+// main.cpp creates one App after the GL context exists and calls run_frame until it quits.
+#include <chrono>
+#include <filesystem>
+#include <future>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <GLFW/glfw3.h>
+#include <glad/gl.h>
+
+#include "editor/model/autosave.h"
+#include "editor/model/command_layer.h"
+#include "editor/model/quality_measurement.h"
+#include "editor/model/recent_files.h"
+#include "editor/model/view_settings.h"
+#include "editor/ui/file_browser.h"
+#include "editor/ui/notices.h"
+#include "editor/ui/swatches.h"
+#include "editor/ui/viewport.h"
+#include "io/material_io.h"
+
+namespace gloss {
+
+class ScriptPlayer;
+
+// UI frame times (CPU time from the start of a frame to after its buffer swap), last 240.
+struct FrameTimes {
+  static constexpr int kCount = 240;
+  double ms[kCount] = {};
+  int size = 0, next = 0;
+  void add(double value);
+  double average() const;
+  double largest() const;
+};
+
+// A viewport or term-sheet export rendering on a worker thread.
+struct PendingExport {
+  std::future<std::filesystem::path> path;  // the file written; throws what the export threw
+  bool from_script = false;
+};
+
+// A window screenshot waits for the frame to be drawn: run_frame reads the back buffer.
+struct WindowCapture {
+  bool requested = false;
+  std::string path;  // empty: a timestamped name in view.screenshot_dir
+  bool from_script = false;
+};
+
+// A key press (or auto-repeat) as GLFW reported it. Queued by a callback so that a press and
+// release arriving between two frames still count: ImGui 1.86 only sees key state per frame.
+struct KeyPress {
+  int key = 0;   // GLFW_KEY_*
+  int mods = 0;  // GLFW_MOD_* bits
+  bool repeat = false;
+};
+
+struct App {
+  App(GLFWwindow* window, Scene scene);
+  ~App();
+
+  GLFWwindow* window;
+  CommandLayer commands;
+  ViewSettings view;
+  int selected_object = 0;
+  int selected_light = 0;
+  bool link_channels = false;  // material colour editors move R, G, B together
+
+  Viewport viewport;
+  Swatches swatches;
+  QualityMeasurement quality;  // the Quality window's speed/accuracy measurement
+  FileBrowser browser;
+  Notices notices;
+  RecentFiles recent;
+  std::filesystem::path config_folder;
+  std::optional<Autosaver> autosaver;
+  std::optional<Recovery> offered_recovery;  // a crashed session's document awaiting an answer
+  std::unique_ptr<ScriptPlayer> script;
+  std::vector<NamedMaterial> library;  // materials loaded from a file, applied on demand
+  std::string library_source;
+  std::vector<PendingExport> exports;
+  WindowCapture capture;
+  std::vector<KeyPress> key_presses;  // since the last frame
+  std::vector<int> key_taps;          // keys pressed and released since the last frame
+  std::vector<int> taps_down;         // taps shown to ImGui as held during this frame
+  ImVec2 cursor_position;             // the cursor as of the last event (window pixels)
+  ImVec2 press_position[3];           // where each mouse button last went down (window pixels)
+  FrameTimes frame_times;
+
+  std::string title;          // the window title last set
+  double last_frame_s = 0.0;  // start of the previous frame (orbit-light animation step)
+  bool show_help = false;
+  bool show_about = false;
+  bool show_quality = false;  // the Quality window
+  bool confirm_quit = false;  // the unsaved-changes question is open
+  bool quit = false;
+  int exit_code = 0;
+
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  double now_s() const;
+};
+
+// One frame: events already polled. Builds the UI, feeds the renderer, draws and swaps.
+void run_frame(App& app);
+
+// Seconds the event loop may sleep before the next frame (negative: do not sleep).
+double idle_timeout(const App& app);
+
+// The one door for panel and viewport edits: executes command, reporting a CommandError as a
+// notice. Returns true when the document changed.
+bool execute(App& app, const Command& command);
+
+// app_actions.cpp: file and export actions. Each throws InputError / RuntimeFailure with a
+// message for the UI; on failure the document is unchanged.
+void open_scene(App& app, const std::string& path);
+void add_obj(App& app, const std::string& path);
+void save_scene_as(App& app, const std::string& path);
+void load_materials(App& app, const std::string& path);
+void save_materials(App& app, const std::string& path);
+// Starts an export; path empty = timestamped name in view.screenshot_dir.
+void start_screenshot(App& app, ScreenshotKind kind, const std::string& path, bool from_script);
+// Collects finished exports, showing their paths (or errors) as notices.
+void poll_exports(App& app);
+// Reads the back buffer and writes the requested window screenshot.
+void capture_window(App& app);
+// Runs the file browser's chosen action, keeping the browser open with the error on failure.
+void browser_action(App& app, const std::string& path);
+void remember_recent(App& app, const std::string& path);
+void request_quit(App& app);
+void undo(App& app);
+void redo(App& app);
+
+// shortcuts.cpp: install_input_callbacks before ImGui's GLFW backend (which chains to them),
+// then handle_shortcuts once per frame.
+void install_input_callbacks(GLFWwindow* window);
+// Between the backend's NewFrame and ImGui::NewFrame: shows this frame's taps as held keys.
+void replay_key_taps(App& app);
+void handle_shortcuts(App& app);
+
+// Panels (one file each).
+void draw_menu_bar(App& app);
+void draw_material_panel(App& app, ImVec2 pos, ImVec2 size);
+void draw_lights_panel(App& app, ImVec2 pos, ImVec2 size);
+void draw_view_panel(App& app, ImVec2 pos, ImVec2 size);
+void draw_status_bar(App& app, ImVec2 pos, ImVec2 size);
+void draw_help_window(App& app);
+void draw_quality_panel(App& app, ImVec2 pos, ImVec2 size);
+
+}  // namespace gloss

@@ -1,0 +1,202 @@
+#include "editor/ui/file_browser.h"
+
+#include <algorithm>
+#include <cctype>
+#include <system_error>
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+namespace gloss {
+
+const char* title(BrowsePurpose purpose) {
+  switch (purpose) {
+    case BrowsePurpose::open_scene:
+      return "Open scene";
+    case BrowsePurpose::add_obj:
+      return "Add OBJ model";
+    case BrowsePurpose::load_materials:
+      return "Load materials";
+    case BrowsePurpose::save_scene:
+      return "Save scene as";
+    case BrowsePurpose::save_materials:
+      return "Save materials";
+  }
+  return "File";
+}
+
+bool is_save(BrowsePurpose purpose) {
+  return purpose == BrowsePurpose::save_scene || purpose == BrowsePurpose::save_materials;
+}
+
+std::vector<std::string> extensions(BrowsePurpose purpose) {
+  switch (purpose) {
+    case BrowsePurpose::open_scene:
+    case BrowsePurpose::save_scene:
+      return {".json"};
+    case BrowsePurpose::add_obj:
+      return {".obj"};
+    case BrowsePurpose::load_materials:
+    case BrowsePurpose::save_materials:
+      return {".json", ".mtl"};
+  }
+  return {};
+}
+
+namespace {
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+}  // namespace
+
+void FileBrowser::show(BrowsePurpose what, const std::filesystem::path& start_folder,
+                       const std::string& suggested_name) {
+  open = true;
+  purpose = what;
+  std::error_code ec;
+  folder = std::filesystem::is_directory(start_folder, ec) ? start_folder
+                                                           : std::filesystem::current_path(ec);
+  folder = std::filesystem::absolute(folder, ec).lexically_normal();
+  name = suggested_name;
+  error.clear();
+  confirm_replace.clear();
+  stale = true;
+  focus_name = true;
+}
+
+void FileBrowser::refresh() {
+  entries.clear();
+  stale = false;
+  const std::vector<std::string> wanted = extensions(purpose);
+  std::error_code ec;
+  for (const auto& item : std::filesystem::directory_iterator(folder, ec)) {
+    const std::string file = item.path().filename().string();
+    if (file.empty() || file[0] == '.') continue;  // hidden files and temporaries
+    std::error_code type_error;
+    const bool is_folder = item.is_directory(type_error);
+    if (!is_folder && !show_all &&
+        std::find(wanted.begin(), wanted.end(), lower_extension(item.path())) == wanted.end()) {
+      continue;
+    }
+    entries.push_back({file, is_folder});
+  }
+  if (ec) error = "cannot list " + folder.string() + ": " + ec.message();
+  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    return a.folder != b.folder ? a.folder : a.name < b.name;
+  });
+}
+
+std::string FileBrowser::resolved() const {
+  std::filesystem::path path(name);
+  if (path.is_relative()) path = folder / path;
+  if (is_save(purpose) && path.extension().empty()) path += extensions(purpose).front();
+  return path.lexically_normal().string();
+}
+
+bool FileBrowser::confirm(std::string& chosen) {
+  if (name.empty()) {
+    error = "type a file name or pick a file";
+    return false;
+  }
+  const std::string path = resolved();
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    folder = path;
+    name.clear();
+    stale = true;
+    return false;
+  }
+  if (is_save(purpose) && std::filesystem::exists(path, ec) && confirm_replace != path) {
+    confirm_replace = path;
+    error = path + " exists: press Save again to replace it";
+    return false;
+  }
+  chosen = path;
+  return true;
+}
+
+bool FileBrowser::draw(const RecentFiles& recent, std::string& chosen) {
+  if (!open) return false;
+  if (stale) refresh();
+  ImGui::SetNextWindowSize(ImVec2(640, 440), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_FirstUseEver,
+                          ImVec2(0.5f, 0.5f));
+  const std::string window_title = std::string(title(purpose)) + "###file-browser";
+  if (!ImGui::Begin(window_title.c_str(), &open)) {
+    ImGui::End();
+    return false;
+  }
+  bool done = false;
+  if (ImGui::Button("Up") && folder.has_parent_path()) {
+    folder = folder.parent_path();
+    stale = true;
+  }
+  ImGui::SameLine();
+  ImGui::TextUnformatted(folder.string().c_str());
+  ImGui::SameLine(ImGui::GetWindowWidth() - 150.0f);
+  if (ImGui::Checkbox("all files", &show_all)) stale = true;
+
+  const float footer = ImGui::GetFrameHeightWithSpacing() * 2.0f + 8.0f;
+  const float recent_width = recent.paths.empty() || is_save(purpose) ? 0.0f : 220.0f;
+  ImGui::BeginChild("##entries", ImVec2(-recent_width - (recent_width > 0 ? 8.0f : 0.0f), -footer),
+                    true);
+  for (const Entry& entry : entries) {
+    const std::string label = entry.folder ? "[dir] " + entry.name : entry.name;
+    if (ImGui::Selectable(label.c_str(), !entry.folder && entry.name == name,
+                          ImGuiSelectableFlags_AllowDoubleClick)) {
+      if (entry.folder) {
+        if (ImGui::IsMouseDoubleClicked(0)) {
+          folder /= entry.name;
+          stale = true;
+        }
+      } else {
+        name = entry.name;
+        error.clear();
+        if (ImGui::IsMouseDoubleClicked(0)) done = confirm(chosen);
+      }
+    }
+  }
+  ImGui::EndChild();
+  if (recent_width > 0.0f) {
+    ImGui::SameLine();
+    ImGui::BeginChild("##recent", ImVec2(recent_width, -footer), true);
+    ImGui::TextDisabled("Recent");
+    for (const std::string& path : recent.paths) {
+      const std::string label = std::filesystem::path(path).filename().string() + "##" + path;
+      if (ImGui::Selectable(label.c_str())) {
+        name = path;
+        done = confirm(chosen);
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", path.c_str());
+    }
+    ImGui::EndChild();
+  }
+  ImGui::SetNextItemWidth(-170.0f);
+  if (focus_name) {
+    ImGui::SetKeyboardFocusHere();
+    focus_name = false;
+  }
+  if (ImGui::InputText("##path", &name, ImGuiInputTextFlags_EnterReturnsTrue)) {
+    done = confirm(chosen);
+  }
+  ImGui::SameLine();
+  if (ImGui::Button(is_save(purpose) ? "Save" : "Open", ImVec2(75, 0))) done = confirm(chosen);
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel", ImVec2(75, 0))) open = false;
+  if (!error.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    ImGui::TextWrapped("%s", error.c_str());
+    ImGui::PopStyleColor();
+  } else {
+    ImGui::TextDisabled("Double-click a folder to enter it; type a full path to go anywhere.");
+  }
+  ImGui::End();
+  return done;
+}
+
+}  // namespace gloss

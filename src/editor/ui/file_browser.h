@@ -1,0 +1,47 @@
+#pragma once
+// Dear ImGui 1.86 has no file dialog: this panel lists a folder through std::filesystem, offers
+// the recent files, and takes a typed path. The caller performs the open or save; when that
+// fails it puts the message in 'error' and the panel stays open with the document untouched.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "editor/model/recent_files.h"
+
+namespace gloss {
+
+enum class BrowsePurpose { open_scene, add_obj, load_materials, save_scene, save_materials };
+const char* title(BrowsePurpose purpose);
+bool is_save(BrowsePurpose purpose);
+// Extensions listed (lowercase, with the dot); the first is added to a typed save name without one.
+std::vector<std::string> extensions(BrowsePurpose purpose);
+
+struct FileBrowser {
+  struct Entry {
+    std::string name;
+    bool folder = false;
+  };
+
+  bool open = false;
+  BrowsePurpose purpose = BrowsePurpose::open_scene;
+  std::filesystem::path folder;
+  std::string name;             // the path field: a name inside folder, or a full path
+  std::string error;            // set by the caller when the chosen file failed
+  std::string confirm_replace;  // a save target that exists and awaits a second click
+  bool show_all = false;        // list files of every extension
+  std::vector<Entry> entries;
+  bool stale = true;        // entries need re-reading
+  bool focus_name = false;  // put the keyboard in the path field on the next draw
+
+  void show(BrowsePurpose what, const std::filesystem::path& start_folder,
+            const std::string& suggested_name);
+  // Draws the panel. Returns true and sets chosen when the user confirmed a path.
+  bool draw(const RecentFiles& recent, std::string& chosen);
+
+ private:
+  void refresh();
+  std::string resolved() const;
+  bool confirm(std::string& chosen);
+};
+
+}  // namespace gloss

@@ -1,0 +1,59 @@
+// The help window (F1): shortcuts, mouse gestures and where the editor keeps its files.
+#include <imgui.h>
+
+#include "editor/ui/app.h"
+
+namespace gloss {
+
+namespace {
+
+void row(const char* keys, const char* what) {
+  ImGui::TableNextRow();
+  ImGui::TableSetColumnIndex(0);
+  ImGui::TextUnformatted(keys);
+  ImGui::TableSetColumnIndex(1);
+  ImGui::TextUnformatted(what);
+}
+
+}  // namespace
+
+void draw_help_window(App& app) {
+  if (!app.show_help) return;
+  ImGui::SetNextWindowSize(ImVec2(560, 520), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_FirstUseEver,
+                          ImVec2(0.5f, 0.5f));
+  if (!ImGui::Begin("Help", &app.show_help)) {
+    ImGui::End();
+    return;
+  }
+  ImGui::TextWrapped(
+      "gloss edits Phong materials live: the viewport shows the CPU ray tracer's image, "
+      "refined pass by pass. Every edit can be undone. docs/editor.md has the full guide.");
+  if (ImGui::BeginTable("##keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+    ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, 240.0f);
+    ImGui::TableSetupColumn("action");
+    row("F1", "show or hide this help");
+    row("Ctrl+Z", "undo");
+    row("Ctrl+Shift+Z, Ctrl+Y", "redo");
+    row("Ctrl+S", "screenshot (kind chosen in View & Quality)");
+    row("Ctrl+Shift+S", "save the scene");
+    row("Ctrl+O", "open a scene");
+    row("Ctrl+Q", "quit");
+    row("1 / 2 / 3 / 4", "render / terms 2x2 / one term / A/B view");
+    row("left drag", "orbit the camera about its target");
+    row("right or middle drag, Shift+left", "pan");
+    row("mouse wheel", "zoom");
+    row("left click", "select the object under the cursor");
+    row("drag a light marker", "move the light in the plane facing you");
+    row("Ctrl+click a slider", "type an exact value");
+    ImGui::EndTable();
+  }
+  ImGui::Spacing();
+  ImGui::TextDisabled("Layout and recent files: %s", app.config_folder.string().c_str());
+  if (app.autosaver) {
+    ImGui::TextDisabled("Crash recovery file: %s", app.autosaver->file().string().c_str());
+  }
+  ImGui::End();
+}
+
+}  // namespace gloss

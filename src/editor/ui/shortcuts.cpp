@@ -1,0 +1,123 @@
+// Keyboard shortcuts (listed in the help window and docs/editor.md) and the input plumbing under
+// them. Dear ImGui 1.86 reads key state once per frame, so a press and release that arrive
+// between two frames would be lost: shortcuts read a queue of GLFW key events instead, and such
+// taps are replayed to ImGui as held for one frame (Enter in a text field, Backspace ...).
+#include <imgui.h>
+
+#include "editor/ui/app.h"
+
+namespace gloss {
+
+namespace {
+
+// The cursor as of the event being handled (glfwGetCursorPos on X11 asks the server for the
+// pointer now, which may be later motion).
+void on_cursor(GLFWwindow* window, double x, double y) {
+  auto* app = static_cast<App*>(glfwGetWindowUserPointer(window));
+  if (app != nullptr) app->cursor_position = ImVec2(static_cast<float>(x), static_cast<float>(y));
+}
+
+// Where each mouse button went down: by the time ImGui's frame sees a press, later motion in
+// the same batch of events has already moved io.MousePos.
+void on_mouse_button(GLFWwindow* window, int button, int action, int /*mods*/) {
+  auto* app = static_cast<App*>(glfwGetWindowUserPointer(window));
+  if (app != nullptr && action == GLFW_PRESS && button >= 0 && button < 3) {
+    app->press_position[button] = app->cursor_position;
+  }
+}
+
+void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods) {
+  auto* app = static_cast<App*>(glfwGetWindowUserPointer(window));
+  if (app == nullptr) return;
+  if (action == GLFW_PRESS || action == GLFW_REPEAT) {
+    app->key_presses.push_back({key, mods, action == GLFW_REPEAT});
+  } else if (action == GLFW_RELEASE) {
+    for (const KeyPress& press : app->key_presses) {
+      if (press.key == key) {
+        app->key_taps.push_back(key);
+        break;
+      }
+    }
+  }
+}
+
+void save_scene_shortcut(App& app) {
+  const std::string& path = app.commands.scene().path;
+  if (path.empty()) {
+    app.browser.show(BrowsePurpose::save_scene, app.view.screenshot_dir, "scene.json");
+    return;
+  }
+  try {
+    save_scene_as(app, path);
+  } catch (const std::exception& e) {
+    app.notices.error(e.what(), app.now_s());
+  }
+}
+
+}  // namespace
+
+void install_input_callbacks(GLFWwindow* window) {
+  glfwSetKeyCallback(window, on_key);
+  glfwSetMouseButtonCallback(window, on_mouse_button);
+  glfwSetCursorPosCallback(window, on_cursor);  // ImGui 1.86's backend installs none
+}
+
+void replay_key_taps(App& app) {
+  ImGuiIO& io = ImGui::GetIO();
+  for (int key : app.taps_down) {
+    if (glfwGetKey(app.window, key) == GLFW_RELEASE) io.KeysDown[key] = false;
+  }
+  app.taps_down.clear();
+  for (int key : app.key_taps) {
+    if (key >= 0 && key < IM_ARRAYSIZE(io.KeysDown)) {
+      io.KeysDown[key] = true;
+      app.taps_down.push_back(key);
+    }
+  }
+  app.key_taps.clear();
+  // The backend derives the modifiers from the key state in its callback; keep them in step.
+  io.KeyCtrl = io.KeysDown[GLFW_KEY_LEFT_CONTROL] || io.KeysDown[GLFW_KEY_RIGHT_CONTROL];
+  io.KeyShift = io.KeysDown[GLFW_KEY_LEFT_SHIFT] || io.KeysDown[GLFW_KEY_RIGHT_SHIFT];
+  io.KeyAlt = io.KeysDown[GLFW_KEY_LEFT_ALT] || io.KeysDown[GLFW_KEY_RIGHT_ALT];
+  io.KeySuper = io.KeysDown[GLFW_KEY_LEFT_SUPER] || io.KeysDown[GLFW_KEY_RIGHT_SUPER];
+}
+
+void handle_shortcuts(App& app) {
+  std::vector<KeyPress> presses;
+  presses.swap(app.key_presses);
+  // Keys typed into a text field belong to the field (Ctrl+Z there is the field's own undo).
+  if (ImGui::GetIO().WantTextInput) return;
+  for (const KeyPress& press : presses) {
+    const bool ctrl = (press.mods & GLFW_MOD_CONTROL) != 0;
+    const bool shift = (press.mods & GLFW_MOD_SHIFT) != 0;
+    if (ctrl && press.key == GLFW_KEY_Z) {
+      shift ? redo(app) : undo(app);
+    } else if (ctrl && press.key == GLFW_KEY_Y) {
+      redo(app);
+    }
+    if (press.repeat) continue;  // only undo and redo auto-repeat
+    if (press.key == GLFW_KEY_F1) app.show_help = !app.show_help;
+    if (ctrl && press.key == GLFW_KEY_S) {
+      shift ? save_scene_shortcut(app) : start_screenshot(app, app.view.screenshot_kind, "", false);
+    }
+    if (ctrl && press.key == GLFW_KEY_O) {
+      const std::string& path = app.commands.scene().path;
+      app.browser.show(BrowsePurpose::open_scene,
+                       path.empty() ? std::filesystem::path(app.view.screenshot_dir)
+                                    : std::filesystem::path(path).parent_path(),
+                       "");
+    }
+    if (ctrl && press.key == GLFW_KEY_Q) request_quit(app);
+    if (press.mods == 0 && press.key >= GLFW_KEY_1 && press.key <= GLFW_KEY_4 &&
+        !ImGui::IsAnyItemActive()) {
+      const ViewMode modes[4] = {ViewMode::render, ViewMode::terms, ViewMode::single, ViewMode::ab};
+      app.view.mode = modes[press.key - GLFW_KEY_1];
+    }
+    if (press.key == GLFW_KEY_ESCAPE) {
+      app.show_help = false;
+      app.browser.open = false;
+    }
+  }
+}
+
+}  // namespace gloss

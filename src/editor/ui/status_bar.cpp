@@ -1,0 +1,52 @@
+// The status bar: the renderer's progress and speed, the UI's own frame time, the measured delay
+// from an edit to its image, and the newest message.
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "editor/ui/app.h"
+
+namespace gloss {
+
+void draw_status_bar(App& app, ImVec2 pos, ImVec2 size) {
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNav |
+                                 ImGuiWindowFlags_NoBringToFrontOnFocus;
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8.0f, 3.0f));
+  const bool open = ImGui::Begin("##status", nullptr, flags);
+  ImGui::PopStyleVar();
+  if (!open) {
+    ImGui::End();
+    return;
+  }
+  if (const RenderedFrame* frame = app.viewport.shown_frame()) {
+    const FrameInfo& info = frame->info;
+    const double rays_per_s =
+        info.pass_ms > 0.0 ? static_cast<double>(info.rays) / (info.pass_ms * 1e-3) : 0.0;
+    char speed[48];
+    if (info.rays > 0) {
+      std::snprintf(speed, sizeof speed, "%.2f Mrays/s", rays_per_s * 1e-6);
+    } else {
+      std::snprintf(speed, sizeof speed, "re-shade, no rays");  // shade/exponent-class edits
+    }
+    ImGui::Text("pass %d | %d/%d spp | %dx%d | %.1f ms/pass | %s | %s", info.pass, info.spp,
+                info.target_spp, info.width, info.height, info.pass_ms, speed,
+                info.converged ? "converged" : "rendering");
+  } else {
+    ImGui::TextUnformatted("waiting for the first frame");
+  }
+  ImGui::SameLine();
+  const LatencyProbe& latency = app.viewport.latency();
+  ImGui::TextDisabled("| UI %.1f ms (max %.1f) | edit->image %.0f ms, full res %.0f ms",
+                      app.frame_times.average(), app.frame_times.largest(), latency.first_image_ms,
+                      latency.full_image_ms);
+  if (!app.notices.last.empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("| %s", app.notices.last.c_str());
+  }
+  ImGui::End();
+}
+
+}  // namespace gloss

@@ -1,0 +1,122 @@
+#pragma once
+// The viewport: the progressive renderer's frames as GL textures, drawn by the display shader
+// into an off-screen target that an ImGui window shows, in one of the view modes (one image, the
+// 2x2 term sheet, or A/B with a heat map). Owns the renderers; never waits for them.
+#include <cstdint>
+#include <memory>
+
+#include <imgui.h>
+
+#include "editor/gl/display_shader.h"
+#include "editor/gl/gl_texture.h"
+#include "editor/gl/render_target.h"
+#include "editor/model/view_settings.h"
+#include "engine/progressive_renderer.h"
+
+namespace gloss {
+
+struct App;
+
+// Timing of the path edit -> renderer -> pixels on screen, for the status bar and `stats`.
+struct LatencyProbe {
+  double edit_s = -1.0;           // frame time of the newest edit not yet shown, -1 when none
+  std::uint64_t generation = 0;   // renderer generation before that edit was pushed
+  bool first_shown = false;       // some frame of the edit has been uploaded
+  double first_image_ms = 0.0;    // edit -> first frame of it on screen (any resolution)
+  double full_image_ms = 0.0;     // edit -> first full-resolution frame on screen
+  double pending_first_s = -1.0;  // upload time waiting for the swap that shows it
+  double pending_full_s = -1.0;
+};
+
+// One pane of the viewport in screen coordinates (ImGui's, y down).
+struct Pane {
+  ImVec2 min{0, 0};
+  ImVec2 size{0, 0};
+};
+
+class Viewport {
+ public:
+  Viewport();  // needs a current GL context
+  ~Viewport();
+
+  // Uploads frames published since the last call. now_s: seconds on the frame clock.
+  void upload_frames(double now_s);
+  // Hands the document to the renderer(s) when it, the view mode or the render size changed.
+  void sync(const Scene& document, std::uint64_t revision, const ViewSettings& view, double now_s);
+  // Draws the viewport window at pos/size (screen coordinates) with its gestures.
+  void draw(App& app, ImVec2 pos, ImVec2 size);
+  // Call after the swap that showed this frame: completes latency measurements.
+  void frame_shown(double now_s);
+
+  // The renderer converged on this revision of the document in this view mode, and its last
+  // frame is on screen.
+  bool converged_and_shown(std::uint64_t revision, const ViewSettings& view) const;
+  // A mouse gesture (drag, recent wheel) is in progress: its commands form one undo step.
+  bool gesture_active(double now_s) const;
+
+  const RenderedFrame* shown_frame() const { return m_frame_a.get(); }
+  const LatencyProbe& latency() const { return m_latency; }
+  float max_difference() const { return m_max_difference; }
+
+ private:
+  // viewport_input.cpp: gestures, light markers, picking.
+  void handle_input(App& app);
+  void draw_light_markers(App& app, ImDrawList* list) const;
+  int pane_at(ImVec2 screen) const;
+
+  void draw_panes(const ViewSettings& view);
+  void draw_labels(const ViewSettings& view, ImDrawList* list) const;
+  void draw_legend(const ViewSettings& view, ImDrawList* list, const Pane& pane) const;
+  void upload(const RenderedFrame& frame, bool b_side);
+
+  std::unique_ptr<ProgressiveRenderer> m_a;
+  std::unique_ptr<ProgressiveRenderer> m_b;  // Blinn-Phong side of the A/B view, when shown
+  std::shared_ptr<const RenderedFrame> m_frame_a, m_frame_b;
+
+  GlTexture m_total, m_emissive, m_ambient, m_diffuse, m_specular, m_b_total;
+  RenderTarget m_target;
+  DisplayShader m_shader;
+
+  // What the renderers were last given.
+  std::uint64_t m_pushed_revision = 0;
+  bool m_pushed_any = false;
+  int m_render_width = 0, m_render_height = 0;
+  ViewMode m_pushed_mode = ViewMode::render;
+  bool m_pushed_terms = false;
+  bool m_pushed_keep = false;
+
+  // Layout of the last draw (screen coordinates).
+  ImVec2 m_pos{0, 0}, m_size{0, 0};
+  float m_framebuffer_scale = 1.0f;
+  Pane m_panes[4];
+  int m_pane_count = 1;
+
+  float m_max_difference = 0.0f;  // largest |A - B| of the shown pair, linear
+
+  // What the off-screen target last showed: it is redrawn only when one of these changes, so an
+  // idle frame costs ImGui's draw alone (llvmpipe samples float textures slowly).
+  struct TargetKey {
+    std::uint64_t uploads = 0;
+    int width = 0, height = 0, pane_count = 0;
+    float pane_x = 0, pane_y = 0, pane_w = 0, pane_h = 0;
+    ViewMode mode = ViewMode::render;
+    TermView single = TermView::total;
+    float exposure = 0, heat_scale = 0;
+    bool srgb = false;
+    bool operator==(const TargetKey& o) const;
+  };
+  TargetKey m_target_key;
+  std::uint64_t m_uploads = 0;  // counts texture uploads
+  LatencyProbe m_latency;
+
+  // Gesture state (viewport_input.cpp).
+  int m_drag_button = -1;  // ImGuiMouseButton being dragged in the viewport, -1 none
+  int m_drag_light = -1;   // light being dragged, -1 none
+  int m_drag_pane = 0;
+  float m_drag_distance = 0.0f;  // farthest the cursor went from the press, pixels
+  ImVec2 m_drag_press{0, 0};     // where the drag's button went down (screen)
+  ImVec2 m_drag_last{0, 0};      // cursor position the drag has consumed up to
+  double m_last_wheel_s = -1.0;
+};
+
+}  // namespace gloss

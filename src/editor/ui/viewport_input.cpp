@@ -1,0 +1,194 @@
+// The viewport window: its layout, the mouse gestures (orbit, pan, zoom, click to select, drag a
+// light marker) and the light markers. Gestures become commands through execute().
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "editor/model/camera_controller.h"
+#include "editor/ui/app.h"
+#include "engine/pick.h"
+
+namespace gloss {
+
+namespace {
+
+constexpr float kMarkerRadius = 7.0f;  // screen pixels
+constexpr float kClickSlop = 3.0f;     // pixels a click may move and still select
+
+bool inside(const Pane& pane, ImVec2 p) {
+  return p.x >= pane.min.x && p.y >= pane.min.y && p.x < pane.min.x + pane.size.x &&
+         p.y < pane.min.y + pane.size.y;
+}
+
+}  // namespace
+
+int Viewport::pane_at(ImVec2 screen) const {
+  for (int i = 0; i < m_pane_count; ++i) {
+    if (inside(m_panes[i], screen)) return i;
+  }
+  return 0;
+}
+
+void Viewport::draw(App& app, ImVec2 pos, ImVec2 size) {
+  m_pos = pos;
+  m_size = size;
+  m_framebuffer_scale = ImGui::GetIO().DisplayFramebufferScale.x;
+  const bool grid = app.view.mode == ViewMode::terms || app.view.mode == ViewMode::ab;
+  m_pane_count = grid ? 4 : 1;
+  // Each cell holds one pane with the document's aspect (what the exports render), centred.
+  const ImVec2 cell = grid ? ImVec2(std::floor(size.x * 0.5f), std::floor(size.y * 0.5f)) : size;
+  const RenderSettings& render = app.commands.scene().render;
+  const float aspect = static_cast<float>(render.width) / static_cast<float>(render.height);
+  const float pane_w = std::floor(std::min(cell.x, cell.y * aspect));
+  const ImVec2 pane_size(pane_w, std::floor(pane_w / aspect));
+  for (int i = 0; i < m_pane_count; ++i) {
+    m_panes[i].min = ImVec2(
+        std::floor(pos.x + static_cast<float>(i % 2) * cell.x + (cell.x - pane_size.x) * 0.5f),
+        std::floor(pos.y + static_cast<float>(i / 2) * cell.y + (cell.y - pane_size.y) * 0.5f));
+    m_panes[i].size = pane_size;
+  }
+
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+  const ImGuiWindowFlags flags =
+      ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+      ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse |
+      ImGuiWindowFlags_NoBackground;  // the image covers it
+  const bool open = ImGui::Begin("Viewport", nullptr, flags);
+  ImGui::PopStyleVar(2);
+  if (!open) {
+    ImGui::End();
+    return;
+  }
+  draw_panes(app.view);
+  // The target's texture rows run bottom to top: flip v.
+  ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(m_target.texture())), size,
+               ImVec2(0, 1), ImVec2(1, 0));
+  handle_input(app);
+  ImDrawList* list = ImGui::GetWindowDrawList();
+  draw_labels(app.view, list);
+  if (app.view.mode == ViewMode::ab) draw_legend(app.view, list, m_panes[3]);
+  draw_light_markers(app, list);
+  if (!m_frame_a) {
+    const char* text = "rendering the first frame ...";
+    const ImVec2 t = ImGui::CalcTextSize(text);
+    list->AddText(ImVec2(pos.x + (size.x - t.x) * 0.5f, pos.y + (size.y - t.y) * 0.5f),
+                  IM_COL32(200, 200, 200, 255), text);
+  }
+  ImGui::End();
+}
+
+void Viewport::draw_light_markers(App& app, ImDrawList* list) const {
+  const Scene& scene = app.commands.scene();
+  for (int p = 0; p < m_pane_count; ++p) {
+    if (app.view.mode == ViewMode::ab && p == 3) continue;  // the legend
+    const Pane& pane = m_panes[p];
+    list->PushClipRect(pane.min, ImVec2(pane.min.x + pane.size.x, pane.min.y + pane.size.y), true);
+    for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i) {
+      glm::vec2 at;
+      if (!project_point(scene.camera, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
+                         scene.lights[i].position, at)) {
+        continue;
+      }
+      const ImVec2 centre(pane.min.x + at.x, pane.min.y + at.y);
+      const glm::vec3 c = glm::clamp(scene.lights[i].diffuse, glm::vec3(0.0f), glm::vec3(1.0f));
+      const bool selected = i == app.selected_light;
+      const float r = selected ? kMarkerRadius + 2.0f : kMarkerRadius;
+      list->AddCircleFilled(centre, r, ImGui::ColorConvertFloat4ToU32(ImVec4(c.x, c.y, c.z, 1.0f)));
+      list->AddCircle(centre, r + 1.5f,
+                      selected ? IM_COL32(255, 200, 40, 255) : IM_COL32(20, 20, 20, 255), 0, 2.0f);
+      char label[16];
+      std::snprintf(label, sizeof label, "%d", i);
+      list->AddText(ImVec2(centre.x + r + 3.0f, centre.y - r - 6.0f), IM_COL32(255, 230, 150, 255),
+                    label);
+    }
+    list->PopClipRect();
+  }
+}
+
+void Viewport::handle_input(App& app) {
+  ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetCursorScreenPos(m_pos);
+  ImGui::InvisibleButton("##viewport-input", m_size,
+                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                             ImGuiButtonFlags_MouseButtonMiddle);
+  const Scene& scene = app.commands.scene();
+  const double now = app.now_s();
+
+  if (ImGui::IsItemActivated()) {
+    m_drag_button = ImGui::IsMouseClicked(ImGuiMouseButton_Left)    ? ImGuiMouseButton_Left
+                    : ImGui::IsMouseClicked(ImGuiMouseButton_Right) ? ImGuiMouseButton_Right
+                                                                    : ImGuiMouseButton_Middle;
+    // Motion before the press (in the same batch of events) is not part of the drag; motion
+    // after it is, even when ImGui sees both in one frame.
+    const ImVec2 press = app.press_position[m_drag_button];
+    m_drag_press = press;
+    m_drag_last = press;
+    m_drag_distance = 0.0f;
+    m_drag_pane = pane_at(press);
+    m_drag_light = -1;
+    if (m_drag_button == ImGuiMouseButton_Left && !io.KeyShift) {
+      const Pane& pane = m_panes[m_drag_pane];
+      for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i) {
+        glm::vec2 at;
+        if (!project_point(scene.camera, static_cast<int>(pane.size.x),
+                           static_cast<int>(pane.size.y), scene.lights[i].position, at)) {
+          continue;
+        }
+        const float dx = pane.min.x + at.x - press.x, dy = pane.min.y + at.y - press.y;
+        if (dx * dx + dy * dy <= (kMarkerRadius + 4.0f) * (kMarkerRadius + 4.0f)) {
+          m_drag_light = i;
+          app.selected_light = i;
+        }
+      }
+    }
+  }
+
+  const ImVec2 d(io.MousePos.x - m_drag_last.x, io.MousePos.y - m_drag_last.y);
+  if (ImGui::IsItemActive() && m_drag_button >= 0 && (d.x != 0.0f || d.y != 0.0f)) {
+    m_drag_last = io.MousePos;
+    m_drag_distance = std::max(m_drag_distance, std::hypot(io.MousePos.x - m_drag_press.x,
+                                                           io.MousePos.y - m_drag_press.y));
+    const Pane& pane = m_panes[m_drag_pane];
+    const bool pan = m_drag_button != ImGuiMouseButton_Left || io.KeyShift;
+    if (m_drag_light >= 0 && m_drag_light < static_cast<int>(scene.lights.size())) {
+      const glm::vec2 local(io.MousePos.x - pane.min.x, io.MousePos.y - pane.min.y);
+      const glm::vec3 moved =
+          point_at_depth(scene.camera, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
+                         local, scene.lights[m_drag_light].position);
+      execute(app, SetLightValue{m_drag_light, LightField::position, moved});
+    } else if (m_drag_distance > kClickSlop) {
+      // The scene turns as if grabbed: a drag to the right carries its front to the right (the
+      // eye orbits left, positive yaw in orbit_camera); a drag down shows more of its top.
+      const Camera camera = pan ? pan_camera(scene.camera, d.x, d.y, static_cast<int>(pane.size.y))
+                                : orbit_camera(scene.camera, d.x * kOrbitDegreesPerPixel,
+                                               d.y * kOrbitDegreesPerPixel);
+      execute(app, SetCamera{camera});
+    }
+  }
+
+  if (ImGui::IsItemDeactivated()) {
+    if (m_drag_button == ImGuiMouseButton_Left && m_drag_light < 0 &&
+        m_drag_distance <= kClickSlop && !(app.view.mode == ViewMode::ab && m_drag_pane == 3)) {
+      const Pane& pane = m_panes[m_drag_pane];
+      const int hit =
+          pick_object(scene, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
+                      io.MousePos.x - pane.min.x, io.MousePos.y - pane.min.y);
+      if (hit >= 0) app.selected_object = hit;
+    }
+    m_drag_button = -1;
+    m_drag_light = -1;
+  }
+
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
+    execute(app, SetCamera{zoom_camera(scene.camera, io.MouseWheel)});
+    m_last_wheel_s = now;
+  }
+}
+
+}  // namespace gloss

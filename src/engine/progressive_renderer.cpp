@@ -1,0 +1,298 @@
+#include "engine/progressive_renderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
+#include "engine/render_context.h"
+#include "engine/render_plan.h"
+#include "engine/shade/pixel_factors.h"
+#include "engine/trace/embree_scene.h"
+#include "engine/trace/sample_cache.h"
+#include "engine/trace/single_sample_pass.h"
+
+namespace gloss {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+
+double ms_between(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+bool same_geometry(const Scene& a, const Scene& b) {
+  if (a.objects.size() != b.objects.size()) return false;
+  for (std::size_t i = 0; i < a.objects.size(); ++i) {
+    const Object& x = a.objects[i];
+    const Object& y = b.objects[i];
+    if (x.type != y.type || x.mesh != y.mesh || x.center != y.center || x.radius != y.radius) {
+      return false;
+    }
+  }
+  return true;
+}
+}  // namespace
+
+struct ProgressiveRenderer::Impl {
+  explicit Impl(ProgressiveOptions o) : options(o), terms(o.terms) {}
+
+  ProgressiveOptions options;
+
+  // Inbox, guarded by mutex: the newest scene handed in and what the worker should know of it.
+  std::mutex mutex;
+  std::condition_variable wake;
+  std::shared_ptr<const Scene> last_set;  // the caller's newest scene
+  std::shared_ptr<const Scene> pending;   // not yet taken by the worker
+  std::uint64_t generation = 0;
+  Clock::time_point changed_at;
+  ChangeClass pending_change = ChangeClass::none;  // accumulated since the worker last looked
+  bool terms;
+  bool stop = false;
+  std::atomic<bool> cancel{false};
+
+  // Published frame, guarded by publish_mutex.
+  mutable std::mutex publish_mutex;
+  mutable std::condition_variable published_cv;
+  std::shared_ptr<const RenderedFrame> published;
+  std::function<void()> on_publish;
+
+  // Worker-only state: the scene the cache belongs to and how far the cache lags behind it.
+  std::shared_ptr<const Scene> scene;
+  std::unique_ptr<EmbreeScene> embree;
+  RenderContext ctx;
+  SampleCache cache;
+  PixelFactors factors;
+  int level = 0;  // 0 .. preview_levels - 1: coarse passes; preview_levels: full
+  ChangeClass dirty = ChangeClass::none;
+  int pass = 0;
+  std::uint64_t worker_generation = 0;
+  Clock::time_point worker_changed_at;
+  ChangeClass cause = ChangeClass::full;
+  bool worker_terms = true;
+
+  std::thread worker;
+
+  void run();
+  bool take_inbox();
+  bool step();
+  void start_level(int new_level);
+  // Publishes frame, its images made from the current factors.
+  void publish(std::shared_ptr<RenderedFrame> frame, double pass_ms, long long rays,
+               bool converged);
+  bool converged_state() const {
+    return dirty == ChangeClass::none && level == options.preview_levels &&
+           cache.samples() >= scene->render.spp;
+  }
+};
+
+void ProgressiveRenderer::Impl::run() {
+  for (;;) {
+    {
+      std::unique_lock<std::mutex> lock(mutex);
+      wake.wait(lock, [&] {
+        return stop || pending != nullptr || terms != worker_terms ||
+               (scene != nullptr && !converged_state());
+      });
+      if (stop) return;
+    }
+    take_inbox();
+    if (scene != nullptr) step();
+  }
+}
+
+// Moves the newest scene from the inbox into the worker's state; true when one was taken.
+bool ProgressiveRenderer::Impl::take_inbox() {
+  std::shared_ptr<const Scene> next;
+  bool want_terms;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    want_terms = terms;
+    if (pending == nullptr && want_terms == worker_terms) return false;
+    next = std::move(pending);
+    pending = nullptr;
+    cancel.store(false);
+    if (next != nullptr) {
+      worker_generation = generation;
+      worker_changed_at = changed_at;
+    }
+  }
+  if (want_terms != worker_terms) {
+    worker_terms = want_terms;
+    dirty = std::max(dirty, ChangeClass::shade);
+  }
+  if (next == nullptr) return true;
+  const ChangeClass change = scene == nullptr ? ChangeClass::full : classify_change(*scene, *next);
+  cause = change;
+  pass = 0;
+  if (embree == nullptr || scene == nullptr || !same_geometry(*scene, *next)) {
+    embree = std::make_unique<EmbreeScene>(*next);
+  }
+  scene = std::move(next);
+  ctx.scene = scene.get();
+  ctx.embree = embree.get();
+  ctx.plan = make_render_plan(*scene);
+  ctx.cancel = &cancel;
+  dirty = std::max(dirty, change);
+  return true;
+}
+
+void ProgressiveRenderer::Impl::start_level(int new_level) {
+  level = new_level;
+  const RenderSettings& r = scene->render;
+  const int shift = options.preview_levels - level;  // 3, 2, 1 -> 1/8, 1/4, 1/2
+  const int w = std::max(1, r.width >> shift), h = std::max(1, r.height >> shift);
+  const int target = level == options.preview_levels ? r.spp : 1;
+  reset_sample_cache(cache, *scene, w, h, target);  // keeps the memory of the last image
+}
+
+// One unit of work, then a publication; false when cancelled by a newer scene. A cancelled
+// stage leaves `dirty` at the class that redoes it, so the caches never mix two scenes.
+bool ProgressiveRenderer::Impl::step() {
+  const Clock::time_point start = Clock::now();
+  std::atomic<long long> rays{0};
+  ctx.rays = &rays;
+  ChangeClass redo = ChangeClass::none;  // what a cancellation leaves to do
+  bool ok = true;
+  bool factors_done = false;  // the fused first pass builds the pixel factors too
+  // ... and, when only the total is shown, the frame's total image as well.
+  auto frame = std::make_shared<RenderedFrame>();
+  Image* const total = worker_terms ? nullptr : &frame->images.total;
+  if (dirty == ChangeClass::full) {
+    start_level(options.preview_levels > 0 ? 0 : options.preview_levels);
+    redo = ChangeClass::full;
+    ok = trace_single_sample(cache, ctx, factors, total);
+    factors_done = true;
+  } else if (dirty == ChangeClass::light) {
+    redo = ChangeClass::light;
+    if (cache.samples() == 1) {  // one pass: light factors and pixel factors
+      ok = relight_single_sample(cache, ctx, factors, total);
+      factors_done = true;
+    } else {
+      ok = recompute_light_factors(cache, ctx);
+    }
+  } else if (dirty == ChangeClass::none && level < options.preview_levels) {
+    // The next resolution is traced aside; the current one stays until it is complete.
+    SampleCache previous = std::move(cache);
+    const int previous_level = level;
+    start_level(level + 1);
+    redo = ChangeClass::exponent;  // cancelled: the factors must be rebuilt from `previous`
+    ok = trace_single_sample(cache, ctx, factors, total);
+    factors_done = true;
+    if (!ok) {
+      cache = std::move(previous);
+      level = previous_level;
+    }
+  } else if (dirty == ChangeClass::none) {
+    // Double the samples each pass: 1, 2, 4, 8 ... up to the target.
+    const int have = cache.samples();
+    ok = add_samples(cache, ctx, std::min(have, scene->render.spp - have));
+  }
+  if (ok && dirty != ChangeClass::shade && !factors_done) {
+    redo = std::max(redo, ChangeClass::exponent);
+    ok = build_pixel_factors(cache, ctx, factors);
+  }
+  ctx.rays = nullptr;
+  if (!ok) {
+    dirty = std::max(dirty, redo);
+    if (cache.samples() == 0) dirty = ChangeClass::full;
+    return false;
+  }
+  dirty = ChangeClass::none;
+  if (!factors_done || total == nullptr) combine_terms(factors, ctx, frame->images, worker_terms);
+  publish(std::move(frame), ms_between(start, Clock::now()), rays.load(), converged_state());
+  return true;
+}
+
+void ProgressiveRenderer::Impl::publish(std::shared_ptr<RenderedFrame> frame, double pass_ms,
+                                        long long rays, bool converged) {
+  FrameInfo& info = frame->info;
+  info.generation = worker_generation;
+  info.pass = pass++;
+  info.width = cache.width;
+  info.height = cache.height;
+  info.spp = cache.samples();
+  info.target_spp = scene->render.spp;
+  info.pass_ms = pass_ms;
+  info.since_change_ms = ms_between(worker_changed_at, Clock::now());
+  info.rays = rays;
+  info.converged = converged;
+  info.cause = cause;
+  std::function<void()> callback;
+  {
+    std::lock_guard<std::mutex> lock(publish_mutex);
+    published = std::move(frame);
+    callback = on_publish;
+  }
+  published_cv.notify_all();
+  if (callback) callback();
+}
+
+ProgressiveRenderer::ProgressiveRenderer(ProgressiveOptions options)
+    : m_impl(std::make_unique<Impl>(options)) {
+  m_impl->worker_terms = options.terms;
+  m_impl->worker = std::thread([impl = m_impl.get()] { impl->run(); });
+}
+
+ProgressiveRenderer::~ProgressiveRenderer() {
+  {
+    std::lock_guard<std::mutex> lock(m_impl->mutex);
+    m_impl->stop = true;
+    m_impl->cancel.store(true);
+  }
+  m_impl->wake.notify_all();
+  m_impl->worker.join();
+}
+
+void ProgressiveRenderer::set_scene(const Scene& scene) {
+  auto copy = std::make_shared<const Scene>(scene);
+  {
+    std::lock_guard<std::mutex> lock(m_impl->mutex);
+    if (m_impl->last_set != nullptr &&
+        classify_change(*m_impl->last_set, *copy) == ChangeClass::none) {
+      return;
+    }
+    m_impl->last_set = copy;
+    m_impl->pending = std::move(copy);
+    ++m_impl->generation;
+    m_impl->changed_at = Clock::now();
+    m_impl->cancel.store(true);  // work in flight is for an older scene
+  }
+  m_impl->wake.notify_all();
+}
+
+void ProgressiveRenderer::set_terms(bool terms) {
+  {
+    std::lock_guard<std::mutex> lock(m_impl->mutex);
+    if (m_impl->terms == terms) return;
+    m_impl->terms = terms;
+  }
+  m_impl->wake.notify_all();
+}
+
+std::shared_ptr<const RenderedFrame> ProgressiveRenderer::latest() const {
+  std::lock_guard<std::mutex> lock(m_impl->publish_mutex);
+  return m_impl->published;
+}
+
+bool ProgressiveRenderer::wait_converged(double timeout_ms) const {
+  std::uint64_t generation;
+  {
+    std::lock_guard<std::mutex> lock(m_impl->mutex);
+    generation = m_impl->generation;
+  }
+  std::unique_lock<std::mutex> lock(m_impl->publish_mutex);
+  return m_impl->published_cv.wait_for(
+      lock, std::chrono::duration<double, std::milli>(timeout_ms), [&] {
+        const auto& p = m_impl->published;
+        return p != nullptr && p->info.generation == generation && p->info.converged;
+      });
+}
+
+void ProgressiveRenderer::set_on_publish(std::function<void()> callback) {
+  std::lock_guard<std::mutex> lock(m_impl->publish_mutex);
+  m_impl->on_publish = std::move(callback);
+}
+
+}  // namespace gloss

@@ -1,0 +1,65 @@
+#pragma once
+// The interactive engine: renders a scene progressively on oneTBB workers, coarse to fine, and
+// publishes each finished pass whole. set_scene() never blocks on rendering; it classifies the
+// edit (change_class.h) and restarts at the cheapest stage the edit invalidates.
+#include <cstdint>
+#include <functional>
+#include <memory>
+
+#include "base/image.h"
+#include "engine/change_class.h"
+#include "scene/scene.h"
+
+namespace gloss {
+
+struct FrameInfo {
+  std::uint64_t generation = 0;           // counts set_scene() calls that changed something
+  int pass = 0;                           // passes published for this generation so far, from 0
+  int width = 0, height = 0;              // size of this pass's images (coarse passes are smaller)
+  int spp = 0;                            // samples per pixel in these images
+  int target_spp = 0;                     // scene.render.spp
+  double pass_ms = 0;                     // compute time of this pass
+  double since_change_ms = 0;             // from the set_scene() of this generation to publication
+  long long rays = 0;                     // primary + shadow rays traced for this pass
+  bool converged = false;                 // nothing more will be computed for this scene
+  ChangeClass cause = ChangeClass::full;  // what the edit that led here invalidated
+};
+
+struct RenderedFrame {
+  FrameInfo info;
+  TermImages images;  // total always; the four terms when ProgressiveOptions::terms is set
+};
+
+struct ProgressiveOptions {
+  bool terms = true;       // publish the four term images as well as the total
+  int preview_levels = 3;  // coarse passes before full resolution: 1/8, 1/4, 1/2
+};
+
+class ProgressiveRenderer {
+ public:
+  explicit ProgressiveRenderer(ProgressiveOptions options = {});
+  ~ProgressiveRenderer();  // cancels work in flight and joins
+  ProgressiveRenderer(const ProgressiveRenderer&) = delete;
+  ProgressiveRenderer& operator=(const ProgressiveRenderer&) = delete;
+
+  // Hands the engine a new version of the document. Cheap: copies the scene and wakes the worker.
+  void set_scene(const Scene& scene);
+  // Whether the four term images are published (the editor turns this on for the term views).
+  void set_terms(bool terms);
+
+  // The newest published frame, or null before the first. Never blocks on rendering; the frame
+  // is immutable and stays valid while held.
+  std::shared_ptr<const RenderedFrame> latest() const;
+
+  // Blocks until the current generation has converged or timeout_ms passed; true if converged.
+  bool wait_converged(double timeout_ms) const;
+
+  // Called on the worker thread after each publication (the editor wakes its event loop).
+  void set_on_publish(std::function<void()> callback);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> m_impl;
+};
+
+}  // namespace gloss

@@ -1,0 +1,56 @@
+#include "engine/render_plan.h"
+
+namespace gloss {
+
+namespace {
+bool nonzero(const glm::vec3& c) {
+  return c.x != 0.0f || c.y != 0.0f || c.z != 0.0f;
+}
+
+// True when some object could block the segment from a lit surface point to a light: two or more
+// objects, or one that is not convex (a convex surface never occludes itself where ndl > 0).
+bool can_cast_shadows(const Scene& scene) {
+  if (scene.objects.size() >= 2) return true;
+  return scene.objects.size() == 1 && !is_convex(scene.objects[0].type);
+}
+}  // namespace
+
+RenderPlan make_render_plan(const Scene& scene, bool full) {
+  RenderPlan plan;
+  bool any_ld = false, any_ls = false;
+  glm::vec3 ambient_light = scene.ambient;
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    const PointLight& light = scene.lights[i];
+    ambient_light += light.ambient;
+    if (!full && !nonzero(light.diffuse) && !nonzero(light.specular)) continue;
+    plan.lights.push_back(static_cast<int>(i));
+    plan.unit_attenuation.push_back(!full && light.attenuation == glm::vec3(1.0f, 0.0f, 0.0f));
+    any_ld = any_ld || nonzero(light.diffuse);
+    any_ls = any_ls || nonzero(light.specular);
+  }
+  bool any_ke = false, any_ka = false, any_kd = false, any_ks = false;
+  for (const Material& m : scene.materials) {
+    any_ke = any_ke || nonzero(m.emission);
+    any_ka = any_ka || nonzero(m.ambient);
+    any_kd = any_kd || nonzero(m.diffuse);
+    any_ks = any_ks || nonzero(m.specular);
+  }
+  plan.spheres = has_object_type(scene, ObjectType::sphere);
+  if (full) {
+    plan.shadow_rays = scene.render.shadows;
+    plan.emissive = plan.ambient = plan.diffuse = plan.specular = true;
+    return plan;
+  }
+  plan.emissive = any_ke;
+  plan.ambient = any_ka && nonzero(ambient_light);
+  plan.diffuse = any_kd && any_ld;
+  plan.specular = any_ks && any_ls;
+  if (!plan.diffuse && !plan.specular) {  // lights then only feed the ambient sum
+    plan.lights.clear();
+    plan.unit_attenuation.clear();
+  }
+  plan.shadow_rays = scene.render.shadows && !plan.lights.empty() && can_cast_shadows(scene);
+  return plan;
+}
+
+}  // namespace gloss

@@ -1,0 +1,32 @@
+#pragma once
+// What a render has to compute, derived from the scene before any ray is traced: only the work
+// the scene can see. A plan made with full = true computes everything (the test oracle).
+#include <vector>
+
+#include "scene/render_settings.h"
+#include "scene/scene.h"
+
+namespace gloss {
+
+struct RenderPlan {
+  std::vector<int> lights;  // scene lights that reach diffuse or specular (Ld or Ls not 0)
+  std::vector<bool> unit_attenuation;  // per planned light: (c0, c1, c2) == (1, 0, 0)
+  bool shadow_rays = false;            // shadows on and some object can occlude another point
+  bool emissive = false;               // some material has ke != 0
+  bool ambient = false;                // some ka != 0 and A_scene + sum La != 0
+  bool diffuse = false;                // some kd != 0 and a planned light has Ld != 0
+  bool specular = false;               // some ks != 0 and a planned light has Ls != 0
+  bool spheres = false;                // some object is a sphere (its hits are refined in double)
+
+  bool operator==(const RenderPlan& o) const {
+    return lights == o.lights && unit_attenuation == o.unit_attenuation &&
+           shadow_rays == o.shadow_rays && emissive == o.emissive && ambient == o.ambient &&
+           diffuse == o.diffuse && specular == o.specular && spheres == o.spheres;
+  }
+  bool operator!=(const RenderPlan& o) const { return !(*this == o); }
+};
+
+// full = true: every light, every term, shadow rays whenever shadows are on.
+RenderPlan make_render_plan(const Scene& scene, bool full = false);
+
+}  // namespace gloss

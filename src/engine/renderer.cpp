@@ -1,0 +1,67 @@
+#include "engine/renderer.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "engine/render_context.h"
+#include "engine/shade/pixel_factors.h"
+#include "engine/trace/embree_scene.h"
+#include "engine/trace/sample_cache.h"
+#include "engine/trace/single_sample_pass.h"
+#include "scene/validation.h"
+
+namespace gloss {
+
+namespace {
+// Bound on the per-sample cache of one band (bytes); larger images go band by band.
+constexpr std::size_t kBandBudget = std::size_t(256) << 20;
+
+void copy_rows(const Image& band, int row0, Image& image) {
+  std::memcpy(&image.pixels[static_cast<std::size_t>(row0) * image.width], band.pixels.data(),
+              band.pixels.size() * sizeof(glm::vec3));
+}
+}  // namespace
+
+TermImages render(const Scene& scene, const RenderOptions& options) {
+  validate_scene(scene);
+  const EmbreeScene embree(scene);
+  RenderContext ctx;
+  ctx.scene = &scene;
+  ctx.embree = &embree;
+  ctx.plan = make_render_plan(scene, options.full_plan);
+
+  const int w = scene.render.width, h = scene.render.height, spp = scene.render.spp;
+  const std::size_t bytes_per_row = static_cast<std::size_t>(w) * spp *
+                                    (20 + 16 * std::max<std::size_t>(1, ctx.plan.lights.size()));
+  int band_rows = static_cast<int>(std::max<std::size_t>(1, kBandBudget / bytes_per_row));
+  band_rows = std::min(h, std::max(4, band_rows));
+
+  TermImages out;
+  out.total = Image(w, h);
+  if (options.terms) {
+    out.emissive = out.ambient = out.diffuse = out.specular = Image(w, h);
+  }
+  SampleCache cache;
+  PixelFactors factors;
+  TermImages band;
+  for (int row0 = 0; row0 < h; row0 += band_rows) {
+    cache = make_sample_cache(scene, w, h, spp, row0, std::min(band_rows, h - row0));
+    if (spp == 1) {  // the same bits, one pass (with the total, unless terms are wanted)
+      trace_single_sample(cache, ctx, factors, options.terms ? nullptr : &band.total);
+    } else {
+      add_samples(cache, ctx, spp);
+      build_pixel_factors(cache, ctx, factors);
+    }
+    if (spp != 1 || options.terms) combine_terms(factors, ctx, band, options.terms);
+    copy_rows(band.total, row0, out.total);
+    if (options.terms) {
+      copy_rows(band.emissive, row0, out.emissive);
+      copy_rows(band.ambient, row0, out.ambient);
+      copy_rows(band.diffuse, row0, out.diffuse);
+      copy_rows(band.specular, row0, out.specular);
+    }
+  }
+  return out;
+}
+
+}  // namespace gloss

@@ -1,0 +1,112 @@
+#include "engine/shade/total_lanes.h"
+
+#include "engine/simd/lane_gather.h"
+#include "engine/simd/lane_mask.h"
+#include "shading/total.h"
+
+namespace gloss {
+
+namespace {
+// Material indices to fetch the constants with: missed lanes read material 0 (if any) and
+// discard it.
+void material_index(const std::int32_t* material, std::int32_t (&index)[kLanes]) {
+  for (int i = 0; i < kLanes; ++i) index[i] = material[i] < 0 ? 0 : material[i];
+}
+
+// Channels to pixels: rgb[3 i + c] = total[c][i].
+void interleave(const float (&total)[3][kLanes], float (&rgb)[3 * kLanes]) {
+  for (int i = 0; i < kLanes; ++i) {
+    for (int c = 0; c < 3; ++c) rgb[3 * i + c] = total[c][i];
+  }
+}
+}  // namespace
+
+TotalLanes::TotalLanes(const Recombination& recombination) : m_recombination(recombination) {
+  for (int c = 0; c < 3; ++c) {
+    for (int i = 0; i < kLanes; ++i) m_diffuse[c][i] = m_specular[c][i] = 0.0f;
+  }
+}
+
+// `omp simd` (-fopenmp-simd): GCC otherwise unrolls these 16-lane loops and leaves them scalar.
+void TotalLanes::add_light(const std::int32_t* material, std::size_t li, const float* diffuse,
+                           const float* specular) {
+  if (all_lanes_negative(material)) return;  // all missed: store ignores the sums
+  const std::int32_t one = common_lane_value(material);
+  if (one >= 0) {  // one material: its constants as scalars
+    const std::size_t m = static_cast<std::size_t>(one);
+    for (std::size_t c = 0; c < 3; ++c) {
+      const float kd = m_recombination.column(6 + 6 * li + c)[m];
+      const float ks = m_recombination.column(9 + 6 * li + c)[m];
+#pragma omp simd
+      for (int i = 0; i < kLanes; ++i) m_diffuse[c][i] += kd * diffuse[i];
+#pragma omp simd
+      for (int i = 0; i < kLanes; ++i) m_specular[c][i] += ks * specular[i];
+    }
+    return;
+  }
+  alignas(64) std::int32_t index[kLanes];
+  material_index(material, index);
+  const LaneGather by_material(index);
+  const std::size_t materials = m_recombination.materials();
+  alignas(64) float k[kLanes];
+  for (int c = 0; c < 3; ++c) {
+    by_material(m_recombination.column(6 + 6 * li + static_cast<std::size_t>(c)), materials, k);
+#pragma omp simd
+    for (int i = 0; i < kLanes; ++i) m_diffuse[c][i] += k[i] * diffuse[i];
+    by_material(m_recombination.column(9 + 6 * li + static_cast<std::size_t>(c)), materials, k);
+#pragma omp simd
+    for (int i = 0; i < kLanes; ++i) m_specular[c][i] += k[i] * specular[i];
+  }
+}
+
+void TotalLanes::store(const std::int32_t* material, float (&rgb)[3 * kLanes]) const {
+  alignas(64) float total[3][kLanes];
+  if (all_lanes_negative(material)) {  // all missed: the terms are 0, the total 0 + background
+    for (std::size_t c = 0; c < 3; ++c) {
+      // Added to 0 as the general path does (a -0 or, with denormals off, a denormal background
+      // then comes out as it does there).
+      const float background = form_total(0.0f, 0.0f, 0.0f, 0.0f, m_recombination.background()[c]);
+      for (int i = 0; i < kLanes; ++i) total[c][i] = background;
+    }
+    interleave(total, rgb);
+    return;
+  }
+  const std::int32_t one = common_lane_value(material);
+  if (one >= 0) {  // one material, every lane a hit: its constants as scalars
+    const std::size_t m = static_cast<std::size_t>(one);
+    for (std::size_t c = 0; c < 3; ++c) {
+      const float emission = m_recombination.column(c)[m];
+      const float ambient = m_recombination.column(3 + c)[m];
+      const float missed_background = 0.0f * m_recombination.background()[c];
+#pragma omp simd
+      for (int i = 0; i < kLanes; ++i) {
+        total[c][i] =
+            form_total(emission, ambient, m_diffuse[c][i], m_specular[c][i], missed_background);
+      }
+    }
+    interleave(total, rgb);
+    return;
+  }
+  alignas(64) std::int32_t index[kLanes];
+  material_index(material, index);
+  const LaneGather by_material(index);
+  const std::size_t materials = m_recombination.materials();
+  alignas(64) float emission[kLanes], ambient[kLanes];
+  for (int c = 0; c < 3; ++c) {
+    by_material(m_recombination.column(static_cast<std::size_t>(c)), materials, emission);
+    by_material(m_recombination.column(3 + static_cast<std::size_t>(c)), materials, ambient);
+    const float background = m_recombination.background()[c];
+#pragma omp simd
+    for (int i = 0; i < kLanes; ++i) {
+      // All terms zero on a missed lane.
+      const bool hit = material[i] >= 0;
+      const float missed = hit ? 0.0f : 1.0f;
+      total[c][i] = form_total(hit ? emission[i] : 0.0f, hit ? ambient[i] : 0.0f,
+                               hit ? m_diffuse[c][i] : 0.0f, hit ? m_specular[c][i] : 0.0f,
+                               missed * background);
+    }
+  }
+  interleave(total, rgb);
+}
+
+}  // namespace gloss

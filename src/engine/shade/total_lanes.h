@@ -1,0 +1,32 @@
+#pragma once
+// The total image of 16 pixels covered by one sample each, made in the pass that makes their
+// factors (single_sample_pass.h) instead of reading the factors back (combine_terms): lane by
+// lane the operations of Recombination::terms and total with weight 1, in the same order, so
+// the pixels get the same bits either way (tests/test_single_sample_pass.cpp).
+#include <cstddef>
+#include <cstdint>
+
+#include "engine/shade/recombination.h"
+#include "engine/simd/lanes.h"
+
+namespace gloss {
+
+class TotalLanes {
+ public:
+  explicit TotalLanes(const Recombination& recombination);
+
+  // Adds planned light li's factor means (zero on missed lanes), lights in plan order.
+  // material: the lanes' materials, 64-byte aligned, -1 where the sample missed.
+  void add_light(const std::int32_t* material, std::size_t li, const float* diffuse,
+                 const float* specular);
+
+  // The lanes' totals, pixel by pixel (r, g, b), once every light is added.
+  void store(const std::int32_t* material, float (&rgb)[3 * kLanes]) const;
+
+ private:
+  const Recombination& m_recombination;
+  alignas(64) float m_diffuse[3][kLanes];   // sum over lights of kd Ld diffuse
+  alignas(64) float m_specular[3][kLanes];  // sum over lights of ks Ls specular
+};
+
+}  // namespace gloss

@@ -1,0 +1,31 @@
+#pragma once
+// The Embree 3 scene built from a Scene: every ray-scene query of gloss goes through it.
+// Spheres are Embree sphere points; everything else is triangles. geomID == object index.
+// Built with it: the per-primitive table its hits are shaded from (surface_table.h).
+#include <embree3/rtcore.h>
+
+#include "engine/trace/surface_table.h"
+#include "scene/scene.h"
+
+namespace gloss {
+
+class EmbreeScene {
+ public:
+  explicit EmbreeScene(const Scene& scene);  // throws RuntimeFailure on an Embree error
+  ~EmbreeScene();
+  EmbreeScene(const EmbreeScene&) = delete;
+  EmbreeScene& operator=(const EmbreeScene&) = delete;
+
+  RTCScene handle() const { return m_scene; }
+  const SurfaceTable& surfaces() const { return m_surfaces; }
+
+ private:
+  RTCDevice m_device = nullptr;
+  RTCScene m_scene = nullptr;
+  SurfaceTable m_surfaces;
+};
+
+// The Embree device shared by all scenes of the process (created once, thread-safe).
+RTCDevice embree_device();
+
+}  // namespace gloss

@@ -1,0 +1,106 @@
+#include "engine/trace/sample_cache.h"
+
+#include "engine/trace/sample_packet.h"
+#include "shading/sampling.h"
+
+namespace gloss {
+
+namespace {
+// Sizes a plane for pixels and lights; buffers keep their capacity (no page faults on reuse).
+void size_plane(SamplePlane& plane, std::size_t pixels, std::size_t lights) {
+  plane.object.resize(pixels);
+  plane.prim.resize(pixels);
+  plane.t.resize(pixels);
+  plane.u.resize(pixels);
+  plane.v.resize(pixels);
+  plane.lights.resize(lights);
+  for (LightFactorPlane& l : plane.lights) l.resize(pixels);
+}
+}  // namespace
+
+std::size_t SampleCache::bytes() const {
+  std::size_t total = 0;
+  for (const SamplePlane& p : planes) {
+    total += p.object.size() * (sizeof(std::int32_t) + sizeof(std::uint32_t) + 3 * sizeof(float));
+    total += p.object.size() * p.lights.size() * 4 * sizeof(float);
+  }
+  return total;
+}
+
+SampleCache make_sample_cache(const Scene& scene, int width, int height, int target_spp, int row0,
+                              int rows) {
+  SampleCache cache;
+  reset_sample_cache(cache, scene, width, height, target_spp, row0, rows);
+  return cache;
+}
+
+void reset_sample_cache(SampleCache& cache, const Scene& scene, int width, int height,
+                        int target_spp, int row0, int rows) {
+  for (SamplePlane& plane : cache.planes) cache.spare.push_back(std::move(plane));
+  cache.planes.clear();
+  cache.width = width;
+  cache.image_height = height;
+  cache.row0 = row0;
+  cache.height = rows < 0 ? height - row0 : rows;
+  cache.target_spp = target_spp;
+  cache.seed = scene.render.seed;
+  cache.camera = make_camera_frame(scene.camera, width, height);
+  cache.camera_d = make_camera_basis<double>(scene.camera, width, height);
+}
+
+void append_planes(SampleCache& cache, std::size_t lights, int count) {
+  for (int s = 0; s < count; ++s) {
+    if (!cache.spare.empty()) {
+      cache.planes.push_back(std::move(cache.spare.back()));
+      cache.spare.pop_back();
+    } else {
+      cache.planes.emplace_back();
+    }
+    size_plane(cache.planes.back(), cache.pixel_count(), lights);
+  }
+}
+
+void drop_planes(SampleCache& cache, int first) {
+  while (cache.samples() > first) {
+    cache.spare.push_back(std::move(cache.planes.back()));
+    cache.planes.pop_back();
+  }
+}
+
+bool add_samples(SampleCache& cache, const RenderContext& ctx, int count) {
+  const int first = cache.samples();
+  append_planes(cache, ctx.plan.lights.size(), count);
+  const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
+  const bool done = for_each_packet(cache, ctx, [&](SamplePacket& packet) {
+    long long rays = 0;
+    for (int s = first; s < first + count; ++s) {
+      rays += trace_sample(packet, cache, ctx, pattern, sample_stratum(pattern, s),
+                           cache.planes[static_cast<std::size_t>(s)],
+                           [](std::size_t, const LightLanes&) {});
+    }
+    return rays;
+  });
+  if (!done) drop_planes(cache, first);
+  return done;
+}
+
+void size_planes(SampleCache& cache, std::size_t lights) {
+  for (SamplePlane& plane : cache.planes) size_plane(plane, cache.pixel_count(), lights);
+}
+
+bool recompute_light_factors(SampleCache& cache, const RenderContext& ctx) {
+  size_planes(cache, ctx.plan.lights.size());
+  const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
+  return for_each_packet(cache, ctx, [&](SamplePacket& packet) {
+    long long rays = 0;
+    for (int s = 0; s < cache.samples(); ++s) {
+      SamplePlane& plane = cache.planes[static_cast<std::size_t>(s)];
+      packet_directions(packet, cache, pattern, sample_stratum(pattern, s));
+      load_hits(packet, cache.width, plane);
+      rays += shade_sample(packet, cache, ctx, plane, [](std::size_t, const LightLanes&) {});
+    }
+    return rays;
+  });
+}
+
+}  // namespace gloss

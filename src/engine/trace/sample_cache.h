@@ -1,0 +1,83 @@
+#pragma once
+// Per-sample cache of one image: the primary hit of every sample and, per planned light, the
+// geometry factors of the shading contract (shading.h LightFactors). Stored plane by plane
+// (plane s holds sample s of every pixel), so progressive passes append planes. Every field is
+// its own array (structure of arrays): packets store and re-shading loops read them as vectors.
+// Bytes per sample: 20 for the hit + 16 per planned light.
+#include <cstdint>
+#include <vector>
+
+#include "base/uninitialized_buffer.h"
+#include "engine/render_context.h"
+#include "scene/camera.h"
+#include "shading/shading.h"
+
+namespace gloss {
+
+// shading.h's LightFactors of one planned light for every pixel of a plane.
+struct LightFactorPlane {
+  UninitializedBuffer<float> diffuse_weight, spec_weight, cos_phong, cos_blinn;
+
+  void resize(std::size_t pixels) {
+    diffuse_weight.resize(pixels);
+    spec_weight.resize(pixels);
+    cos_phong.resize(pixels);
+    cos_blinn.resize(pixels);
+  }
+  const float* cosine(ShadingModel model) const {
+    return model == ShadingModel::phong ? cos_phong.data() : cos_blinn.data();
+  }
+};
+
+struct SamplePlane {
+  UninitializedBuffer<std::int32_t> object;  // object index (= geomID), -1 when the ray missed
+  UninitializedBuffer<std::uint32_t> prim;   // triangle index; 0 for spheres
+  UninitializedBuffer<float> t, u, v;        // hit distance (unit direction) and barycentrics
+  std::vector<LightFactorPlane> lights;      // [planned light]
+};
+
+struct SampleCache {
+  int width = 0, height = 0;  // of the region cached: full width, rows [row0, row0 + height)
+  int image_height = 0;       // of the whole image (the camera's aspect)
+  int row0 = 0;               // first image row of the region
+  int target_spp = 1;         // the stratification the sample positions belong to
+  std::uint32_t seed = 0;
+  CameraFrame camera;            // float: Embree's rays
+  CameraBasis<double> camera_d;  // double: the directions hit points are rebuilt with
+  std::vector<SamplePlane> planes;
+  std::vector<SamplePlane> spare;  // planes of an earlier image, reused to avoid page faults
+
+  int samples() const { return static_cast<int>(planes.size()); }
+  std::size_t pixel_count() const { return static_cast<std::size_t>(width) * height; }
+  std::size_t bytes() const;
+};
+
+// An empty cache for scene.camera and a width x height image, with the scene's seed, covering
+// rows [row0, row0 + rows) (rows < 0: all of them). One-shot renders go band by band to bound
+// memory; the progressive engine caches whole images.
+SampleCache make_sample_cache(const Scene& scene, int width, int height, int target_spp,
+                              int row0 = 0, int rows = -1);
+
+// Restarts the cache for a new image (camera, size or pattern) keeping its memory.
+void reset_sample_cache(SampleCache& cache, const Scene& scene, int width, int height,
+                        int target_spp, int row0 = 0, int rows = -1);
+
+// Traces planes [samples(), samples() + count) and computes their light factors. On
+// cancellation the new planes are dropped and false is returned; the cache stays consistent.
+bool add_samples(SampleCache& cache, const RenderContext& ctx, int count);
+
+// Appends count planes sized for the cache and `lights` planned lights (memory of spare planes
+// reused), and drops the planes from index first on (to the spares): the bracket of a pass that
+// traces new planes (add_samples, trace_single_sample).
+void append_planes(SampleCache& cache, std::size_t lights, int count);
+void drop_planes(SampleCache& cache, int first);
+
+// Sizes every plane for the cache's pixels and `lights` planned lights (before light factors
+// are recomputed for another plan).
+void size_planes(SampleCache& cache, std::size_t lights);
+
+// Recomputes the light factors (shadow rays included) of every plane for the context's scene
+// and plan, reusing the primary hits. false when cancelled (the factors are then stale).
+bool recompute_light_factors(SampleCache& cache, const RenderContext& ctx);
+
+}  // namespace gloss

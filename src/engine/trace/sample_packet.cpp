@@ -1,0 +1,240 @@
+#include "engine/trace/sample_packet.h"
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+#include <embree3/rtcore.h>
+
+#include "engine/simd/lane_gather.h"
+#include "engine/simd/lane_mask.h"
+#include "engine/simd/lane_math.h"
+#include "engine/simd/lane_records.h"
+#include "engine/trace/ray_packet.h"
+#include "scene/camera.h"
+#include "shading/shading.h"
+#include "shading/surface.h"
+
+// The loops over kLanes below are written so GCC vectorizes them (checked with
+// -fopt-info-vec): structure-of-arrays loads and stores, inline maths, selects instead of
+// branches. Surface data comes by 16-lane gathers from the surface table; only the refinement
+// of sphere hits stays scalar.
+
+namespace gloss {
+
+SamplePacket::SamplePacket(int bx0, int by0, int bx1, int by1)
+    : x0(bx0), y0(by0), x1(bx1), y1(by1) {
+  for (int i = 0; i < kLanes; ++i) valid[i] = x0 + i < x1 && y0 < y1 ? -1 : 0;
+}
+
+void packet_directions(SamplePacket& packet, const SampleCache& cache, const SamplePattern& pattern,
+                       int stratum) {
+  alignas(64) double px[kLanes], py[kLanes];
+  if (pattern.count <= 1) {  // pixel centres; sample_offset would say so lane by lane
+    for (int i = 0; i < kLanes; ++i) {
+      px[i] = static_cast<double>(packet.x0 + i) + 0.5;
+      py[i] = static_cast<double>(packet.y0 + cache.row0) + 0.5;
+    }
+  } else {
+    for (int i = 0; i < kLanes; ++i) {  // integer hashing
+      const int x = packet.x0 + i, row = packet.y0 + cache.row0;
+      const SampleOffset o = sample_offset(pattern, stratum, x, row);
+      px[i] = static_cast<double>(x) + static_cast<double>(o.dx);
+      py[i] = static_cast<double>(row) + static_cast<double>(o.dy);
+    }
+  }
+  // camera_direction<double> with its normalisation done by normalize_lanes.
+  const CameraBasis<double>& basis = cache.camera_d;
+  const double to_x = 2.0 / cache.width, to_y = 2.0 / cache.image_height;
+  for (int i = 0; i < kLanes; ++i) {
+    const double sx = (px[i] * to_x - 1.0) * basis.scale_x;
+    const double sy = (1.0 - py[i] * to_y) * basis.scale_y;
+    const glm::dvec3 d = basis.forward + sx * basis.right + sy * basis.up;
+    packet.dir_x[i] = d.x;
+    packet.dir_y[i] = d.y;
+    packet.dir_z[i] = d.z;
+  }
+  normalize_lanes(packet.dir_x, packet.dir_y, packet.dir_z);
+}
+
+long long trace_primary(SamplePacket& packet, const SampleCache& cache, const RenderContext& ctx) {
+  RTCRayHit16 rh;
+  const glm::vec3 eye = cache.camera.eye;
+  for (int i = 0; i < kLanes; ++i) {
+    const glm::vec3 dir(static_cast<float>(packet.dir_x[i]), static_cast<float>(packet.dir_y[i]),
+                        static_cast<float>(packet.dir_z[i]));
+    set_packet_ray(rh.ray, i, eye, dir);
+    rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+  }
+  RTCIntersectContext context = coherent_context();
+  rtcIntersect16(packet.valid, ctx.embree->handle(), &context, &rh);
+  const long long rays = count_set_lanes(packet.valid);
+  for (int i = 0; i < kLanes; ++i) {
+    const bool hit = packet.valid[i] != 0 && rh.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
+    packet.object[i] = hit ? static_cast<std::int32_t>(rh.hit.geomID[i]) : -1;
+    packet.prim[i] = hit ? rh.hit.primID[i] : 0u;
+    packet.t[i] = hit ? rh.ray.tfar[i] : 0.0f;
+    packet.u[i] = hit ? rh.hit.u[i] : 0.0f;
+    packet.v[i] = hit ? rh.hit.v[i] : 0.0f;
+  }
+  if (ctx.plan.spheres) {
+    for (int i = 0; i < kLanes; ++i) {
+      if (packet.object[i] < 0) continue;
+      const Object& obj = ctx.scene->objects[static_cast<std::size_t>(packet.object[i])];
+      if (obj.type != ObjectType::sphere) continue;
+      const glm::dvec3 dir(packet.dir_x[i], packet.dir_y[i], packet.dir_z[i]);
+      packet.t[i] = refine_sphere_hit(obj, eye, dir, packet.t[i]);
+    }
+  }
+  return rays;
+}
+
+void store_hits(const SamplePacket& packet, int width, SamplePlane& plane) {
+  stream_lanes(packet, width, packet.object, plane.object.data());
+  stream_lanes(packet, width, packet.prim, plane.prim.data());
+  stream_lanes(packet, width, packet.t, plane.t.data());
+  stream_lanes(packet, width, packet.u, plane.u.data());
+  stream_lanes(packet, width, packet.v, plane.v.data());
+}
+
+void load_hits(SamplePacket& packet, int width, const SamplePlane& plane) {
+  load_lanes(packet, width, plane.object.data(), packet.object, -1);
+  load_lanes(packet, width, plane.prim.data(), packet.prim, 0u);
+  load_lanes(packet, width, plane.t.data(), packet.t, 0.0f);
+  load_lanes(packet, width, plane.u.data(), packet.u, 0.0f);
+  load_lanes(packet, width, plane.v.data(), packet.v, 0.0f);
+}
+
+namespace {
+// HitGeometry of the lanes, split by component.
+struct GeometryLanes {
+  alignas(64) float a[3][kLanes];  // centre or face normal
+  alignas(64) float n[9][kLanes];  // n0.xyz, n1.xyz, n2.xyz (smooth triangles)
+  alignas(64) std::int32_t kind[kLanes];
+};
+
+// The lanes' records of the scene's surface table.
+LaneKinds gather_geometry(const SamplePacket& packet, const SurfaceTable& table,
+                          GeometryLanes& out) {
+  alignas(64) std::int32_t record[kLanes];
+  // Missed lanes hold a sphere record (0) but never need sphere maths.
+  const ObjectColumns columns = {table.base.data(), table.stride.data(), table.kind.data(),
+                                 table.base.size()};
+  const KindsPresent present = lane_records(packet.object, packet.prim, columns, kSphere, kSphere,
+                                            kSmoothTriangle, record, out.kind);
+  const LaneKinds kinds = {present.probe, present.any};
+  const LaneGather by_record(record);
+  const std::size_t records = table.a[0].size();
+  for (int c = 0; c < 3; ++c)
+    by_record(table.a[static_cast<std::size_t>(c)].data(), records, out.a[c]);
+  if (kinds.smooth) {  // else no lane reads the vertex normals (left unset)
+    for (int c = 0; c < 9; ++c) {
+      by_record(table.normals[static_cast<std::size_t>(c)].data(), records, out.n[c]);
+    }
+  }
+  return kinds;
+}
+
+glm::vec3 lane_vec(const float (&a)[9][kLanes], int k, int i) {
+  return {a[3 * k][i], a[3 * k + 1][i], a[3 * k + 2][i]};
+}
+
+}  // namespace
+
+namespace {
+template <bool Spheres, bool Smooth>
+void surfaces_of_kinds(const SamplePacket& packet, const GeometryLanes& geometry,
+                       const glm::vec3& eye, SurfaceLanes& out) {
+  for (int i = 0; i < kLanes; ++i) {
+    HitGeometry g;
+    g.a = {geometry.a[0][i], geometry.a[1][i], geometry.a[2][i]};
+    if constexpr (Smooth) {  // set only when some lane is smooth (gather_geometry)
+      g.n0 = lane_vec(geometry.n, 0, i);
+      g.n1 = lane_vec(geometry.n, 1, i);
+      g.n2 = lane_vec(geometry.n, 2, i);
+    }
+    g.u = packet.u[i];
+    g.v = packet.v[i];
+    g.sphere = geometry.kind[i] == kSphere;
+    g.smooth = geometry.kind[i] == kSmoothTriangle;
+    const bool hit = packet.object[i] >= 0;
+    const glm::dvec3 dir(packet.dir_x[i], packet.dir_y[i], packet.dir_z[i]);
+    out.hit[i] = hit ? -1 : 0;
+    out.set(i, surface_from<Spheres, Smooth>(g, eye, dir, hit ? packet.t[i] : 1.0f));
+  }
+}
+}  // namespace
+
+void packet_surfaces(const SamplePacket& packet, const SampleCache& cache, const RenderContext& ctx,
+                     SurfaceLanes& out) {
+  GeometryLanes geometry;
+  const LaneKinds kinds = gather_geometry(packet, ctx.embree->surfaces(), geometry);
+  const glm::vec3 eye = cache.camera.eye;
+  if (kinds.spheres && kinds.smooth) {
+    surfaces_of_kinds<true, true>(packet, geometry, eye, out);
+  } else if (kinds.spheres) {
+    surfaces_of_kinds<true, false>(packet, geometry, eye, out);
+  } else if (kinds.smooth) {
+    surfaces_of_kinds<false, true>(packet, geometry, eye, out);
+  } else {
+    surfaces_of_kinds<false, false>(packet, geometry, eye, out);
+  }
+}
+
+long long packet_light(const SamplePacket& packet, const SurfaceLanes& surfaces,
+                       const RenderContext& ctx, std::size_t li, LightLanes& out) {
+  const PointLight& light = ctx.scene->lights[static_cast<std::size_t>(ctx.plan.lights[li])];
+  alignas(64) int lit[kLanes];  // Embree mask, 64-byte aligned
+  for (int i = 0; i < kLanes; ++i) {
+    const Surface s = surfaces.get(i);
+    lit[i] = surfaces.hit[i] != 0 && glm::dot(s.n, light.position - s.p) > 0.0f ? -1 : 0;
+  }
+  alignas(64) float vis[kLanes];
+  for (int i = 0; i < kLanes; ++i) vis[i] = 1.0f;
+  long long rays = 0;
+  if (ctx.plan.shadow_rays) {
+    RTCRay16 ray;
+    for (int i = 0; i < kLanes; ++i) {
+      const glm::vec3 org = shadow_ray_origin(surfaces.get(i), packet.t[i]);
+      set_packet_ray(ray, i, org, light.position - org, kShadowRayEnd);
+    }
+    rays = count_set_lanes(lit);
+    RTCIntersectContext context = coherent_context();
+    rtcOccluded16(lit, ctx.embree->handle(), &context, &ray);
+    for (int i = 0; i < kLanes; ++i) {
+      vis[i] = lit[i] != 0 && ray.tfar[i] == -std::numeric_limits<float>::infinity() ? 0.0f : 1.0f;
+    }
+  }
+  // One copy of the loop per attenuation switch, so each sees a constant and the (1, 0, 0) copy
+  // does no attenuation maths.
+  auto factors = [&](auto unit_attenuation) {
+    for (int i = 0; i < kLanes; ++i) {
+      const Surface s = surfaces.get(i);
+      const LightFactors<float> f =
+          light_factors<float>(s.p, s.n, s.v, light.position, light.attenuation,
+                               decltype(unit_attenuation)::value, vis[i]);
+      const bool on = lit[i] != 0;
+      out.diffuse_weight[i] = on ? f.diffuse_weight : 0.0f;
+      out.spec_weight[i] = on ? f.spec_weight : 0.0f;
+      out.cos_phong[i] = on ? f.cos_phong : 0.0f;
+      out.cos_blinn[i] = on ? f.cos_blinn : 0.0f;
+    }
+  };
+  if (ctx.plan.unit_attenuation[li]) {
+    factors(std::true_type{});
+  } else {
+    factors(std::false_type{});
+  }
+  return rays;
+}
+
+void store_light(const SamplePacket& packet, int width, const LightLanes& lanes,
+                 LightFactorPlane& plane) {
+  stream_lanes(packet, width, lanes.diffuse_weight, plane.diffuse_weight.data());
+  stream_lanes(packet, width, lanes.spec_weight, plane.spec_weight.data());
+  stream_lanes(packet, width, lanes.cos_phong, plane.cos_phong.data());
+  stream_lanes(packet, width, lanes.cos_blinn, plane.cos_blinn.data());
+}
+
+}  // namespace gloss

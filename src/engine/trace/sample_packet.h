@@ -1,0 +1,175 @@
+#pragma once
+// One row of 16 samples traced and shaded together: Embree's 16-ray packets
+// (rtcIntersect16, rtcOccluded16) for the rays, and structure-of-arrays lanes for the maths in
+// between, so each per-sample step runs as vector code (16 floats = one AVX-512 register).
+// Steps in data-flow order: directions -> primary hits -> surfaces -> per light: shadow rays
+// and light factors. Lane i is pixel (x0 + i, y0) of the cached region. A row (not a 4 x 4 block,
+// which Embree traces about 4% faster) makes each field of a packet one 64-byte cache line of
+// the cache's arrays, which store_lanes can then stream past the caches without first reading
+// the line (the per-sample cache is written once and read back only by later edits).
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+
+#include "engine/parallel_loops.h"
+#include "engine/render_context.h"
+#include "engine/simd/lane_mask.h"
+#include "engine/simd/lane_store.h"
+#include "engine/simd/lanes.h"
+#include "engine/trace/sample_cache.h"
+#include "shading/sampling.h"
+#include "shading/surface.h"
+
+namespace gloss {
+
+struct SamplePacket {
+  int x0, y0, x1, y1;             // region pixels covered, [x0, x1) x [y0, y1)
+  alignas(64) int valid[kLanes];  // Embree mask: -1 inside the region (64-B aligned)
+  alignas(64) double dir_x[kLanes], dir_y[kLanes], dir_z[kLanes];  // unit
+  // Primary hits: object = geomID (-1: missed), prim = triangle (0 for spheres), t along the
+  // unit direction, Embree's barycentrics u, v.
+  alignas(64) std::int32_t object[kLanes];
+  alignas(64) std::uint32_t prim[kLanes];
+  alignas(64) float t[kLanes], u[kLanes], v[kLanes];
+
+  SamplePacket(int bx0, int by0, int bx1, int by1);
+};
+
+// Surfaces of the lanes (surface.h Surface, split by component). hit is -1 where the primary
+// ray hit something.
+struct SurfaceLanes {
+  alignas(64) int hit[kLanes];
+  alignas(64) float px[kLanes], py[kLanes], pz[kLanes];  // point
+  alignas(64) float nx[kLanes], ny[kLanes], nz[kLanes];  // shading normal
+  alignas(64) float gx[kLanes], gy[kLanes], gz[kLanes];  // geometric normal
+  alignas(64) float vx[kLanes], vy[kLanes], vz[kLanes];  // to the eye
+
+  Surface get(int i) const {
+    Surface s;
+    s.p = {px[i], py[i], pz[i]};
+    s.n = {nx[i], ny[i], nz[i]};
+    s.ng = {gx[i], gy[i], gz[i]};
+    s.v = {vx[i], vy[i], vz[i]};
+    return s;
+  }
+  void set(int i, const Surface& s) {
+    px[i] = s.p.x, py[i] = s.p.y, pz[i] = s.p.z;
+    nx[i] = s.n.x, ny[i] = s.n.y, nz[i] = s.n.z;
+    gx[i] = s.ng.x, gy[i] = s.ng.y, gz[i] = s.ng.z;
+    vx[i] = s.v.x, vy[i] = s.v.y, vz[i] = s.v.z;
+  }
+};
+
+// shading.h's LightFactors of one light for the lanes; zeros where unlit or missed.
+struct LightLanes {
+  alignas(64) float diffuse_weight[kLanes], spec_weight[kLanes];
+  alignas(64) float cos_phong[kLanes], cos_blinn[kLanes];
+};
+
+// Directions of sample `stratum` for every lane (y is a region row; the pattern and the camera
+// use image rows).
+void packet_directions(SamplePacket& packet, const SampleCache& cache, const SamplePattern& pattern,
+                       int stratum);
+
+// Traces the primary rays and fills the hit lanes; returns the rays traced.
+long long trace_primary(SamplePacket& packet, const SampleCache& cache, const RenderContext& ctx);
+
+// Hit lanes to and from a cache plane (the region is cache.width pixels wide).
+void store_hits(const SamplePacket& packet, int width, SamplePlane& plane);
+void load_hits(SamplePacket& packet, int width, const SamplePlane& plane);
+
+void packet_surfaces(const SamplePacket& packet, const SampleCache& cache, const RenderContext& ctx,
+                     SurfaceLanes& out);
+
+// Shadow rays (when planned) and light factors of planned light li; returns the rays traced.
+long long packet_light(const SamplePacket& packet, const SurfaceLanes& surfaces,
+                       const RenderContext& ctx, std::size_t li, LightLanes& out);
+
+void store_light(const SamplePacket& packet, int width, const LightLanes& lanes,
+                 LightFactorPlane& plane);
+
+// Copies lanes to a width-wide image array and back (clipped to the packet's pixels).
+template <class T>
+void store_lanes(const SamplePacket& packet, int width, const T* lanes, T* image) {
+  T* row = image + static_cast<std::size_t>(packet.y0) * width + packet.x0;
+  for (int i = 0; i < packet.x1 - packet.x0; ++i) row[i] = lanes[i];
+}
+
+// store_lanes for arrays written once and read much later (the per-sample cache): a whole,
+// aligned line is streamed past the caches (simd/lane_store.h).
+template <class T>
+void stream_lanes(const SamplePacket& packet, int width, const T* lanes, T* image) {
+  T* row = image + static_cast<std::size_t>(packet.y0) * width + packet.x0;
+  if (packet.x1 - packet.x0 == kLanes && stream_lane_line(lanes, row)) return;
+  store_lanes(packet, width, lanes, image);
+}
+
+template <class T>
+void load_lanes(const SamplePacket& packet, int width, const T* image, T* lanes, T fill) {
+  for (int i = 0; i < kLanes; ++i) lanes[i] = fill;
+  const T* row = image + static_cast<std::size_t>(packet.y0) * width + packet.x0;
+  for (int i = 0; i < packet.x1 - packet.x0; ++i) lanes[i] = row[i];
+}
+
+// Whether some lane's primary ray hit something.
+inline bool any_hit(const SamplePacket& packet) {
+  return !all_lanes_negative(packet.object);
+}
+
+// Surfaces of the packet's hits, then per planned light the factors, stored in plane and each
+// also handed to on_light(li, lanes) for a consumer fused into the same pass. Returns the
+// shadow rays traced.
+template <class OnLight>
+long long shade_sample(const SamplePacket& packet, const SampleCache& cache,
+                       const RenderContext& ctx, SamplePlane& plane, OnLight&& on_light) {
+  if (!any_hit(packet)) {  // all background (image borders): every light's factors are zero
+    LightLanes none{};
+    for (std::size_t li = 0; li < ctx.plan.lights.size(); ++li) {
+      store_light(packet, cache.width, none, plane.lights[li]);
+      on_light(li, none);
+    }
+    return 0;
+  }
+  SurfaceLanes surfaces;
+  packet_surfaces(packet, cache, ctx, surfaces);
+  long long rays = 0;
+  for (std::size_t li = 0; li < ctx.plan.lights.size(); ++li) {
+    LightLanes lanes;
+    rays += packet_light(packet, surfaces, ctx, li, lanes);
+    store_light(packet, cache.width, lanes, plane.lights[li]);
+    on_light(li, lanes);
+  }
+  return rays;
+}
+
+// Traces sample `stratum` of the packet into plane: directions, primary hits (stored), then
+// shade_sample. Returns the rays traced.
+template <class OnLight>
+long long trace_sample(SamplePacket& packet, const SampleCache& cache, const RenderContext& ctx,
+                       const SamplePattern& pattern, int stratum, SamplePlane& plane,
+                       OnLight&& on_light) {
+  packet_directions(packet, cache, pattern, stratum);
+  const long long rays = trace_primary(packet, cache, ctx);
+  store_hits(packet, cache.width, plane);
+  return rays + shade_sample(packet, cache, ctx, plane, on_light);
+}
+
+// Runs f(packet) -> rays over the cached region's packets, band by band of whole rows on
+// oneTBB workers (parallel_rows): the caches' arrays are then read and written as long
+// streams. Adds the rays to ctx.rays. false when cancelled.
+template <class F>
+bool for_each_packet(const SampleCache& cache, const RenderContext& ctx, F&& f) {
+  return parallel_rows(cache.width, cache.height, ctx.cancel, [&](int y0, int y1) {
+    long long rays = 0;
+    for (int y = y0; y < y1; ++y) {
+      for (int x = 0; x < cache.width; x += kLanes) {
+        SamplePacket packet(x, y, std::min(x + kLanes, cache.width), y + 1);
+        rays += f(packet);
+      }
+    }
+    finish_streaming_stores();
+    if (ctx.rays != nullptr) ctx.rays->fetch_add(rays, std::memory_order_relaxed);
+  });
+}
+
+}  // namespace gloss

@@ -1,0 +1,102 @@
+#include "engine/trace/single_sample_pass.h"
+
+#include <cstring>
+
+#include "engine/shade/power_lanes.h"
+#include "engine/shade/recombination.h"
+#include "engine/shade/total_lanes.h"
+#include "engine/simd/lane_store.h"
+#include "engine/trace/sample_packet.h"
+
+namespace gloss {
+
+namespace {
+// Writes the packet's pixels (r, g, b each) to its row of image (clipped to the packet). The
+// total is not read again by the pass, so a whole packet (192 bytes, 16-byte aligned in a
+// std::vector of glm::vec3) is streamed past the caches; the sfence of for_each_packet orders it.
+void store_pixels(const SamplePacket& packet, const float (&rgb)[3 * kLanes], Image& image) {
+  float* row = &image.pixels[static_cast<std::size_t>(packet.y0) * image.width + packet.x0].x;
+  const int n = packet.x1 - packet.x0;
+  if (n == kLanes && stream_rgb_lanes(rgb, row)) return;
+  std::memcpy(row, rgb, sizeof(float) * 3 * static_cast<std::size_t>(n));
+}
+
+// A pass over the packets of a cache holding one sample per pixel: sample(packet, on_light)
+// fills plane 0 for the packet (tracing the hits or reusing them) and hands each planned
+// light's lanes to on_light, which turns them into pixel factors on the spot (and, given a
+// total image, into the total too).
+template <class Sample>
+bool fused_factors_pass(const SampleCache& cache, const RenderContext& ctx, PixelFactors& factors,
+                        Image* total, Sample&& sample) {
+  const Scene& scene = *ctx.scene;
+  const std::size_t lights = ctx.plan.lights.size();
+  const std::size_t pixels = cache.pixel_count();
+  size_pixel_factors(factors, cache.width, cache.height, 1, lights);
+  const MaterialExponents exponents = material_exponents(scene);
+  const std::vector<std::int32_t> materials = object_materials(scene);
+  const ShadingModel model = scene.render.model;
+  const int width = cache.width;
+  if (total != nullptr && (total->width != width || total->height != cache.height)) {
+    *total = Image(width, cache.height);
+  }
+  const Recombination recombination(ctx);
+  return for_each_packet(cache, ctx, [&](SamplePacket& packet) {
+    alignas(64) std::int32_t material[kLanes];
+    alignas(64) float diffuse[kLanes], specular[kLanes];
+    TotalLanes totals(recombination);
+    bool coverage = false;
+    auto on_light = [&](std::size_t li, const LightLanes& lanes) {
+      if (!coverage) {  // first light: the primary hits are final by now
+        single_sample_coverage(materials, packet.object, kLanes, material);
+        coverage = true;
+      }
+      single_sample_light(exponents, scene.render.pow, material, lanes.diffuse_weight,
+                          lanes.spec_weight,
+                          model == ShadingModel::phong ? lanes.cos_phong : lanes.cos_blinn, kLanes,
+                          diffuse, specular);
+      stream_lanes(packet, width, diffuse, &factors.diffuse[li * pixels]);
+      stream_lanes(packet, width, specular, &factors.specular[li * pixels]);
+      if (total != nullptr) totals.add_light(material, li, diffuse, specular);
+    };
+    const long long rays = sample(packet, on_light);
+    if (!coverage) {
+      single_sample_coverage(materials, packet.object, kLanes, material);
+    }
+    stream_lanes(packet, width, material, factors.material.data());
+    if (total != nullptr) {
+      float rgb[3 * kLanes];
+      totals.store(material, rgb);
+      store_pixels(packet, rgb, *total);
+    }
+    return rays;
+  });
+}
+}  // namespace
+
+bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFactors& factors,
+                         Image* total) {
+  drop_planes(cache, 0);  // the first sample of a fresh image (callers reset the cache)
+  append_planes(cache, ctx.plan.lights.size(), 1);
+  const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
+  const int stratum = sample_stratum(pattern, 0);
+  const bool done =
+      fused_factors_pass(cache, ctx, factors, total, [&](SamplePacket& packet, auto& on_light) {
+        return trace_sample(packet, cache, ctx, pattern, stratum, cache.planes[0], on_light);
+      });
+  if (!done) drop_planes(cache, 0);
+  return done;
+}
+
+bool relight_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFactors& factors,
+                           Image* total) {
+  size_planes(cache, ctx.plan.lights.size());
+  const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
+  const int stratum = sample_stratum(pattern, 0);
+  return fused_factors_pass(cache, ctx, factors, total, [&](SamplePacket& packet, auto& on_light) {
+    packet_directions(packet, cache, pattern, stratum);
+    load_hits(packet, cache.width, cache.planes[0]);
+    return shade_sample(packet, cache, ctx, cache.planes[0], on_light);
+  });
+}
+
+}  // namespace gloss

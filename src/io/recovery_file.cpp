@@ -1,0 +1,67 @@
+#include "io/recovery_file.h"
+
+#include <ctime>
+#include <system_error>
+
+#include <nlohmann/json.hpp>
+
+#include "base/atomic_file.h"
+#include "base/error.h"
+#include "io/scene_loader.h"
+
+namespace gloss {
+
+namespace {
+
+constexpr int kRecoveryVersion = 1;
+
+std::string local_time_text() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  localtime_r(&now, &tm);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M:%S", &tm);
+  return text;
+}
+
+}  // namespace
+
+std::string recovery_text(const Scene& scene, int selected_object) {
+  nlohmann::json j;
+  j["gloss_recovery"] = kRecoveryVersion;
+  j["saved_at"] = local_time_text();
+  j["scene_path"] = scene.path;
+  j["selected_object"] = selected_object;
+  j["scene"] = nlohmann::json::parse(scene_to_json_text(scene));
+  return j.dump(2) + "\n";
+}
+
+Recovery parse_recovery(const std::string& text, const std::string& file) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(file, std::string("not a recovery file: ") + e.what());
+  }
+  if (!j.is_object() || j.value("gloss_recovery", 0) != kRecoveryVersion || !j.contains("scene") ||
+      !j["scene"].is_object()) {
+    throw InputError(
+        file, "not a gloss recovery file (version " + std::to_string(kRecoveryVersion) + ")");
+  }
+  Recovery recovery;
+  const std::string scene_path = j.value("scene_path", std::string());
+  // The scene's relative paths (meshes) resolve against the file the session had open.
+  recovery.scene = parse_scene(j["scene"].dump(), scene_path.empty() ? file : scene_path);
+  recovery.scene.path = scene_path;
+  recovery.selected_object = j.value("selected_object", -1);
+  recovery.saved_at = j.value("saved_at", std::string());
+  return recovery;
+}
+
+std::optional<Recovery> read_recovery(const std::filesystem::path& file) {
+  std::error_code error;
+  if (!std::filesystem::exists(file, error)) return std::nullopt;
+  return parse_recovery(read_text_file(file.string()), file.string());
+}
+
+}  // namespace gloss

@@ -1,0 +1,223 @@
+#include "io/scene_loader.h"
+
+#include <filesystem>
+#include <utility>
+
+#include "base/atomic_file.h"
+#include "base/error.h"
+#include "base/text_distance.h"
+#include "io/json_location.h"
+#include "io/material_json.h"
+#include "io/scene_json_reader.h"
+#include "io/scene_object_reader.h"
+
+namespace gloss {
+
+namespace {
+
+// A SAX pass that only records where parsing stops and on which token. json_location reports
+// syntax errors; this finds values nlohmann refuses after lexing them, such as 1e999 (number
+// overflow, an out_of_range exception without a position).
+class ErrorLocator : public nlohmann::json_sax<nlohmann::json> {
+ public:
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(number_integer_t) override { return true; }
+  bool number_unsigned(number_unsigned_t) override { return true; }
+  bool number_float(number_float_t, const string_t&) override { return true; }
+  bool string(string_t&) override { return true; }
+  bool binary(binary_t&) override { return true; }
+  bool start_object(std::size_t) override { return true; }
+  bool key(string_t&) override { return true; }
+  bool end_object() override { return true; }
+  bool start_array(std::size_t) override { return true; }
+  bool end_array() override { return true; }
+  bool parse_error(std::size_t position, const std::string& token,
+                   const nlohmann::detail::exception&) override {
+    // position counts the characters read, up to the end of the offending token.
+    start = position >= token.size() ? position - token.size() : 0;
+    found = true;
+    return false;
+  }
+  std::size_t start = 0;
+  bool found = false;
+};
+
+nlohmann::json parse_scene_json(const std::string& text, const std::string& path) {
+  try {
+    return parse_json_text(text, path);
+  } catch (const nlohmann::json::exception& error) {
+    const std::string what = error.what();
+    const std::size_t prefix = what.find("] ");
+    const std::string message = prefix == std::string::npos ? what : what.substr(prefix + 2);
+    ErrorLocator locator;
+    nlohmann::json::sax_parse(text, &locator);
+    int line = 0, column = 0;
+    if (locator.found) byte_offset_to_line_column(text, locator.start, line, column);
+    throw InputError(path, message, line, column);
+  }
+}
+
+const std::vector<std::string> kShadingModelNames = {"phong", "blinn-phong"};
+const std::vector<std::string> kPowModeNames = {"exact", "fast"};
+
+Camera read_camera(const JsonObjectReader& top) {
+  Camera camera;
+  if (!top.has("camera")) return camera;
+  const JsonObjectReader reader(top.required("camera"), top.file(), "camera",
+                                {"eye", "target", "up", "fov_y"});
+  camera.eye = reader.vec3("eye", camera.eye);
+  camera.target = reader.vec3("target", camera.target);
+  camera.up = reader.vec3("up", camera.up);
+  camera.fov_y = reader.number("fov_y", camera.fov_y);
+  return camera;
+}
+
+std::vector<PointLight> read_lights(const JsonObjectReader& top) {
+  std::vector<PointLight> lights;
+  if (!top.has("lights")) return lights;
+  const nlohmann::json& array = top.required("lights");
+  if (!array.is_array()) top.fail("lights", "expected an array of lights");
+  for (std::size_t i = 0; i < array.size(); ++i) {
+    const JsonObjectReader reader(array[i], top.file(), index_path("lights", i),
+                                  {"position", "ambient", "diffuse", "specular", "attenuation"});
+    PointLight light;
+    light.position = reader.vec3("position");
+    light.ambient = reader.vec3("ambient", light.ambient);
+    light.diffuse = reader.vec3("diffuse", light.diffuse);
+    light.specular = reader.vec3("specular", light.specular);
+    light.attenuation = reader.vec3("attenuation", light.attenuation);
+    lights.push_back(light);
+  }
+  return lights;
+}
+
+MaterialMap read_materials(const JsonObjectReader& top) {
+  MaterialMap materials;
+  if (!top.has("materials")) return materials;
+  const nlohmann::json& block = top.required("materials");
+  if (!block.is_object()) top.fail("materials", "expected an object {name: material, ...}");
+  for (const auto& item : block.items()) {
+    if (item.key().empty()) top.fail("materials", "a material name must not be empty");
+    materials.emplace(item.key(), material_from_json(item.value(), top.file(),
+                                                     child_path("materials", item.key())));
+  }
+  return materials;
+}
+
+RenderSettings read_render(const JsonObjectReader& top) {
+  RenderSettings render;
+  if (!top.has("render")) return render;
+  const JsonObjectReader reader(
+      top.required("render"), top.file(), "render",
+      {"width", "height", "spp", "model", "shadows", "energy_normalize", "srgb", "seed", "pow"});
+  // Sizes are range-checked here, on the JSON number, before anything is allocated.
+  render.width = static_cast<int>(reader.integer("width", render.width, 1, kMaxImageSide));
+  render.height = static_cast<int>(reader.integer("height", render.height, 1, kMaxImageSide));
+  render.spp = static_cast<int>(reader.integer("spp", render.spp, 1, kMaxSpp));
+  const std::string model = reader.string("model", to_string(render.model));
+  if (!parse_shading_model(model, render.model)) {
+    reader.fail("model", "unknown shading model '" + model + "'" +
+                             did_you_mean(nearest_words(model, kShadingModelNames, 1)));
+  }
+  render.shadows = reader.boolean("shadows", render.shadows);
+  render.energy_normalize = reader.boolean("energy_normalize", render.energy_normalize);
+  render.srgb = reader.boolean("srgb", render.srgb);
+  render.seed = static_cast<std::uint32_t>(reader.integer("seed", render.seed, 0, 0xFFFFFFFFLL));
+  const std::string pow = reader.string("pow", "exact");
+  if (pow == "exact" || pow == "fast") {
+    render.pow = pow == "exact" ? PowMode::exact : PowMode::fast;
+  } else {
+    reader.fail("pow", "unknown pow mode '" + pow + "'" +
+                           did_you_mean(nearest_words(pow, kPowModeNames, 1)));
+  }
+  return render;
+}
+
+// Objects hold material names until every object (and every OBJ's MTL) has been read; then the
+// materials are numbered in name order and each object gets its index.
+void resolve_materials(const std::string& file, const MaterialMap& materials,
+                       std::vector<PendingObject>& pending, Scene& scene) {
+  for (const auto& [name, material] : materials) {
+    scene.material_names.push_back(name);
+    scene.materials.push_back(material);
+  }
+  for (PendingObject& item : pending) {
+    item.object.material = find_material(scene, item.material_name);
+    if (item.object.material < 0) {
+      const std::string hint =
+          scene.material_names.empty()
+              ? std::string(" (the scene defines no materials)")
+              : did_you_mean(nearest_words(item.material_name, scene.material_names, 3));
+      fail_field(file, item.field, "unknown material '" + item.material_name + "'" + hint);
+    }
+    scene.objects.push_back(std::move(item.object));
+  }
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& path,
+                  std::vector<std::string>* warnings) {
+  const nlohmann::json root = parse_scene_json(text, path);
+  const JsonObjectReader top(
+      root, path, "",
+      {"camera", "background", "ambient", "lights", "materials", "objects", "render"});
+
+  Scene scene;
+  scene.path = path;
+  scene.camera = read_camera(top);
+  scene.background = top.vec3("background", scene.background);
+  scene.ambient = top.vec3("ambient", scene.ambient);
+  scene.lights = read_lights(top);
+  scene.render = read_render(top);
+  MaterialMap materials = read_materials(top);
+
+  const nlohmann::json& objects = top.required("objects");
+  if (!objects.is_array()) top.fail("objects", "expected an array of objects");
+  ObjectReadContext context;
+  context.file = path;
+  context.base_dir = std::filesystem::path(path).parent_path().string();  // "" = current folder
+  context.warnings = warnings;
+  std::vector<PendingObject> pending;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    read_scene_object(objects[i], i, context, materials, pending);
+  }
+  resolve_materials(path, materials, pending, scene);
+  validate_scene(scene);
+  return scene;
+}
+
+Scene load_scene(const std::string& path, std::vector<std::string>* warnings) {
+  return parse_scene(read_text_file(path), path, warnings);
+}
+
+void save_scene(const Scene& scene, const std::string& path) {
+  namespace fs = std::filesystem;
+  // Relative OBJ paths were written against the old scene's folder; rebase them onto the new one.
+  Scene moved = scene;
+  const fs::path from = fs::absolute(fs::path(scene.path).parent_path()).lexically_normal();
+  const fs::path to = fs::absolute(fs::path(path).parent_path()).lexically_normal();
+  if (!scene.path.empty() && from != to) {
+    for (Object& object : moved.objects) {
+      const fs::path file(object.params.file);
+      if (object.type != ObjectType::mesh || file.empty() || file.is_absolute()) continue;
+      const fs::path relative = (from / file).lexically_normal().lexically_relative(to);
+      object.params.file = relative.empty() ? (from / file).string() : relative.generic_string();
+    }
+  }
+  moved.path = path;
+  write_text_atomically(path, scene_to_json_text(moved));
+}
+
+Scene with_teapot_tessellation(const Scene& scene, int level) {
+  nlohmann::json doc = nlohmann::json::parse(scene_to_json_text(scene));
+  for (auto& object : doc["objects"]) {
+    if (object.value("type", "") == "teapot") object["tessellation"] = level;
+  }
+  Scene out = parse_scene(doc.dump(), scene.path);
+  out.render = scene.render;
+  return out;
+}
+
+}  // namespace gloss

@@ -1,0 +1,15 @@
+#pragma once
+// The Utah teapot's patch file (assets/models/utah-teapot.txt, from the team's data folder).
+#include <string>
+
+#include "scene/teapot.h"
+
+namespace gloss {
+
+// Reads a 'patches N' / 'points M' file. Throws InputError naming the file and line.
+BezierPatches load_bezier_patches(const std::string& path);
+
+// The shipped teapot patches, loaded once (thread-safe) and kept, the lid fitted to the rim.
+const BezierPatches& teapot_patches();
+
+}  // namespace gloss

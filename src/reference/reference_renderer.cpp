@@ -1,0 +1,293 @@
+#include "reference/reference_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <type_traits>
+
+#include <embree3/rtcore.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "engine/parallel_loops.h"
+#include "engine/trace/embree_scene.h"
+#include "reference/reference_hit.h"
+#include "scene/camera.h"
+#include "scene/validation.h"
+#include "shading/sampling.h"
+#include "shading/shading.h"
+#include "shading/surface.h"
+#include "shading/total.h"
+
+namespace gloss {
+
+namespace {
+
+template <class T>
+using Vec3 = glm::tvec3<T>;
+
+// What one sample saw, for the edge mask of ReferenceOptions::edges.
+struct SampleKey {
+  std::int32_t object = -1;         // -1: missed
+  std::uint64_t shadowed = 0;       // bit i % 64 set when light i was blocked
+  bool mesh = false, flat = false;  // a triangle mesh; one without vertex normals
+  glm::vec3 p{0.0f};                // hit point
+  glm::vec3 ng{0.0f};               // geometric normal, viewer's side
+};
+
+// A hit or shadow flip between a and b. Within one mesh: b off a's tangent plane (the chord
+// leaves the plane at more than 14.5 degrees: another part of the mesh behind a silhouette of
+// it), or, on a flat mesh, another face. Spheres are convex: the object decides.
+bool discontinuous(const SampleKey& a, const SampleKey& b) {
+  if (a.object != b.object || a.shadowed != b.shadowed) return true;
+  if (a.object < 0 || !a.mesh) return false;
+  const glm::vec3 chord = b.p - a.p;
+  const float len = glm::length(chord);
+  if (std::abs(glm::dot(a.ng, chord)) > 0.25f * len) return true;
+  return a.flat && glm::dot(a.ng, b.ng) < 0.9999f;
+}
+
+// Per-pixel sums over samples, in T.
+template <class T>
+struct PixelSums {
+  Vec3<T> emissive{0}, ambient{0}, diffuse{0}, specular{0};
+  int misses = 0;
+};
+
+template <class T>
+struct Job {
+  const Scene* scene = nullptr;
+  RTCScene rtc = nullptr;
+  CameraBasis<T> camera;  // camera.h's formula evaluated in T
+  int width = 0, height = 0, spp = 1;
+  PowMode pow = PowMode::exact;
+  bool gouraud = false;
+  Vec3<T> ambient_light{0};  // A_scene + sum_i La_i
+};
+
+// The spec's shadow test for one light from a hit: the segment from the offset origin
+// (surface.h shadow_ray_origin, shared with the fast renderer) to just short of the light.
+template <class T>
+bool occluded(RTCScene scene, const ReferenceHit<T>& h, const glm::vec3& light_position) {
+  const Surface s{glm::vec3(h.p), glm::vec3(h.n), glm::vec3(h.ng), glm::vec3(h.v)};
+  const glm::vec3 org = shadow_ray_origin(s, static_cast<float>(h.t));
+  const glm::vec3 dir = light_position - org;
+  RTCRay ray;
+  ray.org_x = org.x;
+  ray.org_y = org.y;
+  ray.org_z = org.z;
+  ray.dir_x = dir.x;
+  ray.dir_y = dir.y;
+  ray.dir_z = dir.z;
+  ray.tnear = 0.0f;
+  ray.tfar = 1.0f - 1e-5f;  // as the fast renderer: a light resting on a surface still lights it
+  ray.time = 0.0f;
+  ray.mask = 0xffffffffu;
+  ray.id = 0;
+  ray.flags = 0;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  rtcOccluded1(scene, &context, &ray);
+  return ray.tfar == -std::numeric_limits<float>::infinity();
+}
+
+// The unshadowed diffuse and specular weights of one light at one point (shading.h), the
+// specular one including c^alpha: diffuse = kd Ld dw, specular = ks Ls sw (times normalisation).
+template <class T>
+void light_weights(const Job<T>& job, const Vec3<T>& p, const Vec3<T>& n, const Vec3<T>& v,
+                   const PointLight& light, T alpha, T& dw, T& sw) {
+  const LightFactors<T> f =
+      light_factors<T>(p, n, v, Vec3<T>(light.position), Vec3<T>(light.attenuation), false, T(1));
+  dw = f.diffuse_weight;
+  sw = f.spec_weight * specular_power<T>(model_cosine(f, job.scene->render.model), alpha, job.pow);
+}
+
+// Gouraud weights at a mesh hit: the corners' unshadowed weights interpolated with the
+// barycentrics (clamped at 0: barycentrics of a hit on an edge can round below 0).
+template <class T>
+void gouraud_weights(const Job<T>& job, const Mesh& mesh, std::uint32_t prim,
+                     const ReferenceHit<T>& h, const PointLight& light, T alpha, T& dw, T& sw) {
+  const glm::uvec3 tri = mesh.triangles[prim];
+  dw = sw = T(0);
+  for (int k = 0; k < 3; ++k) {
+    const unsigned index = tri[k];
+    const Vec3<T> p(mesh.positions[index]);
+    Vec3<T> n = h.ng;  // flat meshes: the face normal, already on the viewer's side
+    if (mesh.smooth()) {
+      n = glm::normalize(Vec3<T>(mesh.normals[index]));
+      if (h.flipped) n = -n;
+    }
+    const Vec3<T> v = glm::normalize(job.camera.eye - p);
+    T d = 0, s = 0;
+    light_weights(job, p, n, v, light, alpha, d, s);
+    dw += h.b[k] * d;
+    sw += h.b[k] * s;
+  }
+  dw = std::max(dw, T(0));
+  sw = std::max(sw, T(0));
+}
+
+// One sample: trace, recompute the hit in T, shade every light, add to sum.
+template <class T>
+void shade_sample(const Job<T>& job, int x, int y, int s, PixelSums<T>& sum, SampleKey& key) {
+  const Scene& scene = *job.scene;
+  const SampleOffset o = sample_offset(scene.render.seed, x, y, s, job.spp);
+  const Vec3<T> dir =
+      camera_direction<T>(job.camera, T(x) + T(o.dx), T(y) + T(o.dy), job.width, job.height);
+  RTCRayHit rh;
+  rh.ray.org_x = static_cast<float>(job.camera.eye.x);
+  rh.ray.org_y = static_cast<float>(job.camera.eye.y);
+  rh.ray.org_z = static_cast<float>(job.camera.eye.z);
+  rh.ray.dir_x = static_cast<float>(dir.x);
+  rh.ray.dir_y = static_cast<float>(dir.y);
+  rh.ray.dir_z = static_cast<float>(dir.z);
+  rh.ray.tnear = 0.0f;
+  rh.ray.tfar = std::numeric_limits<float>::infinity();
+  rh.ray.time = 0.0f;
+  rh.ray.mask = 0xffffffffu;
+  rh.ray.id = 0;
+  rh.ray.flags = 0;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  rtcIntersect1(job.rtc, &context, &rh);
+  key = SampleKey{};
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
+    ++sum.misses;
+    return;
+  }
+  const Object& object = scene.objects[rh.hit.geomID];
+  const bool is_mesh = object.type != ObjectType::sphere;
+  const ReferenceHit<T> h =
+      is_mesh ? triangle_reference_hit<T>(*object.mesh, rh.hit.primID, job.camera.eye, dir,
+                                          T(rh.ray.tfar), T(rh.hit.u), T(rh.hit.v))
+              : sphere_reference_hit<T>(object, job.camera.eye, dir, T(rh.ray.tfar));
+  key.object = static_cast<std::int32_t>(rh.hit.geomID);
+  key.mesh = is_mesh;
+  key.flat = is_mesh && !object.mesh->smooth();
+  key.p = glm::vec3(h.p);
+  key.ng = glm::vec3(h.ng);
+
+  const Material& m = scene.materials[static_cast<std::size_t>(object.material)];
+  const T alpha = T(m.shininess);
+  const T norm =
+      scene.render.energy_normalize ? energy_normalization<T>(scene.render.model, alpha) : T(1);
+  sum.emissive += Vec3<T>(m.emission);
+  sum.ambient += Vec3<T>(m.ambient) * job.ambient_light;
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    const PointLight& light = scene.lights[i];
+    T dw = 0, sw = 0;
+    bool lit_side;
+    if (job.gouraud && is_mesh) {
+      gouraud_weights(job, *object.mesh, rh.hit.primID, h, light, alpha, dw, sw);
+      lit_side = dw > T(0) || sw > T(0);
+    } else {
+      // The fast renderer's condition for a shadow ray, in T: ndl > 0.
+      lit_side = glm::dot(h.n, Vec3<T>(light.position) - h.p) > T(0);
+      if (lit_side) light_weights(job, h.p, h.n, h.v, light, alpha, dw, sw);
+    }
+    if (!lit_side) continue;
+    if (scene.render.shadows && occluded(job.rtc, h, light.position)) {
+      key.shadowed |= std::uint64_t(1) << (i % 64);
+      continue;  // vis = 0
+    }
+    sum.diffuse += Vec3<T>(m.diffuse) * Vec3<T>(light.diffuse) * dw;
+    sum.specular += Vec3<T>(m.specular) * Vec3<T>(light.specular) * (sw * norm);
+  }
+}
+
+// 1 for pixels whose own samples are mixed or that differ from one of their 8 neighbours.
+void edge_mask(const std::vector<SampleKey>& first, const std::vector<std::uint8_t>& mixed, int w,
+               int h, std::vector<std::uint8_t>& out) {
+  out.assign(first.size(), 0);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      bool edge = mixed[i] != 0;
+      for (int dy = -1; dy <= 1 && !edge; ++dy) {
+        for (int dx = -1; dx <= 1 && !edge; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+          edge = discontinuous(first[i], first[static_cast<std::size_t>(ny) * w + nx]);
+        }
+      }
+      out[i] = edge ? 1 : 0;
+    }
+  }
+}
+
+}  // namespace
+
+template <class T>
+TermImages render_reference(const Scene& scene, const ReferenceOptions& options) {
+  validate_scene(scene);
+  if (options.spp < 0 || options.spp > kMaxSpp) {
+    throw std::invalid_argument("render_reference: spp out of range");
+  }
+  const EmbreeScene embree(scene);
+  Job<T> job;
+  job.scene = &scene;
+  job.rtc = embree.handle();
+  job.width = scene.render.width;
+  job.height = scene.render.height;
+  job.spp = options.spp > 0 ? options.spp : scene.render.spp;
+  job.pow = options.pow.value_or(scene.render.pow);
+  job.gouraud = options.gouraud;
+  job.camera = make_camera_basis<T>(scene.camera, job.width, job.height);
+  job.ambient_light = Vec3<T>(scene.ambient);
+  for (const PointLight& light : scene.lights) job.ambient_light += Vec3<T>(light.ambient);
+
+  const int w = job.width, h = job.height;
+  const std::size_t pixels = static_cast<std::size_t>(w) * h;
+  TermImages out;
+  out.total = out.emissive = out.ambient = out.diffuse = out.specular = Image(w, h);
+  std::vector<SampleKey> first(options.edges != nullptr ? pixels : 0);
+  std::vector<std::uint8_t> mixed(first.size(), 0);
+  const T inv_spp = T(1) / T(job.spp);
+  const Vec3<T> background(scene.background);
+
+  auto rows = [&](const tbb::blocked_range<int>& range) {
+    for (int y = range.begin(); y != range.end(); ++y) {
+      if (options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed)) return;
+      for (int x = 0; x < w; ++x) {
+        PixelSums<T> sum;
+        SampleKey key0, key;
+        bool is_mixed = false;
+        for (int s = 0; s < job.spp; ++s) {
+          shade_sample(job, x, y, s, sum, s == 0 ? key0 : key);
+          if (s > 0 && !is_mixed) is_mixed = discontinuous(key0, key);
+        }
+        const std::size_t i = static_cast<std::size_t>(y) * w + x;
+        const Vec3<T> e = sum.emissive * inv_spp, a = sum.ambient * inv_spp,
+                      d = sum.diffuse * inv_spp, sp = sum.specular * inv_spp;
+        out.emissive.pixels[i] = glm::vec3(e);
+        out.ambient.pixels[i] = glm::vec3(a);
+        out.diffuse.pixels[i] = glm::vec3(d);
+        out.specular.pixels[i] = glm::vec3(sp);
+        out.total.pixels[i] =
+            glm::vec3(form_total(e, a, d, sp, background * (T(sum.misses) * inv_spp)));
+        if (!first.empty()) {
+          first[i] = key0;
+          mixed[i] = is_mixed ? 1 : 0;
+        }
+      }
+    }
+  };
+  tbb::parallel_for(tbb::blocked_range<int>(0, h, 1), [&](const tbb::blocked_range<int>& range) {
+    if constexpr (std::is_same_v<T, float>) {
+      DenormalsOff denormals_off;  // float results below the normal range must not slow it down
+      rows(range);
+    } else {
+      rows(range);
+    }
+  });
+  if (options.edges != nullptr) edge_mask(first, mixed, w, h, *options.edges);
+  return out;
+}
+
+template TermImages render_reference<float>(const Scene&, const ReferenceOptions&);
+template TermImages render_reference<double>(const Scene&, const ReferenceOptions&);
+
+}  // namespace gloss

@@ -1,0 +1,35 @@
+#pragma once
+// How to render: the scene's "render" block plus the accuracy knobs. Filled by the scene loader,
+// overridden by gloss-cli options and edited by the editor's panels.
+#include <cstdint>
+#include <string>
+
+namespace gloss {
+
+enum class ShadingModel { phong, blinn_phong };
+
+// "phong" / "blinn-phong"; parse returns false for any other name.
+const char* to_string(ShadingModel model);
+bool parse_shading_model(const std::string& name, ShadingModel& model);
+
+// How c^alpha is evaluated: exactly (std::pow semantics) or by a fast exp2/log2 approximation.
+enum class PowMode { exact, fast };
+
+struct RenderSettings {
+  int width = 640;   // pixels
+  int height = 480;  // pixels
+  int spp = 1;       // samples per pixel, stratified; 1 = the pixel centre
+  ShadingModel model = ShadingModel::phong;
+  bool shadows = true;
+  bool energy_normalize = false;  // specular x (alpha+2)/(2 pi), Blinn-Phong (alpha+8)/(8 pi)
+  bool srgb = false;              // PNG display encoding: false = clamp only (classic look)
+  std::uint32_t seed = 0;         // jitter seed for spp > 1; same seed, same image
+  PowMode pow = PowMode::exact;   // accuracy knob
+};
+
+// Largest image side and pixel count accepted; larger requests are refused before allocating.
+constexpr int kMaxImageSide = 16384;
+constexpr long long kMaxImagePixels = 64LL * 1024 * 1024;
+constexpr int kMaxSpp = 4096;
+
+}  // namespace gloss

@@ -1,0 +1,35 @@
+#include "scene/scene.h"
+
+#include <algorithm>
+
+namespace gloss {
+
+const char* to_string(ObjectType type) {
+  switch (type) {
+    case ObjectType::sphere:
+      return "sphere";
+    case ObjectType::quad:
+      return "quad";
+    case ObjectType::box:
+      return "box";
+    case ObjectType::teapot:
+      return "teapot";
+    case ObjectType::mesh:
+      return "mesh";
+  }
+  return "unknown";
+}
+
+int find_material(const Scene& scene, const std::string& name) {
+  for (std::size_t i = 0; i < scene.material_names.size(); ++i) {
+    if (scene.material_names[i] == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+bool has_object_type(const Scene& scene, ObjectType type) {
+  return std::any_of(scene.objects.begin(), scene.objects.end(),
+                     [type](const Object& o) { return o.type == type; });
+}
+
+}  // namespace gloss

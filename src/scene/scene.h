@@ -1,0 +1,67 @@
+#pragma once
+// The document being rendered: camera, lights, materials and objects, all resolved (meshes
+// tessellated and loaded). Made by the scene loader, edited by the editor's command layer.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "scene/camera.h"
+#include "scene/light.h"
+#include "scene/material.h"
+#include "scene/mesh.h"
+#include "scene/render_settings.h"
+
+namespace gloss {
+
+enum class ObjectType { sphere, quad, box, teapot, mesh };
+const char* to_string(ObjectType type);
+
+// The parameters an object was made from, kept so a scene saves back as the user wrote it.
+struct ShapeParams {
+  glm::vec3 quad[4]{};                      // quad: corners in order around the quad
+  glm::vec3 box_min{-0.5f}, box_max{0.5f};  // box: axis-aligned extent before rotate_y
+  std::string file;                         // mesh: OBJ path as written in the scene
+  std::string group;                        // mesh: the OBJ material group this object holds
+  glm::vec3 position{0.0f};                 // box/teapot/mesh: translation after scale and rotate_y
+  glm::vec3 scale{1.0f};                    // teapot/mesh: per-axis scale
+  float rotate_y = 0.0f;                    // box/teapot/mesh: degrees about +y
+  int tessellation = 8;                     // teapot: segments per patch side, 1..64
+  bool smooth = true;                       // teapot/mesh: interpolate vertex normals
+};
+
+struct Object {
+  std::string name;
+  ObjectType type = ObjectType::sphere;
+  int material = 0;                  // index into Scene::materials
+  glm::vec3 center{0.0f};            // sphere, world units
+  float radius = 1.0f;               // sphere, > 0
+  ShapeParams params;                // what non-sphere geometry was made from
+  std::shared_ptr<const Mesh> mesh;  // world-space triangles of every non-sphere object
+};
+
+struct Scene {
+  Camera camera;
+  glm::vec3 background{0.0f};
+  glm::vec3 ambient{0.2f};  // A_scene
+  std::vector<PointLight> lights;
+  std::vector<Material> materials;
+  std::vector<std::string> material_names;  // parallel to materials
+  std::vector<Object> objects;
+  RenderSettings render;
+  std::string path;  // the file it was loaded from; relative paths resolve against its folder
+};
+
+// Index of the material called name, or -1.
+int find_material(const Scene& scene, const std::string& name);
+
+// Whether some object of the scene has this type.
+bool has_object_type(const Scene& scene, ObjectType type);
+
+// Convex objects cannot shadow themselves; the render plan uses this.
+inline bool is_convex(ObjectType type) {
+  return type == ObjectType::sphere || type == ObjectType::box || type == ObjectType::quad;
+}
+
+}  // namespace gloss

@@ -1,0 +1,13 @@
+#pragma once
+// The checks a render needs, on a Scene however it was made (loaded, edited, or overridden by
+// gloss-cli options). Fields are named as in the scene file.
+#include "scene/scene.h"
+
+namespace gloss {
+
+// Checks everything a render needs (sizes, spp, camera, colours, attenuation) and throws
+// InputError naming the file and the field. The scene loader calls it; gloss-cli calls it again
+// after applying its overrides; the renderers call it before they allocate.
+void validate_scene(const Scene& scene);
+
+}  // namespace gloss

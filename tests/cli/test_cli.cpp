@@ -1,0 +1,236 @@
+// The real gloss-cli executable (GLOSS_CLI_PATH) against spec/scene-and-cli.md: outputs, exit
+// status 0 / 2 / 1, one "error:" line naming the file, and no output left behind by a failure.
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "io/image_io.h"
+#include "io/preset_table.h"
+#include "io/scene_loader.h"
+#include "support/scratch_folder.h"
+
+namespace gloss {
+namespace {
+
+struct CliRun {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string read_all(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+// Runs "cd cwd && gloss-cli args"; stdout and stderr go to files in logs (never in cwd, whose
+// contents the tests inspect).
+CliRun run_cli(const std::string& args, const ScratchFolder& logs, const std::string& cwd) {
+  const std::string out = logs.file("stdout.txt"), err = logs.file("stderr.txt");
+  const std::string command =
+      "cd '" + cwd + "' && '" + GLOSS_CLI_PATH + "' " + args + " >'" + out + "' 2>'" + err + "'";
+  const int raw = std::system(command.c_str());
+  CliRun run;
+  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  run.out = read_all(out);
+  run.err = read_all(err);
+  return run;
+}
+
+// A small scene that renders in milliseconds.
+const char* const kTinyScene = R"({
+  "camera": {"eye": [0, 0, 4], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y": 40},
+  "lights": [{"position": [2, 3, 4]}],
+  "materials": {"m": {"preset": "gold"}},
+  "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}],
+  "render": {"width": 40, "height": 30}
+})";
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override { write("tiny.json", kTinyScene); }
+  void write(const std::string& name, const std::string& text) {
+    std::ofstream(inputs.file(name), std::ios::binary) << text;
+  }
+  CliRun run(const std::string& args) { return run_cli(args, logs, outputs.path().string()); }
+  // A failure: the status, one stderr line "error: ..." naming what, nothing in outputs.
+  void expect_failure(const CliRun& r, int status, const std::string& names) {
+    EXPECT_EQ(r.status, status) << r.err;
+    const std::vector<std::string> lines = lines_of(r.err);
+    ASSERT_EQ(lines.size(), 1u) << r.err;
+    EXPECT_EQ(lines[0].rfind("error: ", 0), 0u) << lines[0];
+    EXPECT_NE(lines[0].find(names), std::string::npos) << lines[0];
+    EXPECT_TRUE(outputs.entries().empty()) << outputs.entries().front();
+  }
+  std::string scene(const std::string& name = "tiny.json") { return "'" + inputs.file(name) + "'"; }
+
+  ScratchFolder inputs, outputs, logs;
+};
+
+TEST_F(Cli, RenderWritesPngAndPfmAtTheRequestedSize) {
+  const CliRun r =
+      run("render " + scene() + " -o out.png --pfm out.pfm --width 24 --height 12 --spp 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Png8 png = read_png(outputs.file("out.png"));
+  EXPECT_EQ(png.width, 24);
+  EXPECT_EQ(png.height, 12);
+  const Image pfm = read_pfm(outputs.file("out.pfm"));
+  EXPECT_EQ(pfm.width, 24);
+  EXPECT_EQ(pfm.height, 12);
+  EXPECT_NE(r.out.find("out.png"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" ms"), std::string::npos) << r.out;
+}
+
+TEST_F(Cli, PngCarriesSoftwareSceneAndSettingsChunks) {
+  const CliRun r = run("render " + scene() + " -o out.png --model blinn-phong --shadows off");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Png8 png = read_png(outputs.file("out.png"));
+  std::string software, scene_text, settings;
+  for (const auto& [key, text] : png.text) {
+    if (key == "Software") software = text;
+    if (key == "gloss:scene") scene_text = text;
+    if (key == "gloss:settings") settings = text;
+  }
+  EXPECT_EQ(software, "gloss 0.1.0");
+  EXPECT_EQ(settings.rfind("40x30, 1 spp, blinn-phong, shadows off", 0), 0u) << settings;
+  // The embedded scene is the one rendered, overrides included, and loads again.
+  const Scene embedded = parse_scene(scene_text, inputs.file("tiny.json"));
+  EXPECT_EQ(embedded.render.model, ShadingModel::blinn_phong);
+  EXPECT_FALSE(embedded.render.shadows);
+}
+
+TEST_F(Cli, WithoutOutputOptionsWritesSceneStemPngInTheCurrentFolder) {
+  const CliRun r = run("render " + scene());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(outputs.entries(), std::vector<std::string>{"tiny.png"});
+  EXPECT_EQ(read_png(outputs.file("tiny.png")).width, 40);
+}
+
+TEST_F(Cli, TermsWritesFivePfmAndFivePngIntoANewFolder) {
+  const CliRun r = run("render " + scene() + " --terms terms/run1");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(outputs.path() / "terms/run1")) {
+    names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  const std::vector<std::string> expected = {
+      "ambient.pfm",  "ambient.png",  "diffuse.pfm",  "diffuse.png", "emissive.pfm",
+      "emissive.png", "specular.pfm", "specular.png", "total.pfm",   "total.png"};
+  EXPECT_EQ(names, expected);
+}
+
+TEST_F(Cli, PresetsPrintsAHeaderAnd24Rows) {
+  const CliRun r = run("presets");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::vector<std::string> lines = lines_of(r.out);
+  ASSERT_EQ(lines.size(), 25u) << r.out;
+  EXPECT_EQ(lines[0].rfind("name", 0), 0u);
+  EXPECT_EQ(lines[1].rfind("emerald ", 0), 0u) << lines[1];
+  // gold: kd 0.75164 0.60648 0.22648 to 3 decimals, shininess 0.4, exponent 0.4 x 128 = 51.2.
+  bool gold_seen = false;
+  for (const std::string& line : lines) {
+    if (line.rfind("gold ", 0) != 0) continue;
+    gold_seen = true;
+    EXPECT_NE(line.find("0.752 0.606 0.226"), std::string::npos) << line;
+    EXPECT_NE(line.find("51.2"), std::string::npos) << line;
+  }
+  EXPECT_TRUE(gold_seen);
+  EXPECT_EQ(lines[24].rfind("yellow_rubber ", 0), 0u) << lines[24];
+}
+
+TEST_F(Cli, VersionAndHelpExitZero) {
+  const CliRun version = run("--version");
+  EXPECT_EQ(version.status, 0);
+  EXPECT_EQ(version.out, "gloss-cli 0.1.0\n");
+  const CliRun help = run("render --help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("--terms"), std::string::npos);
+}
+
+TEST_F(Cli, MissingSceneFileExitsTwo) {
+  expect_failure(run("render " + scene("absent.json")), 2, "absent.json");
+}
+
+TEST_F(Cli, SceneThatIsNotJsonExitsTwoWithLineAndColumn) {
+  write("prose.json", "\n\nnot json\n");
+  expect_failure(run("render " + scene("prose.json") + " -o out.png"), 2, "prose.json:3:2:");
+}
+
+TEST_F(Cli, TruncatedSceneExitsTwoWithLineAndColumn) {
+  // Cut after the second line: the end of the text is line 3, column 1.
+  write("cut.json", "{\n  \"objects\": [\n");
+  expect_failure(run("render " + scene("cut.json") + " -o out.png"), 2, "cut.json:3:1:");
+}
+
+TEST_F(Cli, UnknownOptionExitsTwo) {
+  expect_failure(run("render " + scene() + " -o out.png --glossy"), 2, "--glossy");
+  expect_failure(run("render " + scene() + " -o out.png --glossy"), 2, "tiny.json");
+}
+
+TEST_F(Cli, ImpossibleOverridesExitTwoNamingTheOption) {
+  expect_failure(run("render " + scene() + " -o out.png --width 0"), 2, "tiny.json: --width:");
+  expect_failure(run("render " + scene() + " -o out.png --height 99999"), 2, "--height");
+  expect_failure(run("render " + scene() + " -o out.png --spp 0"), 2, "tiny.json: --spp:");
+  expect_failure(run("render " + scene() + " -o out.png --model phongg"), 2,
+                 "tiny.json: --model: unknown shading model 'phongg' (did you mean 'phong'?)");
+  expect_failure(run("render " + scene() + " -o out.png --shadows maybe"), 2, "--shadows");
+}
+
+TEST_F(Cli, InvalidSceneContentExitsTwoNamingTheField) {
+  write("key.json", R"({"objects": [], "rendr": {}})");
+  expect_failure(run("render " + scene("key.json")), 2, "key.json: rendr: unknown key 'rendr'");
+  write("preset.json", R"({"materials": {"m": {"preset": "goldd"}}, "objects": []})");
+  expect_failure(run("render " + scene("preset.json")), 2,
+                 "preset.json: materials.m.preset: unknown preset 'goldd'");
+  write("model.json", R"({"objects": [], "render": {"model": "gouraud"}})");
+  expect_failure(run("render " + scene("model.json")), 2, "model.json: render.model:");
+}
+
+TEST_F(Cli, OutputInAMissingFolderExitsOne) {
+  expect_failure(run("render " + scene() + " -o no/such/folder/out.png"), 1, "no/such/folder");
+  expect_failure(run("render " + scene() + " -o out.png --pfm no/such/out.pfm"), 1, "no/such");
+}
+
+TEST_F(Cli, OutputInAReadOnlyFolderExitsOneAndLeavesNothing) {
+  std::string target;
+  if (::geteuid() == 0) {
+    target = "/proc/gloss-cli-test-out.png";  // root may write anywhere except such file systems
+  } else {
+    std::filesystem::create_directories(outputs.path() / "locked");
+    ::chmod((outputs.path() / "locked").c_str(), 0555);
+    target = "locked/out.png";
+  }
+  const CliRun r = run("render " + scene() + " -o out.png --pfm " + target);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
+  EXPECT_EQ(lines_of(r.err).size(), 1u) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(outputs.file("out.png")));
+  if (::geteuid() == 0) {
+    EXPECT_FALSE(std::filesystem::exists(target));
+  } else {
+    EXPECT_TRUE(std::filesystem::is_empty(outputs.path() / "locked"));
+    ::chmod((outputs.path() / "locked").c_str(), 0755);
+  }
+}
+
+}  // namespace
+}  // namespace gloss

@@ -1,0 +1,94 @@
+// The viewport's camera maths, against values worked out by hand from spec/shading.md's camera.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "editor/model/camera_controller.h"
+#include "editor/model/heat_map.h"
+
+namespace gloss {
+namespace {
+
+Camera front_camera() {
+  Camera c;
+  c.eye = {0.0f, 0.0f, 5.0f};
+  c.target = {0.0f, 0.0f, 0.0f};
+  c.fov_y = 90.0f;  // tan(45 deg) = 1: the image spans y in [-d, d] at depth d
+  return c;
+}
+
+TEST(CameraController, TheTargetProjectsToTheImageCentre) {
+  glm::vec2 at;
+  ASSERT_TRUE(project_point(front_camera(), 200, 100, glm::vec3(0.0f), at));
+  EXPECT_NEAR(at.x, 100.0f, 1e-4f);
+  EXPECT_NEAR(at.y, 50.0f, 1e-4f);
+}
+
+TEST(CameraController, ProjectionFollowsTheSpecsPixelMapping) {
+  // At depth 5 with fov 90 the top edge is y = 5; a point at y = 2.5 sits a quarter of the way
+  // down a 100-pixel image. Aspect 2: x spans [-10, 10], so x = 5 is at 3/4 of 200 pixels.
+  glm::vec2 at;
+  ASSERT_TRUE(project_point(front_camera(), 200, 100, glm::vec3(5.0f, 2.5f, 0.0f), at));
+  EXPECT_NEAR(at.x, 150.0f, 1e-3f);
+  EXPECT_NEAR(at.y, 25.0f, 1e-3f);
+}
+
+TEST(CameraController, PointsBehindTheEyeDoNotProject) {
+  glm::vec2 at;
+  EXPECT_FALSE(project_point(front_camera(), 200, 100, glm::vec3(0.0f, 0.0f, 6.0f), at));
+}
+
+TEST(CameraController, DraggingKeepsTheDepthAndFollowsTheCursor) {
+  const Camera c = front_camera();
+  const glm::vec3 anchor(1.0f, 1.0f, -1.0f);  // depth 6 along the view axis
+  const glm::vec3 moved = point_at_depth(c, 200, 100, glm::vec2(150.0f, 25.0f), anchor);
+  EXPECT_NEAR(moved.z, -1.0f, 1e-4f);
+  glm::vec2 at;
+  ASSERT_TRUE(project_point(c, 200, 100, moved, at));
+  EXPECT_NEAR(at.x, 150.0f, 1e-3f);
+  EXPECT_NEAR(at.y, 25.0f, 1e-3f);
+}
+
+TEST(CameraController, ZoomScalesTheDistance) {
+  const Camera c = front_camera();
+  EXPECT_NEAR(zoom_camera(c, 1.0f).eye.z, 5.0f * kZoomPerStep, 1e-5f);
+  EXPECT_NEAR(zoom_camera(c, -2.0f).eye.z, 5.0f / (kZoomPerStep * kZoomPerStep), 1e-4f);
+  EXPECT_GE(zoom_camera(c, 1000.0f).eye.z, kMinViewDistance * 0.999f);
+}
+
+TEST(CameraController, PanMovesEyeAndTargetTogether) {
+  // A 50-pixel drag to the right in a 100-pixel-tall view at distance 5 with fov 90: the view
+  // is 10 units tall, so the scene follows the cursor by 5 units and the camera moves -5 in x.
+  const Camera moved = pan_camera(front_camera(), 50.0f, 0.0f, 100);
+  EXPECT_NEAR(moved.eye.x, -5.0f, 1e-4f);
+  EXPECT_NEAR(moved.target.x, -5.0f, 1e-4f);
+  EXPECT_NEAR(moved.eye.z, 5.0f, 1e-5f);
+}
+
+TEST(CameraController, RotateAboutYIsCounterClockwiseFromAbove) {
+  const glm::vec3 p =
+      rotate_about_y(glm::vec3(2.0f, 1.0f, 0.0f), glm::vec3(1.0f, 0.0f, 0.0f), 90.0f);
+  EXPECT_NEAR(p.x, 1.0f, 1e-5f);
+  EXPECT_NEAR(p.y, 1.0f, 1e-6f);
+  EXPECT_NEAR(p.z, -1.0f, 1e-5f);
+}
+
+TEST(HeatMap, RampEndsAndMidpoints) {
+  EXPECT_EQ(heat_colour(-1.0f), kHeatRamp[0]);
+  EXPECT_EQ(heat_colour(2.0f), kHeatRamp[kHeatRampSize - 1]);
+  const glm::vec3 mid = heat_colour(0.125f);  // halfway between the first two stops
+  EXPECT_NEAR(mid.x, 0.5f * (kHeatRamp[0].x + kHeatRamp[1].x), 1e-6f);
+}
+
+TEST(HeatMap, LargestDifferenceIsPerChannel) {
+  Image a(2, 1), b(2, 1);
+  a.at(1, 0) = {0.5f, 0.2f, 0.1f};
+  b.at(1, 0) = {0.4f, 0.5f, 0.1f};
+  EXPECT_NEAR(max_difference(a, b), 0.3f, 1e-6f);
+  EXPECT_EQ(max_difference(a, Image(3, 1)), 0.0f);
+}
+
+}  // namespace
+}  // namespace gloss

@@ -1,0 +1,162 @@
+// The command layer's bookkeeping: gestures merge into one step, failed and no-op commands record
+// nothing, the saved state is tracked through undo and redo, revisions never repeat.
+#include <gtest/gtest.h>
+
+#include "editor/model/command_layer.h"
+#include "support/test_scene.h"
+
+namespace gloss {
+namespace {
+
+TEST(CommandLayer, ADragIsOneUndoStepUntilSealed) {
+  CommandLayer layer(test::two_sphere_scene());
+  for (float s : {70.0f, 80.0f, 90.0f}) layer.execute(SetShininess{0, s});
+  EXPECT_EQ(layer.undo_count(), 1u);
+  layer.seal();
+  layer.execute(SetShininess{0, 100.0f});
+  EXPECT_EQ(layer.undo_count(), 2u);
+  layer.undo();
+  EXPECT_EQ(layer.scene().materials[0].shininess, 90.0f);
+  layer.undo();
+  EXPECT_EQ(layer.scene().materials[0].shininess, 64.0f);  // the value before the first drag
+}
+
+TEST(CommandLayer, DifferentKeysDoNotMerge) {
+  CommandLayer layer(test::two_sphere_scene());
+  layer.execute(SetShininess{0, 70.0f});
+  layer.execute(SetShininess{1, 70.0f});
+  layer.execute(SetMaterialColour{0, MaterialField::diffuse, glm::vec3(0.5f)});
+  EXPECT_EQ(layer.undo_count(), 3u);
+}
+
+TEST(CommandLayer, UnkeyedCommandsAreAlwaysTheirOwnStep) {
+  CommandLayer layer(test::two_sphere_scene());
+  layer.execute(SetShadows{false});
+  layer.execute(SetShadows{true});
+  EXPECT_EQ(layer.undo_count(), 2u);
+}
+
+TEST(CommandLayer, AFailingCommandChangesNothing) {
+  CommandLayer layer(test::two_sphere_scene());
+  const std::uint64_t revision = layer.revision();
+  EXPECT_THROW(layer.execute(SetShininess{5, 1.0f}), CommandError);
+  EXPECT_THROW(layer.execute(SetShininess{0, -1.0f}), CommandError);
+  EXPECT_THROW(layer.execute(ApplyPreset{0, "golld"}), CommandError);
+  EXPECT_THROW(layer.execute(SetLightValue{0, LightField::attenuation, glm::vec3(0.0f)}),
+               CommandError);
+  EXPECT_THROW(layer.execute(SetMaterialColour{0, MaterialField::diffuse, glm::vec3(-0.1f)}),
+               CommandError);
+  EXPECT_THROW(layer.execute(RemoveLight{2}), CommandError);
+  EXPECT_THROW(layer.execute(SetTargetSpp{0}), CommandError);
+  EXPECT_EQ(layer.revision(), revision);
+  EXPECT_EQ(layer.undo_count(), 0u);
+  EXPECT_TRUE(same_scene(layer.scene(), test::two_sphere_scene()));
+}
+
+TEST(CommandLayer, UnknownPresetNamesTheNearestOne) {
+  CommandLayer layer(test::two_sphere_scene());
+  try {
+    layer.execute(ApplyPreset{0, "golld"});
+    FAIL() << "no error";
+  } catch (const CommandError& e) {
+    EXPECT_NE(std::string(e.what()).find("'gold'"), std::string::npos) << e.what();
+  }
+}
+
+TEST(CommandLayer, ANoOpRecordsNothing) {
+  CommandLayer layer(test::two_sphere_scene());
+  EXPECT_FALSE(layer.execute(SetShininess{0, 64.0f}));
+  EXPECT_FALSE(layer.execute(SetShadows{true}));
+  EXPECT_EQ(layer.undo_count(), 0u);
+  EXPECT_FALSE(layer.dirty());
+}
+
+TEST(CommandLayer, DirtyFollowsTheSavedState) {
+  CommandLayer layer(test::two_sphere_scene());
+  EXPECT_FALSE(layer.dirty());
+  layer.execute(SetShadows{false});
+  EXPECT_TRUE(layer.dirty());
+  layer.mark_saved();
+  EXPECT_FALSE(layer.dirty());
+  layer.undo();
+  EXPECT_TRUE(layer.dirty());
+  layer.redo();
+  EXPECT_FALSE(layer.dirty());
+  layer.reset(test::two_sphere_scene(), false);
+  EXPECT_TRUE(layer.dirty());
+  layer.reset(test::two_sphere_scene(), true);
+  EXPECT_FALSE(layer.dirty());
+}
+
+TEST(CommandLayer, ANewEditClearsRedo) {
+  CommandLayer layer(test::two_sphere_scene());
+  layer.execute(SetShadows{false});
+  layer.undo();
+  EXPECT_TRUE(layer.can_redo());
+  layer.execute(SetEnergyNormalize{true});
+  EXPECT_FALSE(layer.can_redo());
+  EXPECT_FALSE(layer.redo());
+}
+
+TEST(CommandLayer, RevisionsNeverRepeat) {
+  CommandLayer layer(test::two_sphere_scene());
+  std::vector<std::uint64_t> seen{layer.revision()};
+  layer.execute(SetShadows{false});
+  seen.push_back(layer.revision());
+  layer.undo();
+  seen.push_back(layer.revision());
+  layer.redo();
+  seen.push_back(layer.revision());
+  for (std::size_t i = 1; i < seen.size(); ++i) EXPECT_GT(seen[i], seen[i - 1]);
+}
+
+TEST(CommandLayer, LabelsNameTheEdit) {
+  CommandLayer layer(test::two_sphere_scene());
+  layer.execute(ApplyPreset{1, "ruby"});
+  EXPECT_EQ(layer.undo_label(), "apply preset ruby to object 1");
+  layer.undo();
+  EXPECT_EQ(layer.redo_label(), "apply preset ruby to object 1");
+  EXPECT_EQ(layer.undo_label(), "");
+}
+
+TEST(CommandLayer, SaveAsKeepsThePathThroughUndo) {
+  CommandLayer layer(test::two_sphere_scene());
+  layer.execute(SetShadows{false});
+  layer.set_path("/tmp/elsewhere.json");
+  layer.undo();
+  EXPECT_EQ(layer.scene().path, "/tmp/elsewhere.json");
+}
+
+TEST(CommandLayer, SaveAsRebasesRelativeMeshFiles) {
+  Scene scene = test::two_sphere_scene();
+  scene.path = "/data/scenes/room.json";
+  scene.objects[0].params.file = "../models/cup.obj";
+  scene.objects[1].params.file = "/abs/teapot.obj";
+  CommandLayer layer(scene);
+  layer.execute(SetShadows{false});
+  layer.set_path("/data/out/copy.json");
+  EXPECT_EQ(layer.scene().objects[0].params.file, "../models/cup.obj");  // same depth
+  layer.set_path("/data/copy.json");
+  EXPECT_EQ(layer.scene().objects[0].params.file, "models/cup.obj");
+  EXPECT_EQ(layer.scene().objects[1].params.file, "/abs/teapot.obj");
+  layer.undo();
+  EXPECT_EQ(layer.scene().objects[0].params.file, "models/cup.obj");
+}
+
+TEST(CommandLayer, HistoryIsBounded) {
+  CommandLayer layer(test::two_sphere_scene());
+  for (std::size_t i = 0; i < CommandLayer::kMaxSteps + 20; ++i) {
+    layer.execute(SetShadows{i % 2 == 0 ? false : true});
+  }
+  EXPECT_EQ(layer.undo_count(), CommandLayer::kMaxSteps);
+}
+
+TEST(ExponentRule, BlinnIsFourTimesPhongClampedToTheSliderRange) {
+  EXPECT_EQ(blinn_exponent_for_phong(10.0f), 40.0f);
+  EXPECT_EQ(phong_exponent_for_blinn(40.0f), 10.0f);
+  EXPECT_EQ(blinn_exponent_for_phong(5000.0f), kMaxShininess);
+  EXPECT_EQ(exponent_for_model(12.0f, ShadingModel::phong, ShadingModel::phong), 12.0f);
+}
+
+}  // namespace
+}  // namespace gloss

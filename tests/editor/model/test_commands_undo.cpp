@@ -1,0 +1,130 @@
+// Every command kind, applied through the command layer, changes the document as asked and undo
+// restores the earlier document exactly (compared through the scene writer's JSON text, which
+// is independent of the layer's own comparison); redo brings the edit back.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "editor/model/command_layer.h"
+#include "io/preset_table.h"
+#include "io/scene_loader.h"
+#include "support/test_scene.h"
+
+namespace gloss {
+namespace {
+
+struct Case {
+  const char* name;
+  Command command;
+  // Checks that the edit did what the command says, on the document after it.
+  void (*check)(const Scene& after);
+};
+
+std::vector<Case> all_cases() {
+  auto opened = std::make_shared<Scene>(test::two_sphere_scene());
+  opened->objects.pop_back();
+  opened->background = {0.5f, 0.0f, 0.5f};
+  PointLight added;
+  added.position = {0.0f, 9.0f, 0.0f};
+  Camera moved = test::two_sphere_scene().camera;
+  moved.eye = {3.0f, 3.0f, 3.0f};
+  Material loaded;
+  loaded.diffuse = {0.3f, 0.3f, 0.3f};
+  loaded.shininess = 7.0f;
+  return {
+      {"material colour", SetMaterialColour{1, MaterialField::diffuse, {0.9f, 0.8f, 0.7f}},
+       [](const Scene& s) { EXPECT_EQ(s.materials[1].diffuse, glm::vec3(0.9f, 0.8f, 0.7f)); }},
+      {"emission", SetMaterialColour{0, MaterialField::emission, {0.0f, 0.5f, 0.0f}},
+       [](const Scene& s) { EXPECT_EQ(s.materials[0].emission, glm::vec3(0.0f, 0.5f, 0.0f)); }},
+      {"shininess", SetShininess{0, 1234.5f},
+       [](const Scene& s) { EXPECT_EQ(s.materials[0].shininess, 1234.5f); }},
+      {"preset", ApplyPreset{1, "silver"},
+       [](const Scene& s) {
+         // The table's silver row: diffuse 0.50754 each, shininess 0.4 x 128 = 51.2.
+         EXPECT_NEAR(s.materials[1].diffuse.x, 0.50754f, 1e-6f);
+         EXPECT_NEAR(s.materials[1].shininess, 51.2f, 1e-4f);
+         EXPECT_EQ(s.materials[1].preset, "silver");
+       }},
+      {"material from a file", SetMaterial{0, loaded, "grey"},
+       [](const Scene& s) { EXPECT_EQ(s.materials[0].shininess, 7.0f); }},
+      {"model, keeping the highlight size", SetModel{ShadingModel::blinn_phong, true},
+       [](const Scene& s) {
+         EXPECT_EQ(s.render.model, ShadingModel::blinn_phong);
+         EXPECT_EQ(s.materials[0].shininess, 256.0f);  // 4 x 64
+         EXPECT_EQ(s.materials[1].shininess, 40.0f);   // 4 x 10
+       }},
+      {"model, same exponents", SetModel{ShadingModel::blinn_phong, false},
+       [](const Scene& s) { EXPECT_EQ(s.materials[0].shininess, 64.0f); }},
+      {"energy normalisation", SetEnergyNormalize{true},
+       [](const Scene& s) { EXPECT_TRUE(s.render.energy_normalize); }},
+      {"light position", SetLightValue{1, LightField::position, {1.0f, 2.0f, 3.0f}},
+       [](const Scene& s) { EXPECT_EQ(s.lights[1].position, glm::vec3(1.0f, 2.0f, 3.0f)); }},
+      {"light attenuation", SetLightValue{0, LightField::attenuation, {1.0f, 0.5f, 0.25f}},
+       [](const Scene& s) { EXPECT_EQ(s.lights[0].attenuation, glm::vec3(1.0f, 0.5f, 0.25f)); }},
+      {"add light", AddLight{added},
+       [](const Scene& s) {
+         ASSERT_EQ(s.lights.size(), 3u);
+         EXPECT_EQ(s.lights[2].position.y, 9.0f);
+       }},
+      {"remove light", RemoveLight{0},
+       [](const Scene& s) {
+         ASSERT_EQ(s.lights.size(), 1u);
+         EXPECT_EQ(s.lights[0].position, glm::vec3(-4.0f, 2.0f, 1.0f));
+       }},
+      {"scene ambient", SetSceneAmbient{{0.0f, 0.3f, 0.0f}},
+       [](const Scene& s) { EXPECT_EQ(s.ambient, glm::vec3(0.0f, 0.3f, 0.0f)); }},
+      {"background", SetBackground{{1.0f, 1.0f, 1.0f}},
+       [](const Scene& s) { EXPECT_EQ(s.background, glm::vec3(1.0f)); }},
+      {"shadows", SetShadows{false}, [](const Scene& s) { EXPECT_FALSE(s.render.shadows); }},
+      {"camera", SetCamera{moved},
+       [](const Scene& s) { EXPECT_EQ(s.camera.eye, glm::vec3(3.0f)); }},
+      {"camera orbit", OrbitCamera{90.0f, 0.0f},
+       [](const Scene& s) {
+         // A quarter turn about up keeps the distance to the target (sqrt(37)).
+         EXPECT_NEAR(glm::length(s.camera.eye - s.camera.target), std::sqrt(37.0f), 1e-4f);
+         EXPECT_NEAR(s.camera.eye.z, 0.0f, 1e-4f);
+       }},
+      {"target spp", SetTargetSpp{16}, [](const Scene& s) { EXPECT_EQ(s.render.spp, 16); }},
+      {"open scene", ReplaceScene{opened, "open"},
+       [](const Scene& s) { EXPECT_EQ(s.objects.size(), 1u); }},
+  };
+}
+
+TEST(CommandsUndo, EveryCommandUndoesExactlyAndRedoes) {
+  for (const Case& c : all_cases()) {
+    SCOPED_TRACE(c.name);
+    const Scene base = test::two_sphere_scene();
+    const std::string before = scene_to_json_text(base);
+    CommandLayer layer(base);
+    ASSERT_TRUE(layer.execute(c.command));
+    c.check(layer.scene());
+    const std::string after = scene_to_json_text(layer.scene());
+    EXPECT_NE(after, before);
+    ASSERT_TRUE(layer.undo());
+    EXPECT_EQ(scene_to_json_text(layer.scene()), before);
+    EXPECT_TRUE(same_scene(layer.scene(), base));
+    ASSERT_TRUE(layer.redo());
+    EXPECT_EQ(scene_to_json_text(layer.scene()), after);
+  }
+}
+
+TEST(CommandsUndo, AllCommandsInSequenceUndoBackToTheStart) {
+  const Scene base = test::two_sphere_scene();
+  CommandLayer layer(base);
+  std::vector<std::string> states{scene_to_json_text(base)};
+  for (const Case& c : all_cases()) {
+    if (layer.execute(c.command)) {
+      layer.seal();
+      states.push_back(scene_to_json_text(layer.scene()));
+    }
+  }
+  for (std::size_t i = states.size() - 1; i > 0; --i) {
+    EXPECT_EQ(scene_to_json_text(layer.scene()), states[i]);
+    ASSERT_TRUE(layer.undo());
+  }
+  EXPECT_EQ(scene_to_json_text(layer.scene()), states[0]);
+  EXPECT_FALSE(layer.can_undo());
+}
+
+}  // namespace
+}  // namespace gloss

@@ -1,0 +1,116 @@
+// Screenshot files: timestamped names never replace a file, the term sheet's layout, exposure,
+// and text chunks that reproduce the scene.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "editor/model/export_image.h"
+#include "io/image_io.h"
+#include "io/scene_loader.h"
+#include "support/test_scene.h"
+
+namespace gloss {
+namespace {
+
+std::filesystem::path temp_folder(const std::string& name) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("gloss-export-test-" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+TEST(ExportImage, TimestampedNamesNeverReplaceAFile) {
+  const std::filesystem::path dir = temp_folder("unique");
+  const std::time_t when = 1700000000;  // the same second for every write
+  const Image white(4, 2, glm::vec3(1.0f)), black(4, 2, glm::vec3(0.0f));
+  const std::filesystem::path a = write_png_unique(dir, "shot", white, false, {}, when);
+  const std::filesystem::path b = write_png_unique(dir, "shot", black, false, {}, when);
+  const std::filesystem::path c = write_png_unique(dir, "shot", black, false, {}, when);
+  EXPECT_EQ(a.filename().string(), "shot-" + timestamp_text(when) + ".png");
+  EXPECT_EQ(b.filename().string(), "shot-" + timestamp_text(when) + "-2.png");
+  EXPECT_EQ(c.filename().string(), "shot-" + timestamp_text(when) + "-3.png");
+  EXPECT_EQ(read_png(a.string()).rgb.front(), 255);  // the first file kept its pixels
+  EXPECT_EQ(read_png(b.string()).rgb.front(), 0);
+  std::size_t files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    (void)entry;
+    ++files;
+  }
+  EXPECT_EQ(files, 3u);  // no temporaries left behind
+}
+
+TEST(ExportImage, TimestampIsDateAndTime) {
+  const std::string text = timestamp_text(std::time(nullptr));
+  ASSERT_EQ(text.size(), 15u);  // YYYYMMDD-HHMMSS
+  EXPECT_EQ(text[8], '-');
+}
+
+TEST(ExportImage, TermSheetPlacesTheFourPanes) {
+  TermImages terms;
+  terms.emissive = Image(3, 2, glm::vec3(0.1f));
+  terms.ambient = Image(3, 2, glm::vec3(0.05f));
+  terms.diffuse = Image(3, 2, glm::vec3(0.3f));
+  terms.specular = Image(3, 2, glm::vec3(0.4f));
+  terms.total = Image(3, 2, glm::vec3(0.85f));
+  const Image sheet = term_sheet(terms);
+  ASSERT_EQ(sheet.width, 6);
+  ASSERT_EQ(sheet.height, 4);
+  EXPECT_NEAR(sheet.at(0, 0).x, 0.15f, 1e-6f);  // emissive + ambient, top left
+  EXPECT_NEAR(sheet.at(5, 1).y, 0.3f, 1e-6f);   // diffuse, top right
+  EXPECT_NEAR(sheet.at(2, 2).z, 0.4f, 1e-6f);   // specular, bottom left
+  EXPECT_NEAR(sheet.at(3, 3).x, 0.85f, 1e-6f);  // total, bottom right
+}
+
+TEST(ExportImage, ExposureIsPowersOfTwo) {
+  const Image image(1, 1, glm::vec3(0.2f, 0.4f, 0.8f));
+  EXPECT_EQ(exposed(image, 1.0f).at(0, 0), glm::vec3(0.4f, 0.8f, 1.6f));
+  EXPECT_EQ(exposed(image, -2.0f).at(0, 0), glm::vec3(0.05f, 0.1f, 0.2f));
+}
+
+TEST(ExportImage, ViewportKindFollowsTheSingleTermView) {
+  TermImages terms;
+  terms.emissive = Image(1, 1, glm::vec3(0.1f));
+  terms.ambient = Image(1, 1, glm::vec3(0.2f));
+  terms.diffuse = Image(1, 1, glm::vec3(0.3f));
+  terms.specular = Image(1, 1, glm::vec3(0.4f));
+  terms.total = Image(1, 1, glm::vec3(1.0f));
+  ViewSettings view;
+  EXPECT_EQ(viewport_image(terms, view).at(0, 0).x, 1.0f);
+  view.mode = ViewMode::single;
+  view.single = TermView::specular;
+  EXPECT_EQ(viewport_image(terms, view).at(0, 0).x, 0.4f);
+  view.single = TermView::emissive_ambient;
+  EXPECT_NEAR(viewport_image(terms, view).at(0, 0).x, 0.3f, 1e-6f);
+}
+
+TEST(ExportImage, ScriptPathsNameAFileOrAFolder) {
+  const std::filesystem::path dir = temp_folder("paths");
+  const Image image(2, 2, glm::vec3(0.5f));
+  const std::string file = (dir / "named.png").string();
+  EXPECT_EQ(write_export(file, image, false, {}).string(), file);
+  EXPECT_EQ(write_export(file, image, false, {}).string(), file);  // a named file is replaced
+  const std::filesystem::path inside = write_export(dir.string(), image, false, {});
+  EXPECT_EQ(inside.parent_path(), dir);
+  EXPECT_EQ(inside.filename().string().rfind("gloss-", 0), 0u);
+}
+
+TEST(ExportImage, TextChunksCarryTheScene) {
+  const Scene scene = test::two_sphere_scene();
+  const TextChunks text = export_text(scene, ViewSettings{}, ScreenshotKind::viewport);
+  const std::filesystem::path dir = temp_folder("chunks");
+  const std::string file = (dir / "chunks.png").string();
+  write_png(file, Image(2, 2), false, text);
+  const Png8 png = read_png(file);
+  std::string scene_text, settings;
+  for (const auto& [key, value] : png.text) {
+    if (key == "gloss:scene") scene_text = value;
+    if (key == "gloss:settings") settings = value;
+  }
+  EXPECT_EQ(scene_to_json_text(parse_scene(scene_text, "chunk.json")), scene_to_json_text(scene));
+  EXPECT_NE(settings.find("model=phong"), std::string::npos) << settings;
+  EXPECT_NE(settings.find("encoding=clamp"), std::string::npos) << settings;
+}
+
+}  // namespace
+}  // namespace gloss

@@ -1,0 +1,198 @@
+// The interactive engine: progressive passes, cached re-shading equal to fresh renders, and
+// cancellation under a storm of edits.
+#include "engine/progressive_renderer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "engine/renderer.h"
+#include "support/scene_fixtures.h"
+
+namespace gloss {
+namespace {
+
+constexpr double kWaitMs = 60000;
+
+double max_abs_diff(const Image& a, const Image& b) {
+  if (a.width != b.width || a.height != b.height) return INFINITY;
+  double worst = 0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      worst = std::max(worst, std::abs(double(a.pixels[i][c]) - double(b.pixels[i][c])));
+  return worst;
+}
+
+void expect_matches_fresh_render(const RenderedFrame& frame, const Scene& scene) {
+  const TermImages fresh = render(scene);
+  EXPECT_LE(max_abs_diff(frame.images.total, fresh.total), 1e-6);
+  EXPECT_LE(max_abs_diff(frame.images.emissive, fresh.emissive), 1e-6);
+  EXPECT_LE(max_abs_diff(frame.images.ambient, fresh.ambient), 1e-6);
+  EXPECT_LE(max_abs_diff(frame.images.diffuse, fresh.diffuse), 1e-6);
+  EXPECT_LE(max_abs_diff(frame.images.specular, fresh.specular), 1e-6);
+}
+
+std::shared_ptr<const RenderedFrame> converge(ProgressiveRenderer& engine, const Scene& scene) {
+  engine.set_scene(scene);
+  EXPECT_TRUE(engine.wait_converged(kWaitMs));
+  return engine.latest();
+}
+
+TEST(ProgressiveRenderer, PassesGoCoarseToFineAndConvergeToTheOneShotImage) {
+  ProgressiveRenderer engine;
+  std::vector<FrameInfo> seen;
+  std::mutex seen_mutex;
+  engine.set_on_publish([&] {
+    std::lock_guard<std::mutex> lock(seen_mutex);
+    seen.push_back(engine.latest()->info);
+  });
+  Scene scene = test::sphere_on_floor_scene();
+  scene.render.spp = 16;
+  const auto frame = converge(engine, scene);
+  ASSERT_NE(frame, nullptr);
+  EXPECT_TRUE(frame->info.converged);
+  EXPECT_EQ(frame->info.spp, 16);
+  expect_matches_fresh_render(*frame, scene);
+  engine.set_on_publish(nullptr);
+  std::lock_guard<std::mutex> lock(seen_mutex);
+  // 1/8, 1/4, 1/2, then 1, 2, 4, 8, 16 spp at full size.
+  ASSERT_EQ(seen.size(), 8u);
+  const int widths[] = {10, 20, 40, 80, 80, 80, 80, 80};
+  const int spps[] = {1, 1, 1, 1, 2, 4, 8, 16};
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    EXPECT_EQ(seen[i].width, widths[i]) << i;
+    EXPECT_EQ(seen[i].spp, spps[i]) << i;
+    EXPECT_EQ(seen[i].pass, static_cast<int>(i));
+  }
+}
+
+TEST(ProgressiveRenderer, MaterialConstantEditReshadesWithoutRaysAndMatchesFreshRender) {
+  ProgressiveRenderer engine;
+  Scene scene = test::sphere_on_floor_scene();
+  converge(engine, scene);
+  scene.materials[0].diffuse = {0.9f, 0.1f, 0.1f};
+  scene.materials[1].emission = {0.05f, 0.0f, 0.0f};
+  scene.lights[0].specular = {0.3f, 0.6f, 0.9f};
+  scene.ambient = glm::vec3(0.4f);
+  const auto frame = converge(engine, scene);
+  EXPECT_EQ(frame->info.cause, ChangeClass::shade);
+  EXPECT_EQ(frame->info.rays, 0);
+  EXPECT_EQ(frame->info.spp, 4);
+  expect_matches_fresh_render(*frame, scene);
+}
+
+TEST(ProgressiveRenderer, ShininessAndModelEditsReshadeWithoutRays) {
+  ProgressiveRenderer engine;
+  Scene scene = test::sphere_on_floor_scene();
+  converge(engine, scene);
+  scene.materials[0].shininess = 500;
+  auto frame = converge(engine, scene);
+  EXPECT_EQ(frame->info.cause, ChangeClass::exponent);
+  EXPECT_EQ(frame->info.rays, 0);
+  expect_matches_fresh_render(*frame, scene);
+  scene.render.model = ShadingModel::blinn_phong;
+  frame = converge(engine, scene);
+  EXPECT_EQ(frame->info.cause, ChangeClass::exponent);
+  EXPECT_EQ(frame->info.rays, 0);
+  expect_matches_fresh_render(*frame, scene);
+}
+
+TEST(ProgressiveRenderer, LightMoveTracesOnlyShadowRays) {
+  ProgressiveRenderer engine;
+  Scene scene = test::sphere_on_floor_scene();
+  converge(engine, scene);
+  scene.lights[0].position = {-2, 3, 1};
+  const auto frame = converge(engine, scene);
+  EXPECT_EQ(frame->info.cause, ChangeClass::light);
+  const long long samples = 80LL * 60 * 4;
+  EXPECT_GT(frame->info.rays, 0);
+  EXPECT_LT(frame->info.rays, samples);  // primary rays alone would be `samples`
+  expect_matches_fresh_render(*frame, scene);
+}
+
+TEST(ProgressiveRenderer, CameraEditRestartsFromTheCoarsestPass) {
+  ProgressiveRenderer engine;
+  Scene scene = test::sphere_on_floor_scene();
+  converge(engine, scene);
+  scene.camera.eye = {1, 2, 4};
+  const auto frame = converge(engine, scene);
+  EXPECT_EQ(frame->info.cause, ChangeClass::full);
+  expect_matches_fresh_render(*frame, scene);
+}
+
+// Thousands of edits from another thread. Each edit k sets an emission-only material to k/N
+// (no other term), so a frame is torn if its sphere pixels disagree, and stale if its value
+// belongs to an older generation than a frame seen before it.
+TEST(ProgressiveRenderer, EditStormNeverPublishesTornOrStaleFramesAndEndsOnTheLastEdit) {
+  Scene scene = test::head_on_sphere_scene();
+  scene.materials[0] =
+      test::make_material(glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), 1);
+  scene.lights.clear();
+  scene.ambient = glm::vec3(0.0f);
+  scene.render.width = 64;
+  scene.render.height = 48;
+  scene.render.spp = 4;
+  constexpr int kEdits = 3000;
+  ProgressiveRenderer engine;
+  std::atomic<bool> done{false};
+  std::atomic<int> torn{0}, stale{0}, frames{0};
+  std::thread reader([&] {
+    std::uint64_t last_generation = 0;
+    while (!done.load()) {
+      const auto frame = engine.latest();
+      if (!frame) continue;
+      ++frames;
+      if (frame->info.generation < last_generation) ++stale;
+      last_generation = frame->info.generation;
+      // The centre pixel is fully covered at every resolution; all covered pixels must agree.
+      const Image& total = frame->images.total;
+      const glm::vec3 centre = total.at(total.width / 2, total.height / 2);
+      for (const glm::vec3& p : total.pixels)
+        if (p.x != 0.0f && p != centre && p.x > centre.x) ++torn;
+      // The value encodes the edit: generation g shows edit g - 1, emission (g - 1) / kEdits.
+      const float expected = static_cast<float>(frame->info.generation - 1) / kEdits;
+      if (frame->info.spp >= 1 && std::abs(centre.x - expected) > 1e-6f) ++stale;
+    }
+  });
+  std::thread writer([&] {
+    Scene edit = scene;
+    for (int k = 0; k < kEdits; ++k) {
+      // Every class of edit, mixed: shade, exponent, light and full (a camera nudge that keeps
+      // the sphere over the centre pixel).
+      edit.materials[0].emission = glm::vec3(static_cast<float>(k) / kEdits);
+      if (k % 4 == 1) edit.materials[0].shininess = static_cast<float>(1 + k % 50);
+      if (k % 4 == 2) edit.lights = {test::make_light({0, 0, 5.0f + static_cast<float>(k % 3)})};
+      if (k % 4 == 3) edit.camera.eye.x = 0.01f * static_cast<float>(k % 5);
+      engine.set_scene(edit);
+      // Let some passes finish between edits, so publications and cancellations interleave.
+      if (k % 3 == 0) std::this_thread::sleep_for(std::chrono::microseconds(100));
+    }
+  });
+  writer.join();
+  EXPECT_TRUE(engine.wait_converged(kWaitMs));
+  done.store(true);
+  reader.join();
+  EXPECT_EQ(torn.load(), 0);
+  EXPECT_EQ(stale.load(), 0);
+  EXPECT_GT(frames.load(), 0);
+  const auto last = engine.latest();
+  EXPECT_EQ(last->info.generation, static_cast<std::uint64_t>(kEdits));
+  EXPECT_FLOAT_EQ(last->images.total.at(32, 24).x, static_cast<float>(kEdits - 1) / kEdits);
+}
+
+TEST(ProgressiveRenderer, DestroyingWhileRenderingDoesNotHang) {
+  for (int i = 0; i < 20; ++i) {
+    ProgressiveRenderer engine;
+    Scene scene = test::sphere_on_floor_scene();
+    scene.render.spp = 64;
+    engine.set_scene(scene);
+    std::this_thread::sleep_for(std::chrono::milliseconds(i % 5));
+  }
+  SUCCEED();
+}
+
+}  // namespace
+}  // namespace gloss

@@ -1,0 +1,100 @@
+#pragma once
+// Small scenes built in code for the renderer's tests (no loader involved).
+#include <memory>
+
+#include "scene/scene.h"
+#include "scene/shapes.h"
+
+namespace gloss::test {
+
+inline Material make_material(glm::vec3 ka, glm::vec3 kd, glm::vec3 ks, glm::vec3 ke,
+                              float shininess) {
+  Material m;
+  m.ambient = ka;
+  m.diffuse = kd;
+  m.specular = ks;
+  m.emission = ke;
+  m.shininess = shininess;
+  return m;
+}
+
+inline int add_material(Scene& scene, const std::string& name, const Material& m) {
+  scene.materials.push_back(m);
+  scene.material_names.push_back(name);
+  return static_cast<int>(scene.materials.size()) - 1;
+}
+
+inline void add_sphere(Scene& scene, glm::vec3 center, float radius, int material) {
+  Object o;
+  o.name = "sphere" + std::to_string(scene.objects.size());
+  o.type = ObjectType::sphere;
+  o.center = center;
+  o.radius = radius;
+  o.material = material;
+  scene.objects.push_back(o);
+}
+
+inline void add_quad(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d,
+                     int material) {
+  Object o;
+  o.name = "quad" + std::to_string(scene.objects.size());
+  o.type = ObjectType::quad;
+  o.params.quad[0] = a;
+  o.params.quad[1] = b;
+  o.params.quad[2] = c;
+  o.params.quad[3] = d;
+  o.mesh = std::make_shared<const Mesh>(make_quad(a, b, c, d));
+  o.material = material;
+  scene.objects.push_back(o);
+}
+
+inline PointLight make_light(glm::vec3 position, glm::vec3 diffuse = glm::vec3(1.0f),
+                             glm::vec3 specular = glm::vec3(1.0f)) {
+  PointLight l;
+  l.position = position;
+  l.diffuse = diffuse;
+  l.specular = specular;
+  return l;
+}
+
+// The head-on sphere of the hand computation in test_renderer.cpp: unit sphere at the origin,
+// eye at (0, 0, 5), odd image size so the centre pixel's ray is the optical axis.
+inline Scene head_on_sphere_scene() {
+  Scene scene;
+  scene.camera.eye = {0, 0, 5};
+  scene.camera.target = {0, 0, 0};
+  scene.camera.up = {0, 1, 0};
+  scene.camera.fov_y = 40;
+  scene.ambient = glm::vec3(0.2f);
+  scene.background = {0.0f, 0.0f, 0.0f};
+  const int m = add_material(scene, "test",
+                             make_material({0.1f, 0.2f, 0.3f}, {0.5f, 0.4f, 0.3f}, glm::vec3(0.8f),
+                                           {0.01f, 0.0f, 0.0f}, 10.0f));
+  add_sphere(scene, {0, 0, 0}, 1.0f, m);
+  PointLight light = make_light({0, 3, 5}, glm::vec3(1.0f), {1.0f, 0.5f, 0.25f});
+  light.ambient = glm::vec3(0.1f);
+  light.attenuation = {1.0f, 0.1f, 0.01f};
+  scene.lights.push_back(light);
+  scene.render.width = 101;
+  scene.render.height = 101;
+  scene.render.spp = 1;
+  return scene;
+}
+
+// The head-on sphere seen from above over a floor quad, background visible: every render stage
+// has work (primary misses, shadow rays fewer than primaries). 80 x 60 at 4 spp.
+inline Scene sphere_on_floor_scene() {
+  Scene scene = head_on_sphere_scene();
+  scene.camera.eye = {0, 1.5f, 5};
+  scene.camera.target = {0, -0.5f, 0};
+  const int floor = add_material(
+      scene, "floor",
+      make_material(glm::vec3(0.1f), glm::vec3(0.6f), glm::vec3(0.2f), glm::vec3(0.0f), 8));
+  add_quad(scene, {-2, -1, 2}, {2, -1, 2}, {2, -1, -2}, {-2, -1, -2}, floor);
+  scene.render.width = 80;
+  scene.render.height = 60;
+  scene.render.spp = 4;
+  return scene;
+}
+
+}  // namespace gloss::test

@@ -1,0 +1,64 @@
+# Every outside library gloss uses is brought in here, and only here (included by the top-level
+# CMakeLists.txt, so the imported targets are visible to every folder): Debian's packages, found
+# with find_package or pkg-config (nothing is vendored, nothing is downloaded). Versions in
+# comments are the Debian 12 ones the project is tested with; README.md in this folder says what
+# each library does for gloss and which folder may use it.
+
+# Ray queries (engine, reference). Debian 12: 3.13.5.
+find_package(embree 3 REQUIRED)
+# Parallel loops (engine, reference, analysis). Debian 12: oneTBB 2021.8.
+find_package(TBB REQUIRED)
+# Vectors and matrices (everywhere). Debian 12: 0.9.9.8.
+find_package(glm REQUIRED)
+# Scene and material JSON (io only; the editor's state files go through io). Debian 12: 3.11.2.
+find_package(nlohmann_json 3 REQUIRED)
+# Wavefront OBJ (io only). No version: Debian's is "2rc10" and a version request fails.
+find_package(tinyobjloader REQUIRED)
+# PNG with text chunks (io only). Debian 12: libpng 1.6.39.
+find_package(PNG REQUIRED)
+# Command lines of gloss-cli and gloss. Debian 12: 2.1.2.
+find_package(CLI11 REQUIRED)
+find_package(Threads REQUIRED)
+# glibc's vector maths library (libc6-dev ships it with libm): c^alpha over 16 lanes (engine).
+find_library(GLOSS_LIBMVEC mvec REQUIRED)
+add_library(gloss_libmvec INTERFACE)
+target_link_libraries(gloss_libmvec INTERFACE ${GLOSS_LIBMVEC})
+
+if(GLOSS_BUILD_EDITOR)
+  # The window (editor/ui). Debian 12: 3.3.8.
+  find_package(glfw3 3.3 REQUIRED)
+  find_package(PkgConfig REQUIRED)
+  # Dear ImGui 1.86 (editor/ui). Debian's libimgui.a already holds the GLFW and OpenGL3
+  # backends, and needs libstb at link time.
+  pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET GLOBAL imgui)
+  pkg_check_modules(STB REQUIRED IMPORTED_TARGET GLOBAL stb)
+
+  # The OpenGL 3.3 core loader (editor/gl), generated at build time by Debian's python3-glad
+  # from its offline copy of the GL registry. --reproducible keeps it offline; naming the one
+  # extension used keeps gl.c small. /usr/bin/glad, not `python3 -m glad`: python3 on PATH may
+  # be an interpreter without the Debian module.
+  find_program(GLAD_EXECUTABLE glad PATHS /usr/bin NO_DEFAULT_PATH REQUIRED)
+  set(GLAD_OUT ${CMAKE_CURRENT_BINARY_DIR}/glad)
+  add_custom_command(
+    OUTPUT ${GLAD_OUT}/src/gl.c ${GLAD_OUT}/include/glad/gl.h
+           ${GLAD_OUT}/include/KHR/khrplatform.h
+    COMMAND ${GLAD_EXECUTABLE} --quiet --reproducible --api gl:core=3.3
+            --extensions=GL_KHR_debug --out-path ${GLAD_OUT} c
+    COMMENT "Generating the OpenGL 3.3 core loader with glad"
+    VERBATIM)
+  add_library(glad STATIC ${GLAD_OUT}/src/gl.c)
+  target_include_directories(glad PUBLIC ${GLAD_OUT}/include)
+endif()
+
+if(GLOSS_BUILD_TESTS)
+  # Unit tests. Debian 12: GoogleTest 1.12.1.
+  find_package(GTest REQUIRED)
+  if(GLOSS_BUILD_EDITOR)
+    # Off-screen GL for the editor's GL tests (Mesa's surfaceless EGL platform).
+    pkg_check_modules(EGL REQUIRED IMPORTED_TARGET GLOBAL egl)
+  endif()
+endif()
+if(GLOSS_BUILD_BENCHMARKS)
+  # Micro-benchmarks. Debian 12: Google Benchmark 1.7.1.
+  find_package(benchmark REQUIRED)
+endif()
