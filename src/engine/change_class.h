@@ -1,23 +1,17 @@
 #pragma once
 // The one place that decides what an edit invalidates (the edit path is widget -> command ->
-// document -> change class -> renderer). Classes are ordered: a larger one includes the smaller.
+// document -> change class -> renderer): the largest change class among the fields that differ
+// (scene/scene_diff.h), raised to `light` when the render plan differs.
+#include "scene/change.h"
 #include "scene/scene.h"
+#include "scene/scene_diff.h"
 
 namespace gloss {
 
-enum class ChangeClass {
-  none = 0,
-  shade = 1,     // ka, kd, ks, ke, light colours, scene ambient, background, energy switch:
-                 // recombine cached per-pixel factors, no rays
-  exponent = 2,  // shininess, Phong / Blinn-Phong, which material an object uses: rebuild the
-                 // per-pixel factors from cached per-sample cosines, no rays
-  light = 3,     // light position, attenuation, lights added or removed, shadows switch, or a
-                 // change of the render plan: shadow rays and re-shade, primary hits reused
-  full = 4,      // camera, geometry, resolution, spp target, seed: progressive restart
-};
-
-const char* to_string(ChangeClass change);
-
+// none only when nothing at all differs; a change of names or paths alone is `shade` (nothing
+// to recompute, but a new version of the document to publish).
 ChangeClass classify_change(const Scene& before, const Scene& after);
+// The same from their diff_scenes, for a caller that needs the diff too.
+ChangeClass classify_change(const Scene& before, const Scene& after, const SceneDiff& diff);
 
 }  // namespace gloss

@@ -12,6 +12,7 @@
 #include "engine/trace/embree_scene.h"
 #include "engine/trace/sample_cache.h"
 #include "engine/trace/single_sample_pass.h"
+#include "scene/scene_diff.h"
 
 namespace gloss {
 
@@ -22,17 +23,6 @@ double ms_between(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
-bool same_geometry(const Scene& a, const Scene& b) {
-  if (a.objects.size() != b.objects.size()) return false;
-  for (std::size_t i = 0; i < a.objects.size(); ++i) {
-    const Object& x = a.objects[i];
-    const Object& y = b.objects[i];
-    if (x.type != y.type || x.mesh != y.mesh || x.center != y.center || x.radius != y.radius) {
-      return false;
-    }
-  }
-  return true;
-}
 }  // namespace
 
 struct ProgressiveRenderer::Impl {
@@ -123,10 +113,12 @@ bool ProgressiveRenderer::Impl::take_inbox() {
     dirty = std::max(dirty, ChangeClass::shade);
   }
   if (next == nullptr) return true;
-  const ChangeClass change = scene == nullptr ? ChangeClass::full : classify_change(*scene, *next);
+  const SceneDiff diff = scene == nullptr ? SceneDiff{} : diff_scenes(*scene, *next);
+  const ChangeClass change =
+      scene == nullptr ? ChangeClass::full : classify_change(*scene, *next, diff);
   cause = change;
   pass = 0;
-  if (embree == nullptr || scene == nullptr || !same_geometry(*scene, *next)) {
+  if (embree == nullptr || scene == nullptr || diff.geometry) {
     embree = std::make_unique<EmbreeScene>(*next);
   }
   scene = std::move(next);
@@ -249,8 +241,7 @@ void ProgressiveRenderer::set_scene(const Scene& scene) {
   auto copy = std::make_shared<const Scene>(scene);
   {
     std::lock_guard<std::mutex> lock(m_impl->mutex);
-    if (m_impl->last_set != nullptr &&
-        classify_change(*m_impl->last_set, *copy) == ChangeClass::none) {
+    if (m_impl->last_set != nullptr && !diff_scenes(*m_impl->last_set, *copy).any) {
       return;
     }
     m_impl->last_set = copy;

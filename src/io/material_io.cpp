@@ -9,104 +9,21 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "base/field_path.h"
 #include "base/text_distance.h"
+#include "io/field_json.h"
 #include "io/json_location.h"
 #include "io/material_json.h"
 #include "io/preset_table.h"
+#include "scene/fields.h"
+#include "scene/validation.h"
 
 namespace gloss {
 
 namespace {
 
-const std::vector<std::string> material_keys = {"preset",   "ambient",  "diffuse",
-                                                "specular", "emission", "shininess"};
-
-// ---- numbers as text -------------------------------------------------------------------------
-
-// The shortest decimal (at most 9 significant digits, enough for any float) that reads back as
-// exactly value, so files stay readable ("0.75164", not "0.7516400218009949") and round trips are
-// exact. Assumes the C numeric locale ('.' as decimal point).
-std::string float_text(float value) {
-  char buffer[32] = {};
-  for (int digits = 6; digits <= 9; ++digits) {
-    std::snprintf(buffer, sizeof buffer, "%.*g", digits, static_cast<double>(value));
-    if (std::strtof(buffer, nullptr) == value) break;
-  }
-  return buffer;
-}
-
-// The double nearest float_text(value): nlohmann prints it as that same short text.
-double json_number(float value) {
-  return std::strtod(float_text(value).c_str(), nullptr);
-}
-
-// value as a float if it is finite and fits; the double -> float conversion of an out-of-range
-// value is undefined, hence the range test first.
-bool to_finite_float(double value, float& out) {
-  if (!std::isfinite(value) || std::fabs(value) > std::numeric_limits<float>::max()) return false;
-  out = static_cast<float>(value) + 0.0f;  // + 0 turns -0 into +0
-  return true;
-}
-
-// ---- JSON ------------------------------------------------------------------------------------
-
-template <class Json>
-Json colour_json(const glm::vec3& colour) {
-  return Json::array({json_number(colour.x), json_number(colour.y), json_number(colour.z)});
-}
-
-template <class Json>
-Json material_json(const Material& material) {
-  Json value = Json::object();
-  if (!material.preset.empty()) value["preset"] = material.preset;
-  value["ambient"] = colour_json<Json>(material.ambient);
-  value["diffuse"] = colour_json<Json>(material.diffuse);
-  value["specular"] = colour_json<Json>(material.specular);
-  value["emission"] = colour_json<Json>(material.emission);
-  value["shininess"] = json_number(material.shininess);
-  return value;
-}
-
-std::string child_field(const std::string& field, const std::string& key) {
-  return field.empty() ? key : field + "." + key;
-}
-
-[[noreturn]] void fail_field(const std::string& file, const std::string& field,
-                             const std::string& message) {
-  throw InputError(file, message, 0, 0, field);
-}
-
-std::string unknown_key_message(const std::string& key, const std::vector<std::string>& known) {
-  return "unknown key '" + key + "' (did you mean '" + nearest_words(key, known, 1).front() + "'?)";
-}
-
-float number_from_json(const nlohmann::json& value, const std::string& file,
-                       const std::string& field) {
-  if (!value.is_number())
-    fail_field(file, field, std::string("expected a number, got ") + value.type_name());
-  float number = 0;
-  if (!to_finite_float(value.get<double>(), number)) {
-    fail_field(file, field, "expected a finite number, got " + value.dump());
-  }
-  if (number < 0) fail_field(file, field, "must be non-negative, got " + value.dump());
-  return number;
-}
-
-glm::vec3 colour_from_json(const nlohmann::json& value, const std::string& file,
-                           const std::string& field) {
-  if (!value.is_array()) {
-    fail_field(file, field,
-               std::string("expected an array of 3 numbers, got ") + value.type_name());
-  }
-  if (value.size() != 3) {
-    fail_field(file, field, "expected 3 numbers, got " + std::to_string(value.size()));
-  }
-  glm::vec3 colour;
-  for (int i = 0; i < 3; ++i) {
-    colour[i] = number_from_json(value[i], file, field + "[" + std::to_string(i) + "]");
-  }
-  return colour;
-}
+// The key of a material besides its fields (scene/fields.h).
+const char* const kPresetKey = "preset";
 
 std::string join(const std::vector<std::string>& words) {
   std::string out;
@@ -150,8 +67,10 @@ std::string lowercase(std::string text) {
 float mtl_number(const Token& token, const std::string& path, int line) {
   char* end = nullptr;
   const double value = std::strtod(token.text.c_str(), &end);
-  float number = 0;
-  if (*end != '\0' || !to_finite_float(value, number) || number < 0) {
+  const bool finite = std::isfinite(value) && std::fabs(value) <= std::numeric_limits<float>::max();
+  // The conversion to float is only defined in range, hence the test first; + 0 turns -0 into 0.
+  const float number = finite ? static_cast<float>(value) + 0.0f : 0.0f;
+  if (*end != '\0' || !finite || number < 0) {
     throw InputError(path, "expected a non-negative number, got '" + token.text + "'", line,
                      token.column);
   }
@@ -178,6 +97,16 @@ glm::vec3 mtl_colour(const std::vector<Token>& tokens, const std::string& path, 
                    mtl_number(tokens[3], path, line));
 }
 
+// The material field an MTL keyword (lowercase) sets.
+const Field<Material>& mtl_field(const std::string& keyword) {
+  const char* key = keyword == "ka"   ? "ambient"
+                    : keyword == "kd" ? "diffuse"
+                    : keyword == "ks" ? "specular"
+                    : keyword == "ke" ? "emission"
+                                      : "shininess";
+  return *find_field(material_fields(), key);
+}
+
 // Names must survive a write and a read: newmtl takes the rest of the line, trimmed.
 void check_names(const std::string& path, const std::vector<NamedMaterial>& materials) {
   for (std::size_t i = 0; i < materials.size(); ++i) {
@@ -195,51 +124,29 @@ void check_names(const std::string& path, const std::vector<NamedMaterial>& mate
 
 }  // namespace
 
-nlohmann::json material_to_json(const Material& material) {
-  return material_json<nlohmann::json>(material);
+nlohmann::ordered_json material_to_json(const Material& material) {
+  nlohmann::ordered_json value = nlohmann::ordered_json::object();
+  if (!material.preset.empty()) value[kPresetKey] = material.preset;
+  write_fields(material_fields(), material, value);
+  return value;
 }
 
 Material material_from_json(const nlohmann::json& value, const std::string& file,
                             const std::string& field) {
-  if (!value.is_object()) {
-    fail_field(file, field, std::string("expected an object, got ") + value.type_name());
-  }
-  for (const auto& item : value.items()) {
-    const std::string& key = item.key();
-    bool known = false;
-    for (const std::string& candidate : material_keys) known = known || candidate == key;
-    if (!known) fail_field(file, child_field(field, key), unknown_key_message(key, material_keys));
-  }
-
+  const JsonObjectReader reader(value, file, field, allowed_keys(material_fields(), {kPresetKey}));
   Material material;
-  if (value.contains("preset")) {
-    const nlohmann::json& preset_value = value["preset"];
-    const std::string preset_field = child_field(field, "preset");
-    if (!preset_value.is_string()) {
-      fail_field(file, preset_field,
-                 std::string("expected a preset name, got ") + preset_value.type_name());
-    }
-    const std::string name = preset_value.get<std::string>();
+  if (reader.has(kPresetKey)) {
+    const std::string name = reader.string(kPresetKey);
     const Preset* preset = find_preset(name);
     if (preset == nullptr) {
-      fail_field(
-          file, preset_field,
-          "unknown preset '" + name + "' (nearest: " + join(nearest_preset_names(name)) + ")");
+      reader.fail(kPresetKey, "unknown preset '" + name +
+                                  "' (nearest: " + join(nearest_preset_names(name)) + ")");
     }
     // Overridden fields below keep the preset's name: it records where the constants started.
     material = preset->material;
   }
-  const std::pair<const char*, glm::vec3*> colours[] = {{"ambient", &material.ambient},
-                                                        {"diffuse", &material.diffuse},
-                                                        {"specular", &material.specular},
-                                                        {"emission", &material.emission}};
-  for (const auto& [key, target] : colours) {
-    if (value.contains(key)) *target = colour_from_json(value[key], file, child_field(field, key));
-  }
-  if (value.contains("shininess")) {
-    material.shininess =
-        number_from_json(value["shininess"], file, child_field(field, "shininess"));
-  }
+  read_fields(reader, material_fields(), material);
+  validate_material(file, field, material);
   return material;
 }
 
@@ -248,7 +155,7 @@ void save_materials_json(const std::string& path, const std::vector<NamedMateria
   nlohmann::ordered_json document;
   document["materials"] = nlohmann::ordered_json::object();
   for (const auto& [name, material] : materials) {
-    document["materials"][name] = material_json<nlohmann::ordered_json>(material);
+    document["materials"][name] = material_to_json(material);
   }
   write_text_atomically(path, document.dump(2) + "\n");
 }
@@ -256,23 +163,17 @@ void save_materials_json(const std::string& path, const std::vector<NamedMateria
 std::vector<NamedMaterial> load_materials_json(const std::string& path) {
   // Ordered: the list comes back in the file's order, as the user arranged it.
   const nlohmann::ordered_json document = parse_ordered_json_text(read_text_file(path), path);
-  if (!document.is_object()) {
-    throw InputError(path, std::string("expected an object, got ") + document.type_name());
-  }
-  for (const auto& item : document.items()) {
-    if (item.key() != "materials") {
-      fail_field(path, item.key(), unknown_key_message(item.key(), {"materials"}));
-    }
-  }
-  if (!document.contains("materials")) fail_field(path, "materials", "missing required field");
-  const nlohmann::ordered_json& block = document["materials"];
+  const nlohmann::json top(document);
+  const JsonObjectReader reader(top, path, "", {"materials"});
+  const nlohmann::json& block = reader.required("materials");
   if (!block.is_object()) {
-    fail_field(path, "materials", std::string("expected an object, got ") + block.type_name());
+    reader.fail("materials", std::string("expected an object, got ") + block.type_name());
   }
   std::vector<NamedMaterial> materials;
-  for (const auto& item : block.items()) {
-    materials.emplace_back(item.key(), material_from_json(nlohmann::json(item.value()), path,
-                                                          "materials." + item.key()));
+  for (const auto& item : document["materials"].items()) {
+    const std::string field = child_path("materials", item.key());
+    materials.emplace_back(item.key(),
+                           material_from_json(nlohmann::json(item.value()), path, field));
   }
   return materials;
 }
@@ -343,6 +244,8 @@ std::vector<NamedMaterial> load_mtl(const std::string& path) {
                        tokens[0].column);
     }
     Material& material = materials.back().second;
+    const Field<Material>& field = mtl_field(keyword);
+    FieldValue value;
     if (keyword == "ns") {
       if (tokens.size() != 2) {
         throw InputError(
@@ -350,14 +253,16 @@ std::vector<NamedMaterial> load_mtl(const std::string& path) {
             "'" + tokens[0].text + "' expects 1 number, got " + std::to_string(tokens.size() - 1),
             line_number, tokens[0].column);
       }
-      material.shininess = mtl_number(tokens[1], path, line_number);
+      value.x = mtl_number(tokens[1], path, line_number);
     } else {
-      const glm::vec3 value = mtl_colour(tokens, path, line_number);
-      if (keyword == "ka") material.ambient = value;
-      if (keyword == "kd") material.diffuse = value;
-      if (keyword == "ks") material.specular = value;
-      if (keyword == "ke") material.emission = value;
+      value.v = mtl_colour(tokens, path, line_number);
     }
+    const FieldProblem problem = field_problem(field, value);
+    if (!problem.message.empty()) {
+      throw InputError(path, "'" + tokens[0].text + "' " + problem.message, line_number,
+                       tokens[0].column);
+    }
+    field.set(material, value);
   }
   return materials;
 }

@@ -9,10 +9,10 @@
 
 namespace gloss {
 
-// The JSON object of a material (all fields written).
-nlohmann::json material_to_json(const Material& material);
-// Parses a material object: {"preset": NAME, ...overrides} or explicit fields. file and field
-// name the place for errors (InputError).
+// The JSON object of a material: its preset, if any, then every field of its table.
+nlohmann::ordered_json material_to_json(const Material& material);
+// Parses and validates a material object: {"preset": NAME, ...overrides} or explicit fields.
+// file and field name the place for errors (InputError).
 Material material_from_json(const nlohmann::json& value, const std::string& file,
                             const std::string& field);
 

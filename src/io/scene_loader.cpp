@@ -6,10 +6,12 @@
 #include "base/atomic_file.h"
 #include "base/error.h"
 #include "base/text_distance.h"
+#include "io/field_json.h"
 #include "io/json_location.h"
 #include "io/material_json.h"
 #include "io/scene_json_reader.h"
 #include "io/scene_object_reader.h"
+#include "scene/fields.h"
 
 namespace gloss {
 
@@ -58,18 +60,12 @@ nlohmann::json parse_scene_json(const std::string& text, const std::string& path
   }
 }
 
-const std::vector<std::string> kShadingModelNames = {"phong", "blinn-phong"};
-const std::vector<std::string> kPowModeNames = {"exact", "fast"};
-
 Camera read_camera(const JsonObjectReader& top) {
   Camera camera;
   if (!top.has("camera")) return camera;
   const JsonObjectReader reader(top.required("camera"), top.file(), "camera",
-                                {"eye", "target", "up", "fov_y"});
-  camera.eye = reader.vec3("eye", camera.eye);
-  camera.target = reader.vec3("target", camera.target);
-  camera.up = reader.vec3("up", camera.up);
-  camera.fov_y = reader.number("fov_y", camera.fov_y);
+                                allowed_keys(camera_fields()));
+  read_fields(reader, camera_fields(), camera);
   return camera;
 }
 
@@ -80,13 +76,9 @@ std::vector<PointLight> read_lights(const JsonObjectReader& top) {
   if (!array.is_array()) top.fail("lights", "expected an array of lights");
   for (std::size_t i = 0; i < array.size(); ++i) {
     const JsonObjectReader reader(array[i], top.file(), index_path("lights", i),
-                                  {"position", "ambient", "diffuse", "specular", "attenuation"});
+                                  allowed_keys(light_fields()));
     PointLight light;
-    light.position = reader.vec3("position");
-    light.ambient = reader.vec3("ambient", light.ambient);
-    light.diffuse = reader.vec3("diffuse", light.diffuse);
-    light.specular = reader.vec3("specular", light.specular);
-    light.attenuation = reader.vec3("attenuation", light.attenuation);
+    read_fields(reader, light_fields(), light);
     lights.push_back(light);
   }
   return lights;
@@ -105,32 +97,13 @@ MaterialMap read_materials(const JsonObjectReader& top) {
   return materials;
 }
 
+// Sizes are range-checked as they are read, on the JSON number, before anything is allocated.
 RenderSettings read_render(const JsonObjectReader& top) {
   RenderSettings render;
   if (!top.has("render")) return render;
-  const JsonObjectReader reader(
-      top.required("render"), top.file(), "render",
-      {"width", "height", "spp", "model", "shadows", "energy_normalize", "srgb", "seed", "pow"});
-  // Sizes are range-checked here, on the JSON number, before anything is allocated.
-  render.width = static_cast<int>(reader.integer("width", render.width, 1, kMaxImageSide));
-  render.height = static_cast<int>(reader.integer("height", render.height, 1, kMaxImageSide));
-  render.spp = static_cast<int>(reader.integer("spp", render.spp, 1, kMaxSpp));
-  const std::string model = reader.string("model", to_string(render.model));
-  if (!parse_shading_model(model, render.model)) {
-    reader.fail("model", "unknown shading model '" + model + "'" +
-                             did_you_mean(nearest_words(model, kShadingModelNames, 1)));
-  }
-  render.shadows = reader.boolean("shadows", render.shadows);
-  render.energy_normalize = reader.boolean("energy_normalize", render.energy_normalize);
-  render.srgb = reader.boolean("srgb", render.srgb);
-  render.seed = static_cast<std::uint32_t>(reader.integer("seed", render.seed, 0, 0xFFFFFFFFLL));
-  const std::string pow = reader.string("pow", "exact");
-  if (pow == "exact" || pow == "fast") {
-    render.pow = pow == "exact" ? PowMode::exact : PowMode::fast;
-  } else {
-    reader.fail("pow", "unknown pow mode '" + pow + "'" +
-                           did_you_mean(nearest_words(pow, kPowModeNames, 1)));
-  }
+  const JsonObjectReader reader(top.required("render"), top.file(), "render",
+                                allowed_keys(render_fields()));
+  read_fields(reader, render_fields(), render);
   return render;
 }
 
@@ -162,13 +135,12 @@ Scene parse_scene(const std::string& text, const std::string& path,
   const nlohmann::json root = parse_scene_json(text, path);
   const JsonObjectReader top(
       root, path, "",
-      {"camera", "background", "ambient", "lights", "materials", "objects", "render"});
+      allowed_keys(scene_fields(), {"camera", "lights", "materials", "objects", "render"}));
 
   Scene scene;
   scene.path = path;
   scene.camera = read_camera(top);
-  scene.background = top.vec3("background", scene.background);
-  scene.ambient = top.vec3("ambient", scene.ambient);
+  read_fields(top, scene_fields(), scene);
   scene.lights = read_lights(top);
   scene.render = read_render(top);
   MaterialMap materials = read_materials(top);

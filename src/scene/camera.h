@@ -15,9 +15,8 @@ struct Camera {
   float fov_y = 40.0f;  // degrees, 0 < fov_y < 180
 };
 
-inline bool operator==(const Camera& a, const Camera& b) {
-  return a.eye == b.eye && a.target == b.target && a.up == b.up && a.fov_y == b.fov_y;
-}
+// Equal in every field of its table (scene/fields.h).
+bool operator==(const Camera& a, const Camera& b);
 inline bool operator!=(const Camera& a, const Camera& b) {
   return !(a == b);
 }

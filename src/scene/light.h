@@ -12,10 +12,8 @@ struct PointLight {
   glm::vec3 attenuation{1.0f, 0.0f, 0.0f};  // (c0, c1, c2), non-negative, not all zero
 };
 
-inline bool operator==(const PointLight& a, const PointLight& b) {
-  return a.position == b.position && a.ambient == b.ambient && a.diffuse == b.diffuse &&
-         a.specular == b.specular && a.attenuation == b.attenuation;
-}
+// Equal in every field of its table (scene/fields.h).
+bool operator==(const PointLight& a, const PointLight& b);
 inline bool operator!=(const PointLight& a, const PointLight& b) {
   return !(a == b);
 }

@@ -15,10 +15,8 @@ struct Material {
   std::string preset;        // preset the constants came from, empty when custom
 };
 
-inline bool operator==(const Material& a, const Material& b) {
-  return a.ambient == b.ambient && a.diffuse == b.diffuse && a.specular == b.specular &&
-         a.emission == b.emission && a.shininess == b.shininess && a.preset == b.preset;
-}
+// Equal in every field of its table (scene/fields.h) and in preset.
+bool operator==(const Material& a, const Material& b);
 inline bool operator!=(const Material& a, const Material& b) {
   return !(a == b);
 }

@@ -1,27 +1,38 @@
 #include "scene/render_settings.h"
 
+#include "scene/fields.h"
+
 namespace gloss {
 
+namespace {
+// The names of a choice field of the render table: the one place they are spelled.
+const std::vector<const char*>& choice_names(const char* key) {
+  return find_field(render_fields(), key)->choices;
+}
+
+template <class E>
+bool parse_choice(const char* key, const std::string& name, E& out) {
+  const int index = choice_index(*find_field(render_fields(), key), name);
+  if (index < 0) return false;
+  out = static_cast<E>(index);
+  return true;
+}
+}  // namespace
+
 const char* to_string(ShadingModel model) {
-  switch (model) {
-    case ShadingModel::phong:
-      return "phong";
-    case ShadingModel::blinn_phong:
-      return "blinn-phong";
-  }
-  return "unknown";
+  return choice_names("model").at(static_cast<std::size_t>(model));
 }
 
 bool parse_shading_model(const std::string& name, ShadingModel& model) {
-  if (name == "phong") {
-    model = ShadingModel::phong;
-    return true;
-  }
-  if (name == "blinn-phong") {
-    model = ShadingModel::blinn_phong;
-    return true;
-  }
-  return false;
+  return parse_choice("model", name, model);
+}
+
+const char* to_string(PowMode mode) {
+  return choice_names("pow").at(static_cast<std::size_t>(mode));
+}
+
+bool parse_pow_mode(const std::string& name, PowMode& mode) {
+  return parse_choice("pow", name, mode);
 }
 
 }  // namespace gloss

@@ -8,12 +8,17 @@ namespace gloss {
 
 enum class ShadingModel { phong, blinn_phong };
 
-// "phong" / "blinn-phong"; parse returns false for any other name.
+// "phong" / "blinn-phong" (the names of scene/fields.h's render table); parse returns false for
+// any other name.
 const char* to_string(ShadingModel model);
 bool parse_shading_model(const std::string& name, ShadingModel& model);
 
 // How c^alpha is evaluated: exactly (std::pow semantics) or by a fast exp2/log2 approximation.
 enum class PowMode { exact, fast };
+
+// "exact" / "fast"; parse returns false for any other name.
+const char* to_string(PowMode mode);
+bool parse_pow_mode(const std::string& name, PowMode& mode);
 
 struct RenderSettings {
   int width = 640;   // pixels

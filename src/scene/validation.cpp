@@ -7,14 +7,11 @@
 #include <glm/geometric.hpp>
 
 #include "base/field_path.h"
+#include "scene/fields.h"
 
 namespace gloss {
 
 namespace {
-
-bool finite(const glm::vec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
 
 std::string number_text(double value) {
   char text[32];
@@ -22,35 +19,21 @@ std::string number_text(double value) {
   return text;
 }
 
-void check_finite(const std::string& file, const std::string& field, const glm::vec3& v) {
-  if (!finite(v)) fail_field(file, field, "every component must be a finite number");
-}
-
-// Colours are linear RGB >= 0 (material.h, light.h); unclamped above.
-void check_colour(const std::string& file, const std::string& field, const glm::vec3& c) {
-  check_finite(file, field, c);
-  if (c.x < 0.0f || c.y < 0.0f || c.z < 0.0f) {
-    fail_field(file, field, "a colour must not be negative");
+// Every field of table within its kind and range (scene/field.h), named under path.
+template <class S>
+void check_fields(const std::string& file, const std::string& path, const FieldTable<S>& table,
+                  const S& value) {
+  for (const Field<S>& f : table) {
+    const FieldProblem problem = field_problem(f, f.get(value));
+    if (problem.message.empty()) continue;
+    const std::string field = child_path(path, f.key);
+    fail_field(file, problem.component < 0 ? field : index_path(field, problem.component),
+               problem.message);
   }
 }
 
-void check_range(const std::string& file, const std::string& field, long long value, long long lo,
-                 long long hi) {
-  if (value < lo || value > hi) {
-    fail_field(file, field,
-               "must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) +
-                   ", got " + std::to_string(value));
-  }
-}
-
-void validate_camera(const std::string& file, const Camera& camera) {
-  check_finite(file, "camera.eye", camera.eye);
-  check_finite(file, "camera.target", camera.target);
-  check_finite(file, "camera.up", camera.up);
-  if (!(camera.fov_y > 0.0f && camera.fov_y < 180.0f)) {
-    fail_field(file, "camera.fov_y",
-               "must be between 0 and 180 degrees (exclusive), got " + number_text(camera.fov_y));
-  }
+// The rules that tie fields together: the view direction and the up hint.
+void check_camera(const std::string& file, const Camera& camera) {
   // In double so that the test is exact for any finite float input.
   const glm::dvec3 view = glm::dvec3(camera.target) - glm::dvec3(camera.eye);
   const glm::dvec3 up(camera.up);
@@ -61,9 +44,8 @@ void validate_camera(const std::string& file, const Camera& camera) {
   }
 }
 
-void validate_render(const std::string& file, const RenderSettings& render) {
-  check_range(file, "render.width", render.width, 1, kMaxImageSide);
-  check_range(file, "render.height", render.height, 1, kMaxImageSide);
+// The pixel budget: each side within range is not enough.
+void check_render(const std::string& file, const RenderSettings& render) {
   const long long pixels = static_cast<long long>(render.width) * render.height;
   if (pixels > kMaxImagePixels) {
     fail_field(file, "render",
@@ -71,34 +53,16 @@ void validate_render(const std::string& file, const RenderSettings& render) {
                    std::to_string(pixels) + " pixels, more than the limit of " +
                    std::to_string(kMaxImagePixels));
   }
-  check_range(file, "render.spp", render.spp, 1, kMaxSpp);
 }
 
-void validate_material(const std::string& file, const std::string& field, const Material& m) {
-  check_colour(file, field + ".ambient", m.ambient);
-  check_colour(file, field + ".diffuse", m.diffuse);
-  check_colour(file, field + ".specular", m.specular);
-  check_colour(file, field + ".emission", m.emission);
-  if (!(std::isfinite(m.shininess) && m.shininess >= 0.0f)) {
-    fail_field(file, field + ".shininess",
-               "must be a finite number >= 0, got " + number_text(m.shininess));
-  }
-}
-
-void validate_light(const std::string& file, const std::string& field, const PointLight& l) {
-  check_finite(file, field + ".position", l.position);
-  check_colour(file, field + ".ambient", l.ambient);
-  check_colour(file, field + ".diffuse", l.diffuse);
-  check_colour(file, field + ".specular", l.specular);
-  const glm::vec3& c = l.attenuation;
-  check_finite(file, field + ".attenuation", c);
-  if (c.x < 0.0f || c.y < 0.0f || c.z < 0.0f || (c.x == 0.0f && c.y == 0.0f && c.z == 0.0f)) {
+void check_light(const std::string& file, const std::string& field, const PointLight& light) {
+  if (light.attenuation == glm::vec3(0.0f)) {
     fail_field(file, field + ".attenuation",
                "coefficients [c0, c1, c2] must be >= 0 and not all 0");
   }
 }
 
-void validate_object(const Scene& scene, std::size_t index) {
+void check_object(const Scene& scene, std::size_t index) {
   const std::string& file = scene.path;
   const Object& object = scene.objects[index];
   const std::string field = index_path("objects", index);
@@ -107,7 +71,10 @@ void validate_object(const Scene& scene, std::size_t index) {
                "material index " + std::to_string(object.material) + " is out of range");
   }
   if (object.type == ObjectType::sphere) {
-    check_finite(file, field + ".center", object.center);
+    if (!(std::isfinite(object.center.x) && std::isfinite(object.center.y) &&
+          std::isfinite(object.center.z))) {
+      fail_field(file, field + ".center", "every component must be a finite number");
+    }
     if (!(std::isfinite(object.radius) && object.radius > 0.0f)) {
       fail_field(file, field + ".radius",
                  "must be a finite number > 0, got " + number_text(object.radius));
@@ -121,12 +88,15 @@ void validate_object(const Scene& scene, std::size_t index) {
 
 void validate_scene(const Scene& scene) {
   const std::string& file = scene.path;
-  validate_camera(file, scene.camera);
-  validate_render(file, scene.render);
-  check_colour(file, "background", scene.background);
-  check_colour(file, "ambient", scene.ambient);
+  check_fields(file, "camera", camera_fields(), scene.camera);
+  check_camera(file, scene.camera);
+  check_fields(file, "render", render_fields(), scene.render);
+  check_render(file, scene.render);
+  check_fields(file, "", scene_fields(), scene);
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-    validate_light(file, index_path("lights", i), scene.lights[i]);
+    const std::string field = index_path("lights", i);
+    check_fields(file, field, light_fields(), scene.lights[i]);
+    check_light(file, field, scene.lights[i]);
   }
   if (scene.material_names.size() != scene.materials.size()) {
     fail_field(file, "materials", "every material needs a name");
@@ -134,7 +104,12 @@ void validate_scene(const Scene& scene) {
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
     validate_material(file, child_path("materials", scene.material_names[i]), scene.materials[i]);
   }
-  for (std::size_t i = 0; i < scene.objects.size(); ++i) validate_object(scene, i);
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) check_object(scene, i);
+}
+
+void validate_material(const std::string& file, const std::string& field,
+                       const Material& material) {
+  check_fields(file, field, material_fields(), material);
 }
 
 }  // namespace gloss

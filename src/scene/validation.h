@@ -1,6 +1,8 @@
 #pragma once
 // The checks a render needs, on a Scene however it was made (loaded, edited, or overridden by
 // gloss-cli options). Fields are named as in the scene file.
+#include <string>
+
 #include "scene/scene.h"
 
 namespace gloss {
@@ -9,5 +11,8 @@ namespace gloss {
 // InputError naming the file and the field. The scene loader calls it; gloss-cli calls it again
 // after applying its overrides; the renderers call it before they allocate.
 void validate_scene(const Scene& scene);
+
+// The checks of one material (a materials file, an MTL file), named under field.
+void validate_material(const std::string& file, const std::string& field, const Material& material);
 
 }  // namespace gloss

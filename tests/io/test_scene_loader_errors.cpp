@@ -157,11 +157,11 @@ TEST(SceneLoaderErrors, NegativeRadiusShininessAndColourAreRefused) {
       with_object(R"({"type": "sphere", "center": [0, 0, 0], "radius": -1, "material": "m"})"),
       "objects[0].radius", "greater than 0");
   expect_field_error(with_material(R"({"preset": "gold", "shininess": -2})"),
-                     "materials.m.shininess", "non-negative");
+                     "materials.m.shininess", "must be from 0 to 1000000, got -2");
   expect_field_error(with_material(R"({"diffuse": [0.5, -0.1, 0.5]})"), "materials.m.diffuse[1]",
-                     "non-negative");
+                     "must be >= 0, got -0.1");
   expect_field_error(with_light(R"({"position": [1, 1, 1], "diffuse": [1, -1, 1]})"),
-                     "lights[0].diffuse", "negative");
+                     "lights[0].diffuse[1]", "must be >= 0, got -1");
 }
 
 TEST(SceneLoaderErrors, ImpossibleImageSizesAndSampleCountsAreRefused) {
@@ -190,7 +190,7 @@ TEST(SceneLoaderErrors, AttenuationMustBeNonNegativeAndNotAllZero) {
   expect_field_error(with_light(R"({"position": [1, 1, 1], "attenuation": [0, 0, 0]})"),
                      "lights[0].attenuation", "not all 0");
   expect_field_error(with_light(R"({"position": [1, 1, 1], "attenuation": [1, -0.5, 0]})"),
-                     "lights[0].attenuation", ">= 0");
+                     "lights[0].attenuation[1]", "must be >= 0, got -0.5");
 }
 
 TEST(SceneLoaderErrors, ShapeParametersOutOfRangeAreRefused) {
