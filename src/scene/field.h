@@ -34,6 +34,17 @@ struct FieldValue {
   double x = 0.0;
 };
 
+inline FieldValue vec3_value(const glm::vec3& v) {
+  FieldValue value;
+  value.v = v;
+  return value;
+}
+inline FieldValue number_value(double x) {
+  FieldValue value;
+  value.x = x;
+  return value;
+}
+
 inline bool operator==(const FieldValue& a, const FieldValue& b) {
   return a.v == b.v && a.x == b.x;
 }

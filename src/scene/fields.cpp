@@ -77,7 +77,7 @@ const FieldTable<RenderSettings>& render_fields() {
                     .explain("image height, pixels"));
     t.push_back(scalar_field<&RenderSettings::spp>(whole, "spp", "samples per pixel")
                     .range(1, kMaxSpp)
-                    .ui(1, 256)
+                    .ui(1, 256, true)
                     .explain("samples per pixel, stratified; 1 samples the pixel centre"));
     t.push_back(
         choice_field<&RenderSettings::model>("model", "shading model", {"phong", "blinn-phong"})

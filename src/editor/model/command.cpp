@@ -1,24 +1,16 @@
 #include "editor/model/command.h"
 
 #include <cmath>
-#include <cstdio>
 
+#include "base/error.h"
 #include "base/overloaded.h"
+#include "base/text_distance.h"
 #include "io/preset_table.h"
+#include "scene/validation.h"
 
 namespace gloss {
 
 namespace {
-
-bool finite(const glm::vec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-void check_colour(const glm::vec3& v, const std::string& what) {
-  if (!finite(v) || v.x < 0.0f || v.y < 0.0f || v.z < 0.0f) {
-    throw CommandError(what + " must be finite and not negative");
-  }
-}
 
 Material& object_material(Scene& scene, int object) {
   if (object < 0 || object >= static_cast<int>(scene.objects.size())) {
@@ -40,146 +32,156 @@ PointLight& scene_light(Scene& scene, int light) {
   return scene.lights[light];
 }
 
-void check_light_value(LightField field, const glm::vec3& v) {
-  if (field == LightField::position) {
-    if (!finite(v)) throw CommandError("light position must be finite");
-    return;
+template <class S>
+const Field<S>& table_field(const FieldTable<S>& table, FieldPart part, const std::string& key) {
+  const Field<S>* field = find_field(table, key);
+  if (field == nullptr) {
+    throw CommandError(std::string("no ") + to_string(part) + " field '" + key + "'" +
+                       did_you_mean(nearest_words(key, field_keys(table), 1)));
   }
-  check_colour(v, std::string("light ") + to_string(field));
-  if (field == LightField::attenuation && v == glm::vec3(0.0f)) {
-    throw CommandError("attenuation coefficients must not all be zero");
+  return *field;
+}
+
+template <class S>
+void set_in(const FieldTable<S>& table, FieldPart part, S& target, const SetField& c) {
+  table_field(table, part, c.key).set(target, c.value);
+}
+
+void set_field(const SetField& c, Scene& scene) {
+  switch (c.part) {
+    case FieldPart::material:
+      return set_in(material_fields(), c.part, object_material(scene, c.index), c);
+    case FieldPart::light:
+      return set_in(light_fields(), c.part, scene_light(scene, c.index), c);
+    case FieldPart::render:
+      return set_in(render_fields(), c.part, scene.render, c);
+    case FieldPart::camera:
+      return set_in(camera_fields(), c.part, scene.camera, c);
+    case FieldPart::scene:
+      return set_in(scene_fields(), c.part, scene, c);
   }
 }
 
-void check_camera(const Camera& camera) {
-  if (!finite(camera.eye) || !finite(camera.target) || !finite(camera.up) ||
-      !(camera.fov_y > 0.0f && camera.fov_y < 180.0f)) {
-    throw CommandError("camera values must be finite with 0 < fov_y < 180");
-  }
-  try {
-    make_camera_frame(camera, 1, 1);
-  } catch (const std::exception& e) {
-    throw CommandError(std::string("camera: ") + e.what());
-  }
+// The field's label and its value as text, for undo labels.
+template <class S>
+std::string describe(const FieldTable<S>& table, const SetField& c) {
+  const Field<S>* field = find_field(table, c.key);
+  if (field == nullptr) return c.key;
+  return std::string(field->label) + " to " + field_text(*field, c.value);
 }
 
-std::string vec_text(const glm::vec3& v) {
-  char text[96];
-  std::snprintf(text, sizeof text, "(%g, %g, %g)", v.x, v.y, v.z);
-  return text;
+std::string describe(const SetField& c) {
+  switch (c.part) {
+    case FieldPart::material:
+      return describe(material_fields(), c) + " (object " + std::to_string(c.index) + ")";
+    case FieldPart::light:
+      return describe(light_fields(), c) + " (light " + std::to_string(c.index) + ")";
+    case FieldPart::render:
+      return describe(render_fields(), c);
+    case FieldPart::camera:
+      return "camera " + describe(camera_fields(), c);
+    case FieldPart::scene:
+      return describe(scene_fields(), c);
+  }
+  return c.key;
+}
+
+// Whether edits of the field come as gestures (a drag of a slider, a colour or a vector) that
+// make one undo step, or one by one (flags and choices: a click each).
+bool continuous(const SetField& c) {
+  auto of = [&](const auto& table) {
+    const auto* field = find_field(table, c.key);
+    return field != nullptr && field->kind != FieldKind::flag && field->kind != FieldKind::choice;
+  };
+  switch (c.part) {
+    case FieldPart::material:
+      return of(material_fields());
+    case FieldPart::light:
+      return of(light_fields());
+    case FieldPart::render:
+      return of(render_fields());
+    case FieldPart::camera:
+      return of(camera_fields());
+    case FieldPart::scene:
+      return of(scene_fields());
+  }
+  return false;
 }
 
 }  // namespace
 
+const char* to_string(FieldPart part) {
+  switch (part) {
+    case FieldPart::material:
+      return "material";
+    case FieldPart::light:
+      return "light";
+    case FieldPart::render:
+      return "render";
+    case FieldPart::camera:
+      return "camera";
+    case FieldPart::scene:
+      return "scene";
+  }
+  return "?";
+}
+
 void apply_command(const Command& command, Scene& scene) {
   // Work on a copy so a throw leaves the document as it was.
   Scene next = scene;
-  std::visit(
-      Overloaded{
-          [&](const SetMaterialColour& c) {
-            if (c.field == MaterialField::shininess) throw CommandError("shininess is a number");
-            check_colour(c.value, to_string(c.field));
-            Material& m = object_material(next, c.object);
-            material_colour(m, c.field) = c.value;
-          },
-          [&](const SetShininess& c) {
-            // The spec's range of alpha; the slider offers 0..kMaxShininess.
-            if (!std::isfinite(c.value) || c.value < 0.0f || c.value > 1e6f) {
-              throw CommandError("shininess must be between 0 and 1e6");
-            }
-            object_material(next, c.object).shininess = c.value;
-          },
-          [&](const ApplyPreset& c) {
-            const Preset* preset = find_preset(c.name);
-            if (preset == nullptr) {
-              std::string message = "unknown preset '" + c.name + "'";
-              const auto near = nearest_preset_names(c.name, 1);
-              if (!near.empty()) message += " (did you mean '" + near.front() + "'?)";
-              throw CommandError(message);
-            }
-            object_material(next, c.object) = preset->material;
-          },
-          [&](const SetMaterial& c) {
-            for (MaterialField f : {MaterialField::ambient, MaterialField::diffuse,
-                                    MaterialField::specular, MaterialField::emission}) {
-              check_colour(material_colour(c.material, f), to_string(f));
-            }
-            if (!std::isfinite(c.material.shininess) || c.material.shininess < 0.0f) {
-              throw CommandError("shininess must be finite and not negative");
-            }
-            object_material(next, c.object) = c.material;
-          },
-          [&](const SetModel& c) {
-            if (c.keep_highlight_size) {
-              for (Material& m : next.materials) {
-                m.shininess = exponent_for_model(m.shininess, next.render.model, c.model);
-              }
-            }
-            next.render.model = c.model;
-          },
-          [&](const SetEnergyNormalize& c) { next.render.energy_normalize = c.on; },
-          [&](const SetLightValue& c) {
-            check_light_value(c.field, c.value);
-            light_value(scene_light(next, c.light), c.field) = c.value;
-          },
-          [&](const AddLight& c) {
-            for (LightField f : {LightField::position, LightField::ambient, LightField::diffuse,
-                                 LightField::specular, LightField::attenuation}) {
-              check_light_value(f, light_value(c.light, f));
-            }
-            next.lights.push_back(c.light);
-          },
-          [&](const RemoveLight& c) {
-            scene_light(next, c.light);
-            next.lights.erase(next.lights.begin() + c.light);
-          },
-          [&](const SetSceneAmbient& c) {
-            check_colour(c.value, "scene ambient");
-            next.ambient = c.value;
-          },
-          [&](const SetBackground& c) {
-            check_colour(c.value, "background");
-            next.background = c.value;
-          },
-          [&](const SetShadows& c) { next.render.shadows = c.on; },
-          [&](const SetCamera& c) {
-            check_camera(c.camera);
-            next.camera = c.camera;
-          },
-          [&](const OrbitCamera& c) {
-            if (!std::isfinite(c.yaw_deg) || !std::isfinite(c.pitch_deg)) {
-              throw CommandError("orbit angles must be finite");
-            }
-            const Camera camera = orbit_camera(next.camera, c.yaw_deg, c.pitch_deg);
-            check_camera(camera);
-            next.camera = camera;
-          },
-          [&](const SetTargetSpp& c) {
-            if (c.spp < 1 || c.spp > kMaxSpp) {
-              throw CommandError("target spp must be between 1 and " + std::to_string(kMaxSpp));
-            }
-            next.render.spp = c.spp;
-          },
-          [&](const ReplaceScene& c) {
-            if (!c.scene) throw CommandError("no scene to open");
-            next = *c.scene;
-          },
-      },
-      command);
+  std::visit(Overloaded{
+                 [&](const SetField& c) { set_field(c, next); },
+                 [&](const ApplyPreset& c) {
+                   const Preset* preset = find_preset(c.name);
+                   if (preset == nullptr) {
+                     throw CommandError("unknown preset '" + c.name + "'" +
+                                        did_you_mean(nearest_preset_names(c.name, 1)));
+                   }
+                   object_material(next, c.object) = preset->material;
+                 },
+                 [&](const SetMaterial& c) { object_material(next, c.object) = c.material; },
+                 [&](const SetModel& c) {
+                   if (c.keep_highlight_size) {
+                     for (Material& m : next.materials) {
+                       m.shininess = exponent_for_model(m.shininess, next.render.model, c.model);
+                     }
+                   }
+                   next.render.model = c.model;
+                 },
+                 [&](const AddLight& c) { next.lights.push_back(c.light); },
+                 [&](const RemoveLight& c) {
+                   scene_light(next, c.light);
+                   next.lights.erase(next.lights.begin() + c.light);
+                 },
+                 [&](const SetCamera& c) { next.camera = c.camera; },
+                 [&](const OrbitCamera& c) {
+                   if (!std::isfinite(c.yaw_deg) || !std::isfinite(c.pitch_deg)) {
+                     throw CommandError("orbit angles must be finite");
+                   }
+                   next.camera = orbit_camera(next.camera, c.yaw_deg, c.pitch_deg);
+                 },
+                 [&](const ReplaceScene& c) {
+                   if (!c.scene) throw CommandError("no scene to open");
+                   next = *c.scene;
+                 },
+             },
+             command);
+  try {
+    validate_scene(next);
+  } catch (const InputError& e) {
+    throw CommandError(e.field().empty() ? e.message() : e.field() + ": " + e.message());
+  }
   scene = std::move(next);
 }
 
 std::string command_label(const Command& command) {
   return std::visit(
       Overloaded{
-          [](const SetMaterialColour& c) {
-            return std::string("set ") + to_string(c.field) + " of object " +
-                   std::to_string(c.object) + " to " + vec_text(c.value);
-          },
-          [](const SetShininess& c) {
-            char text[32];
-            std::snprintf(text, sizeof text, "%g", c.value);
-            return "set shininess of object " + std::to_string(c.object) + " to " + text;
+          [](const SetField& c) {
+            if (c.part == FieldPart::light && c.key == "position") {
+              return "move light " + std::to_string(c.index);
+            }
+            return "set " + describe(c);
           },
           [](const ApplyPreset& c) {
             return "apply preset " + c.name + " to object " + std::to_string(c.object);
@@ -191,44 +193,26 @@ std::string command_label(const Command& command) {
             return std::string("switch to ") + to_string(c.model) +
                    (c.keep_highlight_size ? " (keep highlight size)" : "");
           },
-          [](const SetEnergyNormalize& c) {
-            return std::string("turn energy normalisation ") + (c.on ? "on" : "off");
-          },
-          [](const SetLightValue& c) {
-            if (c.field == LightField::position) return "move light " + std::to_string(c.light);
-            return std::string("set ") + to_string(c.field) + " of light " +
-                   std::to_string(c.light);
-          },
           [](const AddLight&) { return std::string("add light"); },
           [](const RemoveLight& c) { return "remove light " + std::to_string(c.light); },
-          [](const SetSceneAmbient&) { return std::string("set scene ambient"); },
-          [](const SetBackground&) { return std::string("set background"); },
-          [](const SetShadows& c) { return std::string("turn shadows ") + (c.on ? "on" : "off"); },
           [](const SetCamera&) { return std::string("move camera"); },
           [](const OrbitCamera&) { return std::string("orbit camera"); },
-          [](const SetTargetSpp& c) { return "set target spp to " + std::to_string(c.spp); },
           [](const ReplaceScene& c) { return c.label; },
       },
       command);
 }
 
 std::string merge_key(const Command& command) {
-  return std::visit(
-      Overloaded{
-          [](const SetMaterialColour& c) {
-            return "colour " + std::to_string(c.object) + " " + to_string(c.field);
-          },
-          [](const SetShininess& c) { return "shininess " + std::to_string(c.object); },
-          [](const SetLightValue& c) {
-            return "light " + std::to_string(c.light) + " " + to_string(c.field);
-          },
-          [](const SetSceneAmbient&) { return std::string("scene ambient"); },
-          [](const SetBackground&) { return std::string("background"); },
-          [](const SetCamera&) { return std::string("camera"); },
-          [](const SetTargetSpp&) { return std::string("spp"); },
-          [](const auto&) { return std::string(); },
-      },
-      command);
+  return std::visit(Overloaded{
+                        [](const SetField& c) {
+                          if (!continuous(c)) return std::string();
+                          return std::string(to_string(c.part)) + " " + std::to_string(c.index) +
+                                 " " + c.key;
+                        },
+                        [](const SetCamera&) { return std::string("camera"); },
+                        [](const auto&) { return std::string(); },
+                    },
+                    command);
 }
 
 }  // namespace gloss

@@ -2,11 +2,13 @@
 // Edits of the document. Panels, the viewport and scripts build these; the command layer applies
 // them and records undo steps. Each command is a plain value: what to change and to what.
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <variant>
 
 #include "editor/model/document.h"
+#include "scene/fields.h"
 
 namespace gloss {
 
@@ -16,16 +18,23 @@ class CommandError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Objects are named by index; a command edits the material the object uses (shared materials
-// change on every object that uses them).
-struct SetMaterialColour {
-  int object = 0;
-  MaterialField field = MaterialField::diffuse;  // not shininess
-  glm::vec3 value{0.0f};                         // linear RGB, >= 0
+// The struct a field edit targets, and how SetField::index names it.
+enum class FieldPart {
+  material,  // the material object `index` uses (shared materials change on every user)
+  light,     // light `index`
+  render,    // the render settings
+  camera,    // the camera
+  scene,     // the scene's own fields: background, ambient
 };
-struct SetShininess {
-  int object = 0;
-  float value = 32.0f;  // Phong exponent, 0..kMaxShininess
+const char* to_string(FieldPart part);
+
+// Sets one field of a table of scene/fields.h. The value is checked by the document's one
+// validator (scene/validation.h) after it is set.
+struct SetField {
+  FieldPart part = FieldPart::material;
+  int index = 0;    // object or light; unused for the other parts
+  std::string key;  // a key of the part's table
+  FieldValue value;
 };
 // Loads a preset's constants; with the preset the material already names, this is "reset".
 struct ApplyPreset {
@@ -38,32 +47,16 @@ struct SetMaterial {
   Material material;
   std::string source;  // shown in the undo label, e.g. the material's name
 };
+// The model switch of the whole scene, optionally rescaling every exponent (document.h's rule).
 struct SetModel {
   ShadingModel model = ShadingModel::phong;
-  bool keep_highlight_size = false;  // rescale every exponent (document.h's rule)
-};
-struct SetEnergyNormalize {
-  bool on = false;
-};
-struct SetLightValue {
-  int light = 0;
-  LightField field = LightField::position;
-  glm::vec3 value{0.0f};  // world units for position; colours >= 0; attenuation >= 0, not all 0
+  bool keep_highlight_size = false;
 };
 struct AddLight {
   PointLight light;
 };
 struct RemoveLight {
   int light = 0;
-};
-struct SetSceneAmbient {
-  glm::vec3 value{0.0f};  // A_scene, >= 0
-};
-struct SetBackground {
-  glm::vec3 value{0.0f};
-};
-struct SetShadows {
-  bool on = true;
 };
 struct SetCamera {
   Camera camera;
@@ -73,22 +66,30 @@ struct OrbitCamera {
   float yaw_deg = 0.0f;
   float pitch_deg = 0.0f;
 };
-struct SetTargetSpp {
-  int spp = 1;  // 1..kMaxSpp
-};
 // Replaces the whole document (open a scene, add an OBJ file's objects).
 struct ReplaceScene {
   std::shared_ptr<const Scene> scene;
   std::string label;
 };
 
-using Command =
-    std::variant<SetMaterialColour, SetShininess, ApplyPreset, SetMaterial, SetModel,
-                 SetEnergyNormalize, SetLightValue, AddLight, RemoveLight, SetSceneAmbient,
-                 SetBackground, SetShadows, SetCamera, OrbitCamera, SetTargetSpp, ReplaceScene>;
+using Command = std::variant<SetField, ApplyPreset, SetMaterial, SetModel, AddLight, RemoveLight,
+                             SetCamera, OrbitCamera, ReplaceScene>;
 
-// Applies command to scene. Throws CommandError naming the bad argument; scene is then unchanged.
+// Applies command to scene and validates the result (scene/validation.h, the document's one
+// validator). Throws CommandError naming the bad argument or field; scene is then unchanged.
 void apply_command(const Command& command, Scene& scene);
+
+// The command for an edited copy of a part: the first field of table whose value differs, or
+// nothing. Panels edit copies with the tables' widgets and hand the change over here.
+template <class S>
+std::optional<Command> field_command(FieldPart part, int index, const FieldTable<S>& table,
+                                     const S& before, const S& after) {
+  for (const Field<S>& f : table) {
+    const FieldValue value = f.get(after);
+    if (value != f.get(before)) return Command(SetField{part, index, f.key, value});
+  }
+  return std::nullopt;
+}
 
 // What the Edit menu says: "Undo set diffuse of object 0".
 std::string command_label(const Command& command);

@@ -5,109 +5,25 @@
 #include <stdexcept>
 
 #include "io/preset_table.h"
+#include "scene/fields.h"
+#include "scene/scene_diff.h"
 
 namespace gloss {
 
-const char* to_string(MaterialField field) {
-  switch (field) {
-    case MaterialField::ambient:
-      return "ambient";
-    case MaterialField::diffuse:
-      return "diffuse";
-    case MaterialField::specular:
-      return "specular";
-    case MaterialField::emission:
-      return "emission";
-    case MaterialField::shininess:
-      return "shininess";
-  }
-  return "?";
+namespace {
+float slider_exponent(float exponent) {
+  const Field<Material>& shininess = *find_field(material_fields(), "shininess");
+  return std::clamp(exponent, static_cast<float>(shininess.ui_min),
+                    static_cast<float>(shininess.ui_max));
 }
-
-bool parse_material_field(const std::string& name, MaterialField& field) {
-  for (MaterialField f : {MaterialField::ambient, MaterialField::diffuse, MaterialField::specular,
-                          MaterialField::emission, MaterialField::shininess}) {
-    if (name == to_string(f)) {
-      field = f;
-      return true;
-    }
-  }
-  return false;
-}
-
-glm::vec3& material_colour(Material& material, MaterialField field) {
-  switch (field) {
-    case MaterialField::ambient:
-      return material.ambient;
-    case MaterialField::diffuse:
-      return material.diffuse;
-    case MaterialField::specular:
-      return material.specular;
-    case MaterialField::emission:
-      return material.emission;
-    case MaterialField::shininess:
-      break;
-  }
-  throw std::invalid_argument("shininess is not a colour");
-}
-
-const glm::vec3& material_colour(const Material& material, MaterialField field) {
-  return material_colour(const_cast<Material&>(material), field);
-}
-
-const char* to_string(LightField field) {
-  switch (field) {
-    case LightField::position:
-      return "position";
-    case LightField::ambient:
-      return "ambient";
-    case LightField::diffuse:
-      return "diffuse";
-    case LightField::specular:
-      return "specular";
-    case LightField::attenuation:
-      return "attenuation";
-  }
-  return "?";
-}
-
-bool parse_light_field(const std::string& name, LightField& field) {
-  for (LightField f : {LightField::position, LightField::ambient, LightField::diffuse,
-                       LightField::specular, LightField::attenuation}) {
-    if (name == to_string(f)) {
-      field = f;
-      return true;
-    }
-  }
-  return false;
-}
-
-glm::vec3& light_value(PointLight& light, LightField field) {
-  switch (field) {
-    case LightField::position:
-      return light.position;
-    case LightField::ambient:
-      return light.ambient;
-    case LightField::diffuse:
-      return light.diffuse;
-    case LightField::specular:
-      return light.specular;
-    case LightField::attenuation:
-      return light.attenuation;
-  }
-  return light.position;
-}
-
-const glm::vec3& light_value(const PointLight& light, LightField field) {
-  return light_value(const_cast<PointLight&>(light), field);
-}
+}  // namespace
 
 float blinn_exponent_for_phong(float phong_exponent) {
-  return std::clamp(4.0f * phong_exponent, 0.0f, kMaxShininess);
+  return slider_exponent(4.0f * phong_exponent);
 }
 
 float phong_exponent_for_blinn(float blinn_exponent) {
-  return std::clamp(blinn_exponent / 4.0f, 0.0f, kMaxShininess);
+  return slider_exponent(blinn_exponent / 4.0f);
 }
 
 float exponent_for_model(float exponent, ShadingModel from, ShadingModel to) {
@@ -116,29 +32,8 @@ float exponent_for_model(float exponent, ShadingModel from, ShadingModel to) {
                                          : phong_exponent_for_blinn(exponent);
 }
 
-namespace {
-
-bool same_render(const RenderSettings& a, const RenderSettings& b) {
-  return a.width == b.width && a.height == b.height && a.spp == b.spp && a.model == b.model &&
-         a.shadows == b.shadows && a.energy_normalize == b.energy_normalize && a.srgb == b.srgb &&
-         a.seed == b.seed && a.pow == b.pow;
-}
-
-bool same_object(const Object& a, const Object& b) {
-  return a.name == b.name && a.type == b.type && a.material == b.material && a.center == b.center &&
-         a.radius == b.radius && a.mesh == b.mesh && a.params.file == b.params.file &&
-         a.params.group == b.params.group && a.params.position == b.params.position &&
-         a.params.scale == b.params.scale && a.params.rotate_y == b.params.rotate_y;
-}
-
-}  // namespace
-
 bool same_scene(const Scene& a, const Scene& b) {
-  return a.camera == b.camera && a.background == b.background && a.ambient == b.ambient &&
-         a.lights == b.lights && a.materials == b.materials &&
-         a.material_names == b.material_names && same_render(a.render, b.render) &&
-         a.path == b.path && a.objects.size() == b.objects.size() &&
-         std::equal(a.objects.begin(), a.objects.end(), b.objects.begin(), same_object);
+  return !diff_scenes(a, b).any;
 }
 
 Scene builtin_scene() {

@@ -100,7 +100,7 @@ TextChunks export_text(const Scene& scene, const ViewSettings& view, ScreenshotK
                 "energy_normalize=%s term=%s",
                 to_string(kind), to_string(scene.render.model), scene.render.spp,
                 scene.render.width, scene.render.height, view.exposure,
-                view.srgb ? "srgb" : "clamp", scene.render.shadows ? "on" : "off",
+                scene.render.srgb ? "srgb" : "clamp", scene.render.shadows ? "on" : "off",
                 scene.render.energy_normalize ? "on" : "off",
                 view.mode == ViewMode::single ? to_string(view.single) : "total");
   return {{"Software", "gloss editor"},

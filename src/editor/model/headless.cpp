@@ -4,10 +4,10 @@
 #include <ctime>
 
 #include "base/error.h"
-#include "base/overloaded.h"
 #include "editor/model/command_layer.h"
 #include "editor/model/export_image.h"
 #include "editor/model/quality_measurement.h"
+#include "editor/model/script_runner.h"
 
 namespace gloss {
 
@@ -18,28 +18,68 @@ void say_no_display(const std::string& reason) {
                reason.c_str());
 }
 
-// Runs a quality line without frames: a started measurement is measured to its end at once and
-// cancel does nothing. Returns the exit status to stop with, or -1 to go on.
-int quality_line(QualityMeasurement& quality, const QualityAction& action,
-                 const CommandLayer& layer, const std::string& where) {
-  try {
-    if (action.verb == QualityAction::Verb::csv) {
-      write_quality_csv(action.path, quality.rows());
-      std::printf("saved %s\n",
-                  std::filesystem::absolute(action.path).lexically_normal().string().c_str());
-    } else if (action.verb != QualityAction::Verb::cancel) {
-      quality.start(layer.scene());
-      quality.wait();
-      if (quality.state() == QualityMeasurement::State::failed) {
-        throw std::runtime_error("quality measurement failed: " + quality.error());
-      }
+// A script without frames: `wait` returns at once (every export renders to convergence),
+// viewport and term screenshots render with the core renderer, a window screenshot is an error,
+// a started quality measurement is measured to its end at once and cancel does nothing.
+class HeadlessHost : public ScriptHost {
+ public:
+  explicit HeadlessHost(const Scene& scene) : m_layer(scene) {}
+
+  CommandLayer& layer() override { return m_layer; }
+  ViewSettings& view() override { return m_view; }
+  void select(int) override {}
+
+  LineResult wait(const WaitAction&, const std::string&) override { return LineResult::go_on(); }
+  LineResult screenshot(const ScreenshotAction& a, const std::string& where) override {
+    if (a.kind == ScreenshotKind::window)
+      return failed(where, "a window screenshot needs a display");
+    try {
+      const Scene& scene = m_layer.scene();
+      const Image image = render_export(scene, m_view, a.kind);
+      const std::filesystem::path written =
+          write_export(a.path, image, scene.render.srgb, export_text(scene, m_view, a.kind));
+      saved(written);
+      return LineResult::go_on();
+    } catch (const std::exception& e) {
+      return failed(where, e.what());
     }
-    return -1;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s%s\n", where.c_str(), e.what());
-    return 1;
   }
-}
+  LineResult stats() override {
+    std::printf("stats: no display, no frames\n");
+    return LineResult::go_on();
+  }
+  LineResult sleep(const SleepAction&) override { return LineResult::go_on(); }
+  LineResult quality(const QualityAction& action, const std::string& where) override {
+    try {
+      if (action.verb == QualityAction::Verb::csv) {
+        write_quality_csv(action.path, m_quality.rows());
+        saved(action.path);
+      } else if (action.verb != QualityAction::Verb::cancel) {
+        m_quality.start(m_layer.scene());
+        m_quality.wait();
+        if (m_quality.state() == QualityMeasurement::State::failed) {
+          throw std::runtime_error("quality measurement failed: " + m_quality.error());
+        }
+      }
+      return LineResult::go_on();
+    } catch (const std::exception& e) {
+      return failed(where, e.what());
+    }
+  }
+
+ private:
+  static LineResult failed(const std::string& where, const std::string& message) {
+    std::fprintf(stderr, "error: %s%s\n", where.c_str(), message.c_str());
+    return LineResult::stop(1);
+  }
+  static void saved(const std::filesystem::path& path) {
+    std::printf("saved %s\n", std::filesystem::absolute(path).lexically_normal().string().c_str());
+  }
+
+  CommandLayer m_layer;
+  ViewSettings m_view;
+  QualityMeasurement m_quality;
+};
 
 }  // namespace
 
@@ -49,7 +89,7 @@ int render_without_display(const Scene& scene, const std::string& reason) {
     const ViewSettings view;
     const Image image = render_export(scene, view, ScreenshotKind::viewport);
     const std::filesystem::path path =
-        write_png_unique(".", "gloss", image, view.srgb,
+        write_png_unique(".", "gloss", image, scene.render.srgb,
                          export_text(scene, view, ScreenshotKind::viewport), std::time(nullptr));
     std::printf("rendered %s (%dx%d, %d spp) to %s\n",
                 scene.path.empty() ? "the built-in scene" : scene.path.c_str(), scene.render.width,
@@ -65,60 +105,11 @@ int render_without_display(const Scene& scene, const std::string& reason) {
 int run_script_without_display(const Scene& scene, const Script& script,
                                const std::string& reason) {
   say_no_display(reason);
-  CommandLayer layer(scene);
-  ViewSettings view;
-  QualityMeasurement quality;
+  HeadlessHost host(scene);
   for (const ScriptLine& line : script.lines) {
-    const std::string where = script.file + ":" + std::to_string(line.line) + ": ";
-    try {
-      if (run_document_line(line, layer, script.file)) continue;
-    } catch (const InputError& e) {
-      std::fprintf(stderr, "error: %s\n", e.what());
-      return 2;
-    }
-    int status = -1;
-    std::visit(Overloaded{
-                   [&](const ScreenshotAction& a) {
-                     if (a.kind == ScreenshotKind::window) {
-                       std::fprintf(stderr, "error: %sa window screenshot needs a display\n",
-                                    where.c_str());
-                       status = 1;
-                       return;
-                     }
-                     try {
-                       const Image image = render_export(layer.scene(), view, a.kind);
-                       const std::filesystem::path written = write_export(
-                           a.path, image, view.srgb, export_text(layer.scene(), view, a.kind));
-                       std::printf(
-                           "saved %s\n",
-                           std::filesystem::absolute(written).lexically_normal().string().c_str());
-                     } catch (const std::exception& e) {
-                       std::fprintf(stderr, "error: %s%s\n", where.c_str(), e.what());
-                       status = 1;
-                     }
-                   },
-                   [&](const ViewAction& a) {
-                     view.mode = a.mode;
-                     if (a.mode == ViewMode::single) view.single = a.term;
-                   },
-                   [&](const ExposureAction& a) { view.exposure = a.stops; },
-                   [&](const EncodingAction& a) { view.srgb = a.srgb; },
-                   [&](const SelectAction& a) {
-                     if (a.object >= static_cast<int>(layer.scene().objects.size())) {
-                       std::fprintf(stderr, "error: %sno object %d\n", where.c_str(), a.object);
-                       status = 2;
-                     }
-                   },
-                   [&](const StatsAction&) { std::printf("stats: no display, no frames\n"); },
-                   [&](const QuitAction&) { status = 0; },
-                   [&](const QualityAction& a) { status = quality_line(quality, a, layer, where); },
-                   [&](const SleepAction&) {},    // no frames to let run
-                   [&](const AnimateAction&) {},  // no animation without frames
-                   [&](const auto&) {},  // wait: every export above rendered to convergence
-               },
-               line.action);
+    const LineResult result = run_script_line(script, line, host);
     std::fflush(stdout);
-    if (status >= 0) return status;
+    if (result.next == LineResult::Next::stop) return result.status;
   }
   return 0;
 }

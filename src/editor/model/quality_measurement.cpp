@@ -192,21 +192,18 @@ std::string quality_verdict(const std::vector<TradeoffRow>& knob_rows) {
          " vs " + format_ms(anchor->time_ms);
 }
 
-std::optional<Command> command_for_row(const TradeoffRow& row, const Scene& scene) {
+std::optional<Command> command_for_row(const TradeoffRow& row) {
   if (row.knob == "spp") {
     const int spp = std::atoi(row.setting.c_str());
     if (spp < 1 || spp > kMaxSpp) return std::nullopt;
-    return Command(SetTargetSpp{spp});
+    return Command(SetField{FieldPart::render, 0, "spp", number_value(spp)});
   }
   if (row.knob == "shadows" && (row.setting == "on" || row.setting == "off")) {
-    return Command(SetShadows{row.setting == "on"});
+    return Command(SetField{FieldPart::render, 0, "shadows", number_value(row.setting == "on")});
   }
-  if (row.knob == "pow" && (row.setting == "fast" || row.setting == "exact")) {
-    // No command edits the pow mode alone; the whole document is replaced by a copy that
-    // differs only in it, which the renderer classes as an exponent change (change_class.h).
-    auto next = std::make_shared<Scene>(scene);
-    next->render.pow = row.setting == "fast" ? PowMode::fast : PowMode::exact;
-    return Command(ReplaceScene{next, "use " + row.setting + " pow"});
+  PowMode pow = PowMode::exact;
+  if (row.knob == "pow" && parse_pow_mode(row.setting, pow)) {
+    return Command(SetField{FieldPart::render, 0, "pow", number_value(static_cast<int>(pow))});
   }
   return std::nullopt;
 }

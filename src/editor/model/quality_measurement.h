@@ -90,7 +90,7 @@ std::string quality_verdict(const std::vector<TradeoffRow>& knob_rows);
 
 // The document command that gives the scene the row's setting (spp: target spp; shadows: on/off;
 // pow: fast/exact), or nothing for knobs the editor does not carry as document settings.
-std::optional<Command> command_for_row(const TradeoffRow& row, const Scene& scene);
+std::optional<Command> command_for_row(const TradeoffRow& row);
 // The viewport preview scale for a resolution row ("1/2" -> 0.5), or nothing when the row is
 // not a resolution row or its scale is outside the editor's 0.25..1.
 std::optional<float> preview_scale_for_row(const TradeoffRow& row);

@@ -1,11 +1,11 @@
 #include "editor/model/script.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 
 #include "base/atomic_file.h"
 #include "base/error.h"
-#include "editor/model/command_layer.h"
 
 namespace gloss {
 
@@ -28,6 +28,16 @@ struct Tokens {
     const float value = std::strtof(w.c_str(), &end);
     if (end == w.c_str() || *end != '\0') {
       throw std::runtime_error(std::string("expected a number for ") + what + ", got '" + w + "'");
+    }
+    return value;
+  }
+  double whole(const char* what) {
+    const std::string& w = word(what);
+    char* end = nullptr;
+    const double value = std::strtod(w.c_str(), &end);
+    if (end == w.c_str() || *end != '\0' || value != std::floor(value)) {
+      throw std::runtime_error(std::string("expected a whole number for ") + what + ", got '" + w +
+                               "'");
     }
     return value;
   }
@@ -57,21 +67,62 @@ struct Tokens {
   }
 };
 
-ScriptAction parse_set(Tokens& t) {
-  const int object = t.index("object index");
-  const std::string& field_name = t.word("field");
-  MaterialField field;
-  if (!parse_material_field(field_name, field)) {
-    throw std::runtime_error("unknown field '" + field_name +
-                             "' (ambient, diffuse, specular, emission, shininess)");
+// A value of field from the rest of the line: one number for a grey colour or three for R G B,
+// three for a vector, one number, a whole number, on/off, or a choice's name.
+template <class S>
+FieldValue parse_value(Tokens& t, const Field<S>& field) {
+  FieldValue value;
+  switch (field.kind) {
+    case FieldKind::colour: {
+      const float r = t.number("colour");
+      if (t.done()) {
+        value.v = glm::vec3(r);
+        break;
+      }
+      const float g = t.number("colour");
+      value.v = {r, g, t.number("colour")};
+      break;
+    }
+    case FieldKind::vector:
+      value.v = t.vec3(field.key);
+      break;
+    case FieldKind::number:
+      value.x = t.number(field.key);
+      break;
+    case FieldKind::whole:
+      value.x = t.whole(field.key);
+      break;
+    case FieldKind::flag:
+      value.x = t.on_off(field.key) ? 1.0 : 0.0;
+      break;
+    case FieldKind::choice: {
+      const std::string& name = t.word(field.key);
+      const int index = choice_index(field, name);
+      if (index < 0) {
+        std::string names;
+        for (const char* c : field.choices) names += (names.empty() ? "" : ", ") + std::string(c);
+        throw std::runtime_error(std::string(field.key) + " must be one of " + names + ", got '" +
+                                 name + "'");
+      }
+      value.x = index;
+      break;
+    }
   }
-  if (field == MaterialField::shininess) return Command(SetShininess{object, t.number("value")});
-  // One number sets a grey colour, three set R G B.
-  const float r = t.number("colour");
-  if (t.done()) return Command(SetMaterialColour{object, field, glm::vec3(r)});
-  const float g = t.number("colour");
-  const float b = t.number("colour");
-  return Command(SetMaterialColour{object, field, {r, g, b}});
+  return value;
+}
+
+// "KEY VALUE..." of a part's table, as a SetField.
+template <class S>
+Command parse_field(Tokens& t, const FieldTable<S>& table, FieldPart part, int index,
+                    const std::string& key) {
+  const Field<S>* field = find_field(table, key);
+  if (field == nullptr) {
+    std::string keys;
+    for (const Field<S>& f : table) keys += (keys.empty() ? "" : ", ") + std::string(f.key);
+    throw std::runtime_error("unknown " + std::string(to_string(part)) + " field '" + key + "' (" +
+                             keys + ")");
+  }
+  return SetField{part, index, field->key, parse_value(t, *field)};
 }
 
 ScriptAction parse_light(Tokens& t) {
@@ -84,13 +135,22 @@ ScriptAction parse_light(Tokens& t) {
     return Command(RemoveLight{t.index("light index")});
   }
   const int light = t.index("light index");
-  const std::string& field_name = t.word("light field");
-  LightField field;
-  if (!parse_light_field(field_name, field)) {
-    throw std::runtime_error("unknown light field '" + field_name +
-                             "' (position, ambient, diffuse, specular, attenuation)");
+  return parse_field(t, light_fields(), FieldPart::light, light, t.word("light field"));
+}
+
+// Older spellings of render fields, kept working: `shadows on`, `energy on`, `spp 16`,
+// `encoding srgb`.
+ScriptAction parse_render_alias(Tokens& t, const std::string& verb) {
+  if (verb == "energy")
+    return parse_field(t, render_fields(), FieldPart::render, 0, "energy_normalize");
+  if (verb == "encoding") {
+    const std::string& e = t.word("encoding");
+    if (e != "clamp" && e != "srgb") throw std::runtime_error("encoding must be clamp or srgb");
+    FieldValue value;
+    value.x = e == "srgb" ? 1.0 : 0.0;
+    return Command(SetField{FieldPart::render, 0, "srgb", value});
   }
-  return Command(SetLightValue{light, field, t.vec3("light value")});
+  return parse_field(t, render_fields(), FieldPart::render, 0, verb);
 }
 
 ScriptAction parse_line(Tokens& t) {
@@ -99,7 +159,10 @@ ScriptAction parse_line(Tokens& t) {
     const int object = t.index("object index");
     return Command(ApplyPreset{object, t.word("preset name")});
   }
-  if (verb == "set") return parse_set(t);
+  if (verb == "set") {
+    const int object = t.index("object index");
+    return parse_field(t, material_fields(), FieldPart::material, object, t.word("field"));
+  }
   if (verb == "model") {
     SetModel c;
     const std::string& name = t.word("model");
@@ -114,15 +177,20 @@ ScriptAction parse_line(Tokens& t) {
   }
   if (verb == "light") return parse_light(t);
   if (verb == "camera") {
-    if (t.word("camera action") != "orbit") throw std::runtime_error("expected 'camera orbit'");
+    const std::string& what = t.word("camera action or field");
+    if (what != "orbit") return parse_field(t, camera_fields(), FieldPart::camera, 0, what);
     const float yaw = t.number("degrees about up");
     return Command(OrbitCamera{yaw, t.number("degrees about right")});
   }
-  if (verb == "ambient") return Command(SetSceneAmbient{t.vec3("ambient")});
-  if (verb == "background") return Command(SetBackground{t.vec3("background")});
-  if (verb == "shadows") return Command(SetShadows{t.on_off("shadows")});
-  if (verb == "energy") return Command(SetEnergyNormalize{t.on_off("energy")});
-  if (verb == "spp") return Command(SetTargetSpp{t.index("spp")});
+  if (verb == "render")
+    return parse_field(t, render_fields(), FieldPart::render, 0, t.word("field"));
+  if (verb == "scene") return parse_field(t, scene_fields(), FieldPart::scene, 0, t.word("field"));
+  if (find_field(scene_fields(), verb) != nullptr) {  // `ambient R G B`, `background R G B`
+    return parse_field(t, scene_fields(), FieldPart::scene, 0, verb);
+  }
+  if (verb == "shadows" || verb == "energy" || verb == "spp" || verb == "encoding") {
+    return parse_render_alias(t, verb);
+  }
   if (verb == "undo") return UndoAction{};
   if (verb == "redo") return RedoAction{};
   if (verb == "wait") return t.done() ? WaitAction{} : WaitAction{t.number("timeout seconds")};
@@ -151,11 +219,6 @@ ScriptAction parse_line(Tokens& t) {
     return v;
   }
   if (verb == "exposure") return ExposureAction{t.number("stops")};
-  if (verb == "encoding") {
-    const std::string& e = t.word("encoding");
-    if (e != "clamp" && e != "srgb") throw std::runtime_error("encoding must be clamp or srgb");
-    return EncodingAction{e == "srgb"};
-  }
   if (verb == "select") return SelectAction{t.index("object index")};
   if (verb == "stats") return StatsAction{};
   if (verb == "sleep") {
@@ -203,27 +266,6 @@ Script parse_script(const std::string& text, const std::string& file) {
 
 Script load_script(const std::string& path) {
   return parse_script(read_text_file(path), path);
-}
-
-bool run_document_line(const ScriptLine& line, CommandLayer& layer, const std::string& file) {
-  try {
-    if (const Command* command = std::get_if<Command>(&line.action)) {
-      layer.execute(*command);
-      layer.seal();
-      return true;
-    }
-    if (std::holds_alternative<UndoAction>(line.action)) {
-      if (!layer.undo()) throw CommandError("nothing to undo");
-      return true;
-    }
-    if (std::holds_alternative<RedoAction>(line.action)) {
-      if (!layer.redo()) throw CommandError("nothing to redo");
-      return true;
-    }
-  } catch (const CommandError& e) {
-    throw InputError(file, e.what(), line.line);
-  }
-  return false;
 }
 
 }  // namespace gloss

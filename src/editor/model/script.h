@@ -12,8 +12,6 @@
 
 namespace gloss {
 
-class CommandLayer;
-
 struct UndoAction {};
 struct RedoAction {};
 struct WaitAction {
@@ -29,9 +27,6 @@ struct ViewAction {
 };
 struct ExposureAction {
   float stops = 0.0f;
-};
-struct EncodingAction {
-  bool srgb = false;
 };
 struct SelectAction {
   int object = 0;
@@ -57,10 +52,9 @@ struct QualityAction {
   std::string path;  // csv only
 };
 
-using ScriptAction =
-    std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction, ViewAction,
-                 ExposureAction, EncodingAction, SelectAction, StatsAction, SleepAction,
-                 AnimateAction, QuitAction, QualityAction>;
+using ScriptAction = std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction,
+                                  ViewAction, ExposureAction, SelectAction, StatsAction,
+                                  SleepAction, AnimateAction, QuitAction, QualityAction>;
 
 struct ScriptLine {
   int line = 0;  // 1-based line number in the file
@@ -77,9 +71,5 @@ struct Script {
 // naming the file and the line ("FILE:LINE: MESSAGE").
 Script parse_script(const std::string& text, const std::string& file);
 Script load_script(const std::string& path);
-
-// Runs a command, undo or redo line through layer and returns true; returns false for any other
-// action. A failing command (no such object, nothing to undo) throws InputError naming the line.
-bool run_document_line(const ScriptLine& line, CommandLayer& layer, const std::string& file);
 
 }  // namespace gloss

@@ -1,6 +1,8 @@
 #pragma once
-// How the editor shows the document: view mode, display transform, preview quality. These are
-// preferences of the window, not part of the document, so they are not undone.
+// How the editor shows the document: view mode, exposure, preview quality. These are
+// preferences of the window, not part of the document, so they are not undone. The display
+// encoding (sRGB or clamp) is the document's (render.srgb): the viewport, screenshots and
+// exports all follow it.
 #include <string>
 
 namespace gloss {
@@ -25,7 +27,6 @@ struct ViewSettings {
   ViewMode mode = ViewMode::render;
   TermView single = TermView::specular;  // shown by ViewMode::single
   float exposure = 0.0f;                 // stops: displayed value = linear * 2^exposure
-  bool srgb = false;                     // false: clamp only (the classic look); true: sRGB
   bool heat_auto_scale = true;           // heat scale = largest difference of the shown pair
   float heat_scale = 0.1f;               // linear difference at the top of the heat ramp, > 0
   float preview_scale = 1.0f;            // render pixels per screen pixel, 0.25..1

@@ -68,8 +68,9 @@ void animate_light(App& app, double now_s) {
   const float dt = static_cast<float>(std::min(now_s - app.last_frame_s, 0.1));
   const PointLight light = scene.lights[app.selected_light];  // a copy: commands replace the vector
   const glm::vec3 centre(scene.camera.target.x, light.position.y, scene.camera.target.z);
-  execute(app, SetLightValue{app.selected_light, LightField::position,
-                             rotate_about_y(light.position, centre, app.view.orbit_speed * dt)});
+  execute(app,
+          SetField{FieldPart::light, app.selected_light, "position",
+                   vec3_value(rotate_about_y(light.position, centre, app.view.orbit_speed * dt))});
 }
 
 void draw_recovery_modal(App& app) {

@@ -163,9 +163,9 @@ void start_screenshot(App& app, ScreenshotKind kind, const std::string& path, bo
     const TextChunks text = export_text(scene, view, kind);
     if (path.empty()) {
       return write_png_unique(view.screenshot_dir, std::string("gloss-") + to_string(kind), image,
-                              view.srgb, text, std::time(nullptr));
+                              scene.render.srgb, text, std::time(nullptr));
     }
-    return write_export(path, image, view.srgb, text);
+    return write_export(path, image, scene.render.srgb, text);
   });
   app.exports.push_back(std::move(job));
   if (!from_script)

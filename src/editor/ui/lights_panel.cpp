@@ -7,25 +7,12 @@
 #include <imgui.h>
 
 #include "editor/ui/app.h"
+#include "editor/ui/field_widgets.h"
 #include "editor/ui/panel_widgets.h"
 
 namespace gloss {
 
 namespace {
-
-constexpr ImGuiColorEditFlags kColourFlags =
-    ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR | ImGuiColorEditFlags_DisplayRGB;
-
-// The one command for an edited copy of a light: the first value that differs.
-std::optional<Command> light_command(int index, const PointLight& before, const PointLight& after) {
-  for (LightField f : {LightField::position, LightField::ambient, LightField::diffuse,
-                       LightField::specular, LightField::attenuation}) {
-    if (light_value(after, f) != light_value(before, f)) {
-      return SetLightValue{index, f, light_value(after, f)};
-    }
-  }
-  return std::nullopt;
-}
 
 void draw_lights(App& app) {
   const Scene& scene = app.commands.scene();
@@ -59,21 +46,10 @@ void draw_lights(App& app) {
 
   const PointLight light = scene.lights[app.selected_light];  // a copy: commands replace the vector
   PointLight edited = light;
-  bool changed = false;
-  changed |= ImGui::DragFloat3("position", &edited.position.x, 0.02f, -1e4f, 1e4f, "%.2f");
-  changed |= ImGui::ColorEdit3("La ambient", &edited.ambient.x, kColourFlags);
-  changed |= ImGui::ColorEdit3("Ld diffuse", &edited.diffuse.x, kColourFlags);
-  changed |= ImGui::ColorEdit3("Ls specular", &edited.specular.x, kColourFlags);
-  changed |= ImGui::DragFloat3("attenuation", &edited.attenuation.x, 0.005f, 0.0f, 100.0f, "%.3f");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("c0, c1, c2: 1 / (c0 + c1 d + c2 d^2)");
-  if (changed) {
-    edited.ambient = glm::max(edited.ambient, glm::vec3(0.0f));
-    edited.diffuse = glm::max(edited.diffuse, glm::vec3(0.0f));
-    edited.specular = glm::max(edited.specular, glm::vec3(0.0f));
-    edited.attenuation = glm::max(edited.attenuation, glm::vec3(0.0f));
-    if (std::optional<Command> command = light_command(app.selected_light, light, edited)) {
-      execute(app, *command);
-    }
+  for (const Field<PointLight>& field : light_fields()) field_widget(field, edited);
+  if (auto command =
+          field_command(FieldPart::light, app.selected_light, light_fields(), light, edited)) {
+    execute(app, *command);
   }
   ImGui::Checkbox("orbit light", &app.view.orbit_light);
   ImGui::SameLine();
@@ -83,15 +59,15 @@ void draw_lights(App& app) {
 
 void draw_scene(App& app) {
   const Scene& scene = app.commands.scene();
-  glm::vec3 ambient = scene.ambient, background = scene.background;
-  if (ImGui::ColorEdit3("scene ambient", &ambient.x, kColourFlags)) {
-    execute(app, SetSceneAmbient{glm::max(ambient, glm::vec3(0.0f))});
+  Scene edited = scene;
+  for (const Field<Scene>& field : scene_fields()) field_widget(field, edited);
+  field_widget(*find_field(render_fields(), "shadows"), edited.render);
+  if (auto command = field_command(FieldPart::scene, 0, scene_fields(), scene, edited)) {
+    execute(app, *command);
+  } else if (auto render = field_command(FieldPart::render, 0, render_fields(), scene.render,
+                                         edited.render)) {
+    execute(app, *render);
   }
-  if (ImGui::ColorEdit3("background", &background.x, kColourFlags)) {
-    execute(app, SetBackground{glm::max(background, glm::vec3(0.0f))});
-  }
-  bool shadows = scene.render.shadows;
-  if (ImGui::Checkbox("shadows", &shadows)) execute(app, SetShadows{shadows});
   ImGui::TextDisabled("%zu objects, %zu materials; click an object in the viewport to select it",
                       scene.objects.size(), scene.materials.size());
   const std::filesystem::path folder = scene.path.empty()

@@ -7,50 +7,13 @@
 #include <imgui.h>
 
 #include "editor/ui/app.h"
+#include "editor/ui/field_widgets.h"
 #include "editor/ui/panel_widgets.h"
 #include "io/preset_table.h"
 
 namespace gloss {
 
 namespace {
-
-constexpr ImGuiColorEditFlags kColourFlags =
-    ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR | ImGuiColorEditFlags_DisplayRGB;
-
-// Colour editor for one constant. With linked channels a change of one channel scales the others
-// by the same factor (or shifts them by the same amount from zero), keeping the hue.
-bool colour_row(const char* label, glm::vec3& colour, bool linked) {
-  const glm::vec3 before = colour;
-  if (!ImGui::ColorEdit3(label, &colour.x, kColourFlags)) return false;
-  colour = glm::max(colour, glm::vec3(0.0f));
-  int moved = -1, moved_count = 0;
-  for (int c = 0; c < 3; ++c) {
-    if (colour[c] != before[c]) {
-      moved = c;
-      ++moved_count;
-    }
-  }
-  if (linked && moved_count == 1) {
-    if (before[moved] > 0.0f) {
-      colour = before * (colour[moved] / before[moved]);
-    } else {
-      colour = glm::max(before + glm::vec3(colour[moved] - before[moved]), glm::vec3(0.0f));
-    }
-  }
-  return colour != before;
-}
-
-// The one command for an edited copy of a material: the first field that differs.
-std::optional<Command> material_command(int object, const Material& before, const Material& after) {
-  for (MaterialField f : {MaterialField::ambient, MaterialField::diffuse, MaterialField::specular,
-                          MaterialField::emission}) {
-    if (material_colour(after, f) != material_colour(before, f)) {
-      return SetMaterialColour{object, f, material_colour(after, f)};
-    }
-  }
-  if (after.shininess != before.shininess) return SetShininess{object, after.shininess};
-  return std::nullopt;
-}
 
 void draw_presets(App& app, int object, const Material& material) {
   const std::vector<Preset>& presets = preset_table();
@@ -96,10 +59,10 @@ void draw_model_switch(App& app) {
         "Blinn-Phong exponent = 4 x Phong exponent: near the peak the half vector\n"
         "turns half as far as the reflection vector, so the lobes match.");
   }
-  bool energy = render.energy_normalize;
-  if (ImGui::Checkbox("energy normalisation", &energy)) execute(app, SetEnergyNormalize{energy});
-  if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("specular x (alpha + 2) / 2pi for Phong, (alpha + 8) / 8pi for Blinn-Phong");
+  RenderSettings edited = render;
+  field_widget(*find_field(render_fields(), "energy_normalize"), edited);
+  if (auto command = field_command(FieldPart::render, 0, render_fields(), render, edited)) {
+    execute(app, *command);
   }
 }
 
@@ -156,19 +119,13 @@ void draw_material_panel(App& app, ImVec2 pos, ImVec2 size) {
   ImGui::PopStyleColor();
 
   Material edited = material;
-  bool changed = false;
   ImGui::Checkbox("link RGB channels", &app.link_channels);
-  changed |= colour_row("ka ambient", edited.ambient, app.link_channels);
-  changed |= colour_row("kd diffuse", edited.diffuse, app.link_channels);
-  changed |= colour_row("ks specular", edited.specular, app.link_channels);
-  changed |= colour_row("ke emission", edited.emission, app.link_channels);
-  changed |= ImGui::SliderFloat("shininess", &edited.shininess, 0.0f, kMaxShininess, "%.2f",
-                                ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_NoRoundToFormat);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Phong exponent; Ctrl+click to type a value");
-  if (changed) {
-    if (std::optional<Command> command = material_command(object, material, edited)) {
-      execute(app, *command);
-    }
+  for (const Field<Material>& field : material_fields()) {
+    field_widget(field, edited, app.link_channels);
+  }
+  if (auto command =
+          field_command(FieldPart::material, object, material_fields(), material, edited)) {
+    execute(app, *command);
   }
 
   section_title("Presets");

@@ -106,7 +106,10 @@ void view_menu(App& app) {
     view.mode = ViewMode::ab;
   }
   ImGui::Separator();
-  ImGui::MenuItem("sRGB display encoding", nullptr, &view.srgb);
+  const bool srgb = app.commands.scene().render.srgb;
+  if (ImGui::MenuItem("sRGB display encoding", nullptr, srgb)) {
+    execute(app, SetField{FieldPart::render, 0, "srgb", number_value(!srgb)});
+  }
   if (ImGui::MenuItem("Reset exposure")) view.exposure = 0.0f;
   ImGui::MenuItem("Orbit light", nullptr, &view.orbit_light);
   ImGui::MenuItem("Quality: speed / accuracy", nullptr, &app.show_quality);

@@ -83,7 +83,7 @@ void draw_use(App& app, const TradeoffRow& row) {
     ImGui::TextDisabled("in use");
     return;
   }
-  if (std::optional<Command> command = command_for_row(row, scene)) {
+  if (std::optional<Command> command = command_for_row(row)) {
     if (ImGui::SmallButton("Use")) execute(app, *command);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", command_label(*command).c_str());
   } else if (std::optional<float> scale = preview_scale_for_row(row)) {

@@ -3,13 +3,11 @@
 #include <cstdio>
 
 #include "base/error.h"
-#include "base/overloaded.h"
 #include "editor/model/quality_measurement.h"
+#include "editor/model/script_runner.h"
 #include "editor/ui/app.h"
 
 namespace gloss {
-
-namespace {}  // namespace
 
 std::string stats_text(const App& app) {
   char text[512];
@@ -76,33 +74,68 @@ bool ScriptPlayer::wait_done(App& app, double now_s) {
   return true;
 }
 
-void ScriptPlayer::run_quality(App& app, const QualityAction& action, const std::string& where,
-                               bool& hold) {
-  switch (action.verb) {
-    case QualityAction::Verb::measure:
-    case QualityAction::Verb::start:
-      app.quality.start(app.commands.scene());
-      app.show_quality = true;
-      if (action.verb == QualityAction::Verb::measure) {
-        m_waiting = Waiting::quality;
-        hold = true;
-      }
-      return;
-    case QualityAction::Verb::cancel:
-      app.quality.cancel();
-      return;
-    case QualityAction::Verb::csv:
-      try {
-        write_quality_csv(action.path, app.quality.rows());
-        std::printf("saved %s\n",
-                    std::filesystem::absolute(action.path).lexically_normal().string().c_str());
-        std::fflush(stdout);
-      } catch (const std::exception& e) {
-        fail(app, where + e.what(), 1);
-      }
-      return;
+// The editor's side of a script (script_runner.h): waits become the player's waiting states.
+class ScriptPlayer::Host : public ScriptHost {
+ public:
+  Host(ScriptPlayer& player, App& app, double now_s) : m_player(player), m_app(app), m_now(now_s) {}
+
+  CommandLayer& layer() override { return m_app.commands; }
+  ViewSettings& view() override { return m_app.view; }
+  void select(int object) override { m_app.selected_object = object; }
+
+  LineResult wait(const WaitAction& a, const std::string&) override {
+    return hold(Waiting::converge, m_now + a.timeout_s);
   }
-}
+  LineResult screenshot(const ScreenshotAction& a, const std::string&) override {
+    start_screenshot(m_app, a.kind, a.path, true);
+    return hold(Waiting::files, 0.0);
+  }
+  LineResult stats() override {
+    std::printf("stats: %s\n", stats_text(m_app).c_str());
+    std::fflush(stdout);
+    m_app.frame_times = FrameTimes{};
+    return LineResult::go_on();
+  }
+  LineResult sleep(const SleepAction& a) override {
+    return hold(Waiting::sleep, m_now + a.seconds);
+  }
+  LineResult quality(const QualityAction& action, const std::string& where) override {
+    switch (action.verb) {
+      case QualityAction::Verb::measure:
+      case QualityAction::Verb::start:
+        m_app.quality.start(m_app.commands.scene());
+        m_app.show_quality = true;
+        if (action.verb == QualityAction::Verb::measure) return hold(Waiting::quality, 0.0);
+        return LineResult::go_on();
+      case QualityAction::Verb::cancel:
+        m_app.quality.cancel();
+        return LineResult::go_on();
+      case QualityAction::Verb::csv:
+        try {
+          write_quality_csv(action.path, m_app.quality.rows());
+          std::printf("saved %s\n",
+                      std::filesystem::absolute(action.path).lexically_normal().string().c_str());
+          std::fflush(stdout);
+          return LineResult::go_on();
+        } catch (const std::exception& e) {
+          std::fprintf(stderr, "error: %s%s\n", where.c_str(), e.what());
+          return LineResult::stop(1);
+        }
+    }
+    return LineResult::go_on();
+  }
+
+ private:
+  LineResult hold(Waiting waiting, double deadline_s) {
+    m_player.m_waiting = waiting;
+    m_player.m_deadline_s = deadline_s;
+    return LineResult::hold();
+  }
+
+  ScriptPlayer& m_player;
+  App& m_app;
+  double m_now;
+};
 
 void ScriptPlayer::step(App& app) {
   const double now = app.now_s();
@@ -113,60 +146,16 @@ void ScriptPlayer::step(App& app) {
       ++m_next;
       continue;
     }
-    const ScriptLine& line = m_script.lines[m_next];
-    try {
-      if (run_document_line(line, app.commands, m_script.file)) {
-        ++m_next;
-        continue;
-      }
-    } catch (const InputError& e) {
-      fail(app, e.what(), 2);
+    Host host(*this, app, now);
+    const LineResult result = run_script_line(m_script, m_script.lines[m_next], host);
+    if (result.next == LineResult::Next::hold) return;
+    if (result.next == LineResult::Next::stop) {
+      app.exit_code = result.status;
+      app.quit = true;
+      m_next = result.status != 0 ? m_script.lines.size() : m_next + 1;
       return;
     }
-    const std::string where = m_script.file + ":" + std::to_string(line.line) + ": ";
-    bool hold = false;
-    std::visit(Overloaded{
-                   [&](const WaitAction& a) {
-                     m_waiting = Waiting::converge;
-                     m_deadline_s = now + a.timeout_s;
-                     hold = true;
-                   },
-                   [&](const ScreenshotAction& a) {
-                     start_screenshot(app, a.kind, a.path, true);
-                     m_waiting = Waiting::files;
-                     hold = true;
-                   },
-                   [&](const ViewAction& a) {
-                     app.view.mode = a.mode;
-                     if (a.mode == ViewMode::single) app.view.single = a.term;
-                   },
-                   [&](const ExposureAction& a) { app.view.exposure = a.stops; },
-                   [&](const EncodingAction& a) { app.view.srgb = a.srgb; },
-                   [&](const SelectAction& a) {
-                     if (a.object >= static_cast<int>(app.commands.scene().objects.size())) {
-                       fail(app, where + "no object " + std::to_string(a.object), 2);
-                       return;
-                     }
-                     app.selected_object = a.object;
-                   },
-                   [&](const StatsAction&) {
-                     std::printf("stats: %s\n", stats_text(app).c_str());
-                     std::fflush(stdout);
-                     app.frame_times = FrameTimes{};
-                   },
-                   [&](const SleepAction& a) {
-                     m_waiting = Waiting::sleep;
-                     m_deadline_s = now + a.seconds;
-                     hold = true;
-                   },
-                   [&](const AnimateAction& a) { app.view.orbit_light = a.on; },
-                   [&](const QuitAction&) { app.quit = true; },
-                   [&](const QualityAction& a) { run_quality(app, a, where, hold); },
-                   [&](const auto&) {},  // document lines ran above
-               },
-               line.action);
-    if (hold) return;
-    if (!app.quit || app.exit_code == 0) ++m_next;
+    ++m_next;
   }
 }
 

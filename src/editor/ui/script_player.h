@@ -1,8 +1,10 @@
 #pragma once
-// Plays a Script inside the running editor, a few lines per frame: document lines go through the
-// command layer at once; `wait`, `screenshot` and `quit` hold the script until the renderer has
-// converged and its frame is on screen, the file is written, or the loop ends.
+// Plays a Script inside the running editor, a few lines per frame, through the one dispatcher
+// (editor/model/script_runner.h): document lines go through the command layer at once; `wait`,
+// `screenshot`, `sleep` and `quality measure` hold the script until the renderer has converged
+// and its frame is on screen, the file is written, the time has passed or the measurement ended.
 #include <cstddef>
+#include <string>
 
 #include "editor/model/script.h"
 
@@ -21,9 +23,10 @@ class ScriptPlayer {
 
  private:
   enum class Waiting { none, converge, shown, files, sleep, quality };
+  class Host;
+  friend class Host;
   bool wait_done(App& app, double now_s);
   void fail(App& app, const std::string& message, int status);
-  void run_quality(App& app, const QualityAction& action, const std::string& where, bool& hold);
 
   Script m_script;
   std::size_t m_next = 0;

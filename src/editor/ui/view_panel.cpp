@@ -1,12 +1,13 @@
-// The View & Quality panel: view mode, display transform, heat-map scale, the renderer's target
-// samples and preview scale, and screenshots. View settings are window preferences (not undone);
-// the target spp is part of the document and goes through a command.
+// The View & Quality panel: view mode, exposure, heat-map scale, the document's render settings
+// (scene/fields.h's render table), the preview scale, and screenshots. View settings are window
+// preferences (not undone); render settings are the document's and go through commands.
 #include <algorithm>
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
 #include "editor/ui/app.h"
+#include "editor/ui/field_widgets.h"
 #include "editor/ui/panel_widgets.h"
 
 namespace gloss {
@@ -45,18 +46,18 @@ void draw_view_mode(App& app) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("display value = linear x 2^exposure");
   ImGui::SameLine();
   if (ImGui::SmallButton("0")) view.exposure = 0.0f;
-  int encoding = view.srgb ? 1 : 0;
-  ImGui::RadioButton("classic clamp", &encoding, 0);
-  ImGui::SameLine();
-  ImGui::RadioButton("sRGB", &encoding, 1);
-  view.srgb = encoding == 1;
 }
 
 void draw_quality(App& app) {
   const Scene& scene = app.commands.scene();
-  int spp = scene.render.spp;
-  if (ImGui::SliderInt("target spp", &spp, 1, 256, "%d", ImGuiSliderFlags_Logarithmic)) {
-    execute(app, SetTargetSpp{std::clamp(spp, 1, kMaxSpp)});
+  // Every render setting of the document, its encoding included (exports and the viewport
+  // follow it), but the model: the Material panel's switch can rescale exponents with it.
+  RenderSettings edited = scene.render;
+  for (const Field<RenderSettings>& field : render_fields()) {
+    if (std::string(field.key) != "model") field_widget(field, edited);
+  }
+  if (auto command = field_command(FieldPart::render, 0, render_fields(), scene.render, edited)) {
+    execute(app, *command);
   }
   ImGui::SliderFloat("preview scale", &app.view.preview_scale, 0.25f, 1.0f, "%.2f");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("render pixels per screen pixel in the viewport");

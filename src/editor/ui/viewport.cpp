@@ -177,12 +177,12 @@ bool Viewport::TargetKey::operator==(const TargetKey& o) const {
          exposure == o.exposure && heat_scale == o.heat_scale && srgb == o.srgb;
 }
 
-void Viewport::draw_panes(const ViewSettings& view) {
+void Viewport::draw_panes(const ViewSettings& view, bool srgb) {
   const int fw = std::max(1, static_cast<int>(m_size.x * m_framebuffer_scale));
   const int fh = std::max(1, static_cast<int>(m_size.y * m_framebuffer_scale));
   DisplayParams params;
   params.exposure = view.exposure;
-  params.srgb = view.srgb;
+  params.srgb = srgb;
   params.heat_scale = shown_heat_scale(view, m_max_difference);
   const TargetKey key{m_uploads,
                       fw,
@@ -196,7 +196,7 @@ void Viewport::draw_panes(const ViewSettings& view) {
                       view.single,
                       view.exposure,
                       params.heat_scale,
-                      view.srgb};
+                      srgb};
   if (key == m_target_key && m_target.texture() != 0) return;
   m_target_key = key;
   m_target.resize(fw, fh);

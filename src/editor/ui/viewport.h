@@ -64,7 +64,7 @@ class Viewport {
   void draw_light_markers(App& app, ImDrawList* list) const;
   int pane_at(ImVec2 screen) const;
 
-  void draw_panes(const ViewSettings& view);
+  void draw_panes(const ViewSettings& view, bool srgb);  // srgb: the document's encoding
   void draw_labels(const ViewSettings& view, ImDrawList* list) const;
   void draw_legend(const ViewSettings& view, ImDrawList* list, const Pane& pane) const;
   void upload(const RenderedFrame& frame, bool b_side);

@@ -65,7 +65,7 @@ void Viewport::draw(App& app, ImVec2 pos, ImVec2 size) {
     ImGui::End();
     return;
   }
-  draw_panes(app.view);
+  draw_panes(app.view, app.commands.scene().render.srgb);
   // The target's texture rows run bottom to top: flip v.
   ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(m_target.texture())), size,
                ImVec2(0, 1), ImVec2(1, 0));
@@ -161,7 +161,7 @@ void Viewport::handle_input(App& app) {
       const glm::vec3 moved =
           point_at_depth(scene.camera, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
                          local, scene.lights[m_drag_light].position);
-      execute(app, SetLightValue{m_drag_light, LightField::position, moved});
+      execute(app, SetField{FieldPart::light, m_drag_light, "position", vec3_value(moved)});
     } else if (m_drag_distance > kClickSlop) {
       // The scene turns as if grabbed: a drag to the right carries its front to the right (the
       // eye orbits left, positive yaw in orbit_camera); a drag down shows more of its top.

@@ -9,6 +9,7 @@
 #include "editor/model/autosave.h"
 #include "editor/model/command_layer.h"
 #include "io/scene_loader.h"
+#include "support/field_commands.h"
 #include "support/test_scene.h"
 
 namespace gloss {
@@ -27,7 +28,7 @@ TEST(Autosave, RoundTripGivesBackTheEditedDocument) {
   CommandLayer layer(test::two_sphere_scene());
   Autosaver autosaver(file, layer.revision(), 1.0, 10.0);
   layer.execute(ApplyPreset{1, "gold"});
-  layer.execute(SetLightValue{0, LightField::position, {1.5f, 2.5f, 3.5f}});
+  layer.execute(test::set_light(0, "position", {1.5f, 2.5f, 3.5f}));
   EXPECT_FALSE(autosaver.step(layer, 1, 0.0));  // the change is seen at t = 0 s
   EXPECT_FALSE(autosaver.step(layer, 1, 0.5));  // not quiet for 1 s yet
   EXPECT_TRUE(autosaver.step(layer, 1, 1.25));
@@ -51,7 +52,7 @@ TEST(Autosave, ContinuousEditingStillSavesAfterTheLongestDelay) {
   Autosaver autosaver(file, layer.revision(), 1.0, 10.0);
   bool written = false;
   for (int i = 0; i <= 110; ++i) {  // an edit every 0.1 s, never quiet for 1 s
-    layer.execute(SetShininess{0, 10.0f + static_cast<float>(i)});
+    layer.execute(test::set_shininess(0, 10.0f + static_cast<float>(i)));
     written |= autosaver.step(layer, 0, 0.1 * i);
   }
   EXPECT_TRUE(written);
@@ -63,7 +64,7 @@ TEST(Autosave, NoEditsNoFileAndUndoToSavedRemovesIt) {
   Autosaver autosaver(file, layer.revision(), 1.0, 10.0);
   EXPECT_FALSE(autosaver.step(layer, 0, 5.0));
   EXPECT_FALSE(std::filesystem::exists(file));
-  layer.execute(SetShadows{false});
+  layer.execute(test::set_render("shadows", false));
   autosaver.step(layer, 0, 6.0);
   EXPECT_TRUE(autosaver.step(layer, 0, 7.5));
   EXPECT_TRUE(std::filesystem::exists(file));
@@ -77,7 +78,7 @@ TEST(Autosave, DiscardRemovesTheFile) {
   const std::filesystem::path file = temp_folder("discard") / "recovery.json";
   CommandLayer layer(test::two_sphere_scene());
   Autosaver autosaver(file, layer.revision(), 0.0, 10.0);
-  layer.execute(SetShadows{false});
+  layer.execute(test::set_render("shadows", false));
   EXPECT_TRUE(autosaver.step(layer, 0, 1.0));
   autosaver.discard();
   EXPECT_FALSE(std::filesystem::exists(file));
@@ -96,7 +97,7 @@ TEST(Autosave, TheFileIsWrittenAtomically) {
   const std::filesystem::path dir = temp_folder("atomic");
   CommandLayer layer(test::two_sphere_scene());
   Autosaver autosaver(dir / "recovery.json", layer.revision(), 0.0, 10.0);
-  layer.execute(SetShadows{false});
+  layer.execute(test::set_render("shadows", false));
   ASSERT_TRUE(autosaver.step(layer, 0, 1.0));
   // Only the finished file is left: no temporary beside it.
   std::size_t files = 0;

@@ -8,6 +8,7 @@
 #include "editor/model/command_layer.h"
 #include "io/preset_table.h"
 #include "io/scene_loader.h"
+#include "support/field_commands.h"
 #include "support/test_scene.h"
 
 namespace gloss {
@@ -32,11 +33,11 @@ std::vector<Case> all_cases() {
   loaded.diffuse = {0.3f, 0.3f, 0.3f};
   loaded.shininess = 7.0f;
   return {
-      {"material colour", SetMaterialColour{1, MaterialField::diffuse, {0.9f, 0.8f, 0.7f}},
+      {"material colour", test::set_material(1, "diffuse", {0.9f, 0.8f, 0.7f}),
        [](const Scene& s) { EXPECT_EQ(s.materials[1].diffuse, glm::vec3(0.9f, 0.8f, 0.7f)); }},
-      {"emission", SetMaterialColour{0, MaterialField::emission, {0.0f, 0.5f, 0.0f}},
+      {"emission", test::set_material(0, "emission", {0.0f, 0.5f, 0.0f}),
        [](const Scene& s) { EXPECT_EQ(s.materials[0].emission, glm::vec3(0.0f, 0.5f, 0.0f)); }},
-      {"shininess", SetShininess{0, 1234.5f},
+      {"shininess", test::set_shininess(0, 1234.5f),
        [](const Scene& s) { EXPECT_EQ(s.materials[0].shininess, 1234.5f); }},
       {"preset", ApplyPreset{1, "silver"},
        [](const Scene& s) {
@@ -55,11 +56,11 @@ std::vector<Case> all_cases() {
        }},
       {"model, same exponents", SetModel{ShadingModel::blinn_phong, false},
        [](const Scene& s) { EXPECT_EQ(s.materials[0].shininess, 64.0f); }},
-      {"energy normalisation", SetEnergyNormalize{true},
+      {"energy normalisation", test::set_render("energy_normalize", true),
        [](const Scene& s) { EXPECT_TRUE(s.render.energy_normalize); }},
-      {"light position", SetLightValue{1, LightField::position, {1.0f, 2.0f, 3.0f}},
+      {"light position", test::set_light(1, "position", {1.0f, 2.0f, 3.0f}),
        [](const Scene& s) { EXPECT_EQ(s.lights[1].position, glm::vec3(1.0f, 2.0f, 3.0f)); }},
-      {"light attenuation", SetLightValue{0, LightField::attenuation, {1.0f, 0.5f, 0.25f}},
+      {"light attenuation", test::set_light(0, "attenuation", {1.0f, 0.5f, 0.25f}),
        [](const Scene& s) { EXPECT_EQ(s.lights[0].attenuation, glm::vec3(1.0f, 0.5f, 0.25f)); }},
       {"add light", AddLight{added},
        [](const Scene& s) {
@@ -71,11 +72,12 @@ std::vector<Case> all_cases() {
          ASSERT_EQ(s.lights.size(), 1u);
          EXPECT_EQ(s.lights[0].position, glm::vec3(-4.0f, 2.0f, 1.0f));
        }},
-      {"scene ambient", SetSceneAmbient{{0.0f, 0.3f, 0.0f}},
+      {"scene ambient", test::set_scene("ambient", {0.0f, 0.3f, 0.0f}),
        [](const Scene& s) { EXPECT_EQ(s.ambient, glm::vec3(0.0f, 0.3f, 0.0f)); }},
-      {"background", SetBackground{{1.0f, 1.0f, 1.0f}},
+      {"background", test::set_scene("background", {1.0f, 1.0f, 1.0f}),
        [](const Scene& s) { EXPECT_EQ(s.background, glm::vec3(1.0f)); }},
-      {"shadows", SetShadows{false}, [](const Scene& s) { EXPECT_FALSE(s.render.shadows); }},
+      {"shadows", test::set_render("shadows", false),
+       [](const Scene& s) { EXPECT_FALSE(s.render.shadows); }},
       {"camera", SetCamera{moved},
        [](const Scene& s) { EXPECT_EQ(s.camera.eye, glm::vec3(3.0f)); }},
       {"camera orbit", OrbitCamera{90.0f, 0.0f},
@@ -84,7 +86,8 @@ std::vector<Case> all_cases() {
          EXPECT_NEAR(glm::length(s.camera.eye - s.camera.target), std::sqrt(37.0f), 1e-4f);
          EXPECT_NEAR(s.camera.eye.z, 0.0f, 1e-4f);
        }},
-      {"target spp", SetTargetSpp{16}, [](const Scene& s) { EXPECT_EQ(s.render.spp, 16); }},
+      {"target spp", test::set_render("spp", 16),
+       [](const Scene& s) { EXPECT_EQ(s.render.spp, 16); }},
       {"open scene", ReplaceScene{opened, "open"},
        [](const Scene& s) { EXPECT_EQ(s.objects.size(), 1u); }},
   };

@@ -205,21 +205,23 @@ TEST(QualityVerdict, OtherwiseTheCheapestAsGoodAsTheReferenceSetting) {
 
 TEST(QualityUse, RowsBecomeCommandsOrPreviewScales) {
   const Scene scene = test::two_sphere_scene();
-  const std::optional<Command> spp = command_for_row(row("spp", "8", 0, 0), scene);
+  const std::optional<Command> spp = command_for_row(row("spp", "8", 0, 0));
   ASSERT_TRUE(spp);
-  EXPECT_EQ(std::get<SetTargetSpp>(*spp).spp, 8);
-  const std::optional<Command> shadows = command_for_row(row("shadows", "off", 0, 0), scene);
+  EXPECT_EQ(std::get<SetField>(*spp).key, "spp");
+  EXPECT_EQ(std::get<SetField>(*spp).value.x, 8.0);
+  const std::optional<Command> shadows = command_for_row(row("shadows", "off", 0, 0));
   ASSERT_TRUE(shadows);
-  EXPECT_FALSE(std::get<SetShadows>(*shadows).on);
-  const std::optional<Command> pow = command_for_row(row("pow", "fast", 0, 0), scene);
+  EXPECT_EQ(std::get<SetField>(*shadows).key, "shadows");
+  EXPECT_EQ(std::get<SetField>(*shadows).value.x, 0.0);
+  const std::optional<Command> pow = command_for_row(row("pow", "fast", 0, 0));
   ASSERT_TRUE(pow);
   Scene applied = scene;
   apply_command(*pow, applied);
   EXPECT_EQ(applied.render.pow, PowMode::fast);
   applied.render.pow = scene.render.pow;
   EXPECT_TRUE(same_scene(applied, scene));  // nothing else changed
-  EXPECT_FALSE(command_for_row(row("tessellation", "8", 0, 0), scene));
-  EXPECT_FALSE(command_for_row(row("precision", "double", 0, 0), scene));
+  EXPECT_FALSE(command_for_row(row("tessellation", "8", 0, 0)));
+  EXPECT_FALSE(command_for_row(row("precision", "double", 0, 0)));
 
   EXPECT_EQ(preview_scale_for_row(row("resolution", "1/2", 0, 0)), 0.5f);
   EXPECT_EQ(preview_scale_for_row(row("resolution", "1/4", 0, 0)), 0.25f);

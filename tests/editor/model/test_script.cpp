@@ -5,6 +5,7 @@
 #include "base/error.h"
 #include "editor/model/command_layer.h"
 #include "editor/model/script.h"
+#include "editor/model/script_runner.h"
 #include "support/test_scene.h"
 
 namespace gloss {
@@ -35,11 +36,17 @@ TEST(Script, ParsesEveryCommand) {
   ASSERT_EQ(s.lines.size(), 26u);
   EXPECT_EQ(s.lines[0].line, 2);
   EXPECT_EQ(command_of<ApplyPreset>(s.lines[0]).name, "gold");
-  EXPECT_EQ(command_of<SetMaterialColour>(s.lines[1]).value, glm::vec3(0.5f, 0.25f, 0.0f));
-  EXPECT_EQ(command_of<SetMaterialColour>(s.lines[2]).value, glm::vec3(0.1f));
-  EXPECT_EQ(command_of<SetShininess>(s.lines[3]).value, 128.0f);
+  EXPECT_EQ(command_of<SetField>(s.lines[1]).part, FieldPart::material);
+  EXPECT_EQ(command_of<SetField>(s.lines[1]).index, 1);
+  EXPECT_EQ(command_of<SetField>(s.lines[1]).key, "diffuse");
+  EXPECT_EQ(command_of<SetField>(s.lines[1]).value.v, glm::vec3(0.5f, 0.25f, 0.0f));
+  EXPECT_EQ(command_of<SetField>(s.lines[2]).value.v, glm::vec3(0.1f));
+  EXPECT_EQ(command_of<SetField>(s.lines[3]).key, "shininess");
+  EXPECT_EQ(command_of<SetField>(s.lines[3]).value.x, 128.0);
   EXPECT_TRUE(command_of<SetModel>(s.lines[4]).keep_highlight_size);
-  EXPECT_EQ(command_of<SetLightValue>(s.lines[5]).value, glm::vec3(1.0f, 2.0f, 3.0f));
+  EXPECT_EQ(command_of<SetField>(s.lines[5]).part, FieldPart::light);
+  EXPECT_EQ(command_of<SetField>(s.lines[5]).key, "position");
+  EXPECT_EQ(command_of<SetField>(s.lines[5]).value.v, glm::vec3(1.0f, 2.0f, 3.0f));
   EXPECT_EQ(command_of<OrbitCamera>(s.lines[6]).pitch_deg, -10.0f);
   EXPECT_EQ(s.lines[6].line, 8);
   EXPECT_TRUE(std::holds_alternative<UndoAction>(s.lines[7].action));
@@ -48,8 +55,14 @@ TEST(Script, ParsesEveryCommand) {
   EXPECT_EQ(std::get<ViewAction>(s.lines[12].action).term, TermView::diffuse);
   EXPECT_EQ(std::get<ViewAction>(s.lines[13].action).mode, ViewMode::ab);
   EXPECT_EQ(std::get<ExposureAction>(s.lines[14].action).stops, -1.5f);
-  EXPECT_TRUE(std::get<EncodingAction>(s.lines[15].action).srgb);
-  EXPECT_EQ(command_of<SetTargetSpp>(s.lines[19]).spp, 8);
+  EXPECT_EQ(command_of<SetField>(s.lines[15]).part, FieldPart::render);
+  EXPECT_EQ(command_of<SetField>(s.lines[15]).key, "srgb");
+  EXPECT_EQ(command_of<SetField>(s.lines[15]).value.x, 1.0);
+  EXPECT_EQ(command_of<SetField>(s.lines[17]).key, "shadows");
+  EXPECT_EQ(command_of<SetField>(s.lines[17]).value.x, 0.0);
+  EXPECT_EQ(command_of<SetField>(s.lines[18]).key, "energy_normalize");
+  EXPECT_EQ(command_of<SetField>(s.lines[19]).key, "spp");
+  EXPECT_EQ(command_of<SetField>(s.lines[19]).value.x, 8.0);
   EXPECT_TRUE(std::holds_alternative<QuitAction>(s.lines.back().action));
 }
 
@@ -75,7 +88,7 @@ void expect_error_on_line(const std::string& text, int line, const std::string& 
 TEST(Script, BadLinesNameTheLine) {
   expect_error_on_line("wait\n\nfrobnicate 3\n", 3, "unknown command 'frobnicate'");
   expect_error_on_line("set 0 diffuse 1 0\n", 1, "missing colour");
-  expect_error_on_line("set 0 gloss 5\n", 1, "unknown field 'gloss'");
+  expect_error_on_line("set 0 gloss 5\n", 1, "unknown material field 'gloss'");
   expect_error_on_line("set x shininess 5\n", 1, "object index");
   expect_error_on_line("model lambert\n", 1, "phong or blinn-phong");
   expect_error_on_line("quit\nquit now\n", 2, "unexpected 'now'");
@@ -84,31 +97,104 @@ TEST(Script, BadLinesNameTheLine) {
   expect_error_on_line("light 0 colour 1 1 1\n", 1, "unknown light field");
 }
 
+// A host that records what the dispatcher hands it (script_runner.h).
+class RecordingHost : public ScriptHost {
+ public:
+  explicit RecordingHost(Scene scene) : m_layer(std::move(scene)) {}
+  CommandLayer& layer() override { return m_layer; }
+  ViewSettings& view() override { return m_view; }
+  void select(int object) override { selected = object; }
+  LineResult wait(const WaitAction&, const std::string&) override {
+    ++waits;
+    return LineResult::hold();
+  }
+  LineResult screenshot(const ScreenshotAction&, const std::string&) override {
+    return LineResult::go_on();
+  }
+  LineResult stats() override { return LineResult::go_on(); }
+  LineResult sleep(const SleepAction&) override { return LineResult::go_on(); }
+  LineResult quality(const QualityAction&, const std::string&) override {
+    return LineResult::go_on();
+  }
+
+  int waits = 0;
+  int selected = -1;
+
+ private:
+  CommandLayer m_layer;
+  ViewSettings m_view;
+};
+
+// Runs every line of text on host; returns what the last line left to do and its stderr.
+LineResult run_all(const std::string& text, RecordingHost& host, std::string& errors) {
+  const Script s = parse_script(text, "run.txt");
+  testing::internal::CaptureStderr();
+  LineResult result;
+  for (const ScriptLine& line : s.lines) {
+    result = run_script_line(s, line, host);
+    if (result.next == LineResult::Next::stop) break;
+  }
+  errors = testing::internal::GetCapturedStderr();
+  return result;
+}
+
 TEST(Script, ReplayGoesThroughTheCommandLayer) {
-  const Script s = parse_script("set 0 shininess 5\nset 0 shininess 6\nundo\n", "s.txt");
-  CommandLayer layer(test::two_sphere_scene());
-  for (const ScriptLine& line : s.lines) EXPECT_TRUE(run_document_line(line, layer, s.file));
+  RecordingHost host(test::two_sphere_scene());
+  std::string errors;
+  const LineResult r = run_all("set 0 shininess 5\nset 0 shininess 6\nundo\n", host, errors);
+  EXPECT_EQ(r.next, LineResult::Next::go_on);
   // Script lines are sealed one by one: undo takes back the second only.
-  EXPECT_EQ(layer.scene().materials[0].shininess, 5.0f);
+  EXPECT_EQ(host.layer().scene().materials[0].shininess, 5.0f);
+  EXPECT_EQ(errors, "");
+}
+
+TEST(Script, ViewLinesAndWaitsGoToTheHost) {
+  RecordingHost host(test::two_sphere_scene());
+  std::string errors;
+  const LineResult r =
+      run_all("view term diffuse\nexposure 2\nselect 1\nanimate on\nwait\n", host, errors);
+  EXPECT_EQ(r.next, LineResult::Next::hold);
+  EXPECT_EQ(host.view().mode, ViewMode::single);
+  EXPECT_EQ(host.view().single, TermView::diffuse);
+  EXPECT_EQ(host.view().exposure, 2.0f);
+  EXPECT_TRUE(host.view().orbit_light);
+  EXPECT_EQ(host.selected, 1);
+  EXPECT_EQ(host.waits, 1);
 }
 
 TEST(Script, AFailingCommandNamesItsLine) {
-  const Script s = parse_script("wait\npreset 7 gold\n", "run.txt");
-  CommandLayer layer(test::two_sphere_scene());
-  EXPECT_FALSE(run_document_line(s.lines[0], layer, s.file));
-  try {
-    run_document_line(s.lines[1], layer, s.file);
-    FAIL() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.line(), 2);
-    EXPECT_NE(std::string(e.what()).find("no object 7"), std::string::npos) << e.what();
-  }
+  RecordingHost host(test::two_sphere_scene());
+  std::string errors;
+  const LineResult r = run_all("exposure 1\npreset 7 gold\nquit\n", host, errors);
+  EXPECT_EQ(r.next, LineResult::Next::stop);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(errors.rfind("error: run.txt:2: ", 0), 0u) << errors;
+  EXPECT_NE(errors.find("no object 7"), std::string::npos) << errors;
+}
+
+TEST(Script, AnInvalidValueIsRefusedByTheOneValidator) {
+  RecordingHost host(test::two_sphere_scene());
+  std::string errors;
+  const LineResult r = run_all("light 0 attenuation 0 0 0\n", host, errors);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(errors.find("lights[0].attenuation: coefficients"), std::string::npos) << errors;
+  EXPECT_EQ(host.layer().scene().lights[0].attenuation, glm::vec3(1.0f, 0.0f, 0.0f));
 }
 
 TEST(Script, UndoWithNothingToUndoIsAnError) {
-  const Script s = parse_script("undo\n", "s.txt");
-  CommandLayer layer(test::two_sphere_scene());
-  EXPECT_THROW(run_document_line(s.lines[0], layer, s.file), InputError);
+  RecordingHost host(test::two_sphere_scene());
+  std::string errors;
+  EXPECT_EQ(run_all("undo\n", host, errors).status, 2);
+  EXPECT_NE(errors.find("nothing to undo"), std::string::npos) << errors;
+}
+
+TEST(Script, QuitStopsWithStatusZero) {
+  RecordingHost host(test::two_sphere_scene());
+  std::string errors;
+  const LineResult r = run_all("quit\nset 0 shininess 5\n", host, errors);
+  EXPECT_EQ(r.next, LineResult::Next::stop);
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(host.layer().scene().materials[0].shininess, 5.0f);
 }
 
 }  // namespace
