@@ -1,5 +1,5 @@
 #pragma once
-// The shading contract of spec/shading.md as functions over a scalar type T (float for the
+// The shading contract of docs/spec/shading.md as functions over a scalar type T (float for the
 // renderer, double for the reference path). Every renderer path calls these; none re-derives them.
 #include <cmath>
 #include <limits>
