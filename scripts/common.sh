@@ -5,7 +5,7 @@
 GLOSS_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 GLOSS_JOBS="${GLOSS_JOBS:-$(nproc)}"
 
-# Debian 12 / Ubuntu package names (see ../shared/TOOLCHAIN.md).
+# Debian 12 / Ubuntu package names (third_party/README.md says what each is for).
 GLOSS_PACKAGES=(
   cmake g++ clang libglfw3-dev libimgui-dev libglm-dev python3-glad libstb-dev
   libtinyobjloader-dev libembree-dev libtbb-dev nlohmann-json3-dev libcli11-dev libpng-dev

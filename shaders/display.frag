@@ -1,5 +1,5 @@
 #version 330 core
-// The viewport's display transform (spec/shading.md, "Output encodings"): linear RGB times the
+// The viewport's display transform (docs/spec/shading.md, "Output encodings"): linear RGB times the
 // exposure gain, clamped to [0, 1], then written as is (the classic look) or sRGB-encoded.
 // Modes: 0 shows u_a; 1 shows u_a + u_b (emissive + ambient); 2 shows the largest per-channel
 // |u_a - u_b| on the heat ramp, where u_heat_scale (linear units) maps to the ramp's top.

@@ -44,9 +44,9 @@ double time_median(int runs, const std::function<void()>& f) {
 
 // f timed against a baseline g: medians of each, and the median of the ratios f / g within
 // pairs. The runs alternate (f, g, f, g ... after one warm-up of each), so the two of a pair
-// see the same state of a noisy machine (this one's speed drifts by 20% over minutes); the
-// median of the paired ratios is the report's ratio, less disturbed by that drift than the
-// ratio of the two medians.
+// see the same state of a noisy machine (a shared machine's speed drifts over minutes:
+// docs/engine.md, "Benchmark timing"); the median of the paired ratios is the report's ratio,
+// less disturbed by that drift than the ratio of the two medians.
 struct Paired {
   double f_ms, g_ms, ratio;
 };
@@ -146,7 +146,7 @@ BenchReport run_benchmark(const Scene& input, const BenchOptions& options) {
   TermImages out;
 
   const Paired retrace = time_paired(
-      std::max(15, 2 * options.runs),  // some 20 ms a pair: more pairs, a steadier ratio
+      std::max(15, 2 * options.runs),  // short pairs: more of them, a steadier ratio
       [&] { full_render(scene, embree, cache, factors, out, false); },
       [&] {
         report.rays_per_frame = trace_rays_raw(scene, embree, options.width, options.height);
@@ -166,7 +166,7 @@ BenchReport run_benchmark(const Scene& input, const BenchOptions& options) {
   const RenderContext edited_ctx = make_render_context(edited, embree);
   TermImages reshaded;
   StreamingPass stream(factors.bytes(), pixels * sizeof(glm::vec3));
-  const int short_runs = std::max(15, 3 * options.runs);  // a few ms each: more samples
+  const int short_runs = std::max(15, 3 * options.runs);  // shorter still: more samples
   const Paired reshade = time_paired(
       short_runs, [&] { combine_terms(factors, edited_ctx, reshaded, false); },
       [&] { stream.run(); });
@@ -200,7 +200,8 @@ BenchReport run_benchmark(const Scene& input, const BenchOptions& options) {
   }
 
   // One thread, then all threads again right after. Not alternated: full renders timed right
-  // after one-thread arena runs read ~30% slower than the same renders timed on their own.
+  // after one-thread arena runs read markedly slower than the same renders timed on their own
+  // (docs/engine.md, "Benchmark timing").
   tbb::task_arena single(1);
   report.single_thread_ms = time_median(options.runs, [&] {
     single.execute([&] { full_render(scene, embree, cache, factors, out, false); });

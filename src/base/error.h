@@ -1,6 +1,6 @@
 #pragma once
 // Typed errors. Parsing and I/O throw these; only the CLI's main and the editor's error dialog turn
-// them into messages and exit codes (spec/scene-and-cli.md: 2 = bad input, 1 = other failure).
+// them into messages and exit codes (docs/spec/scene-and-cli.md: 2 = bad input, 1 = other failure).
 #include <stdexcept>
 #include <string>
 

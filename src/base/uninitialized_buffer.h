@@ -1,7 +1,7 @@
 #pragma once
 // std::vector whose resize leaves trivially constructible elements uninitialised: the renderer's
 // caches are fully overwritten by the stage that fills them, so zeroing them first would only
-// cost a memory pass (measured: about 8% of a 1280x720 render in page clearing and memset).
+// cost a memory pass, a measurable share of a render (docs/engine.md, "Uninitialised caches").
 // Storage is aligned to 64-byte cache lines, so packets can stream whole lines into it.
 #include <memory>
 #include <new>

@@ -1,4 +1,4 @@
-// gloss-cli: the headless renderer (spec/scene-and-cli.md). main is the only place that turns
+// gloss-cli: the headless renderer (docs/spec/scene-and-cli.md). main is the only place that turns
 // errors into messages and exit codes: 0 success, 2 bad input or usage, 1 any other failure.
 // Every failure prints exactly one line on stderr that starts with "error:".
 #include <algorithm>

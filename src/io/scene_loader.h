@@ -1,6 +1,6 @@
 #pragma once
-// Scene JSON (spec/scene-and-cli.md) to Scene and back. Every error is an InputError naming the
-// file and the line:column (syntax) or the field path such as objects[2].radius (meaning).
+// Scene JSON (docs/spec/scene-and-cli.md) to Scene and back. Every error is an InputError naming
+// the file and the line:column (syntax) or the field path such as objects[2].radius (meaning).
 #include <string>
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The Utah teapot's patch file (assets/models/utah-teapot.txt, from the team's data folder).
+// The Utah teapot's patch file (assets/models/utah-teapot.txt, whose header names its source).
 #include <string>
 
 #include "scene/teapot.h"

@@ -1,7 +1,8 @@
 #pragma once
 // A primary hit recomputed in a scalar type T from the primitive Embree found: the exact
 // ray-sphere intersection, or Moller-Trumbore against the mesh's triangle, then the normals of
-// spec/shading.md (two-sided). Embree answers in float; these make p, n and v as accurate as T.
+// docs/spec/shading.md (two-sided). Embree answers in float; these make p, n and v as
+// accurate as T.
 #include <cmath>
 #include <cstdint>
 #include <limits>

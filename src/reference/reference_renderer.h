@@ -1,9 +1,10 @@
 #pragma once
-// The reference path of spec/shading.md: the whole pipeline evaluated in a scalar type T (float or
-// double), one Embree ray at a time. Embree only finds which primitive a ray hits (in float); the
-// hit point, normals, camera rays, shading and accumulation are then recomputed in T, and shading
-// goes through shading.h, the same functions the fast renderer calls. render_reference<double>
-// at 256 spp is the reference that gloss-cli tradeoff measures every knob against.
+// The reference path of docs/spec/shading.md: the whole pipeline evaluated in a scalar type T
+// (float or double), one Embree ray at a time. Embree only finds which primitive a ray hits (in
+// float); the hit point, normals, camera rays, shading and accumulation are then recomputed in T,
+// and shading goes through shading.h, the same functions the fast renderer calls.
+// render_reference<double> at 256 spp is the reference that gloss-cli tradeoff measures every
+// knob against.
 #include <atomic>
 #include <cstdint>
 #include <optional>

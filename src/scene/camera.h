@@ -1,5 +1,5 @@
 #pragma once
-// Pinhole camera of spec/shading.md: y up, right-handed, vertical field of view in degrees.
+// Pinhole camera of docs/spec/shading.md: y up, right-handed, vertical field of view in degrees.
 #include <cmath>
 #include <stdexcept>
 

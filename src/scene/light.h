@@ -1,5 +1,6 @@
 #pragma once
-// A point light of spec/shading.md: colours La, Ld, Ls and attenuation 1 / (c0 + c1 d + c2 d^2).
+// A point light of docs/spec/shading.md: colours La, Ld, Ls and attenuation
+// 1 / (c0 + c1 d + c2 d^2).
 #include <glm/vec3.hpp>
 
 namespace gloss {

@@ -1,5 +1,5 @@
 #pragma once
-// A Phong material: the constants of spec/shading.md. Colours are linear RGB, unclamped, >= 0.
+// A Phong material: the constants of docs/spec/shading.md. Colours are linear RGB, unclamped, >= 0.
 #include <string>
 
 #include <glm/vec3.hpp>

@@ -1,5 +1,5 @@
 #pragma once
-// Where the samples of a pixel fall. One sample is the pixel centre (spec/shading.md); N > 1
+// Where the samples of a pixel fall. One sample is the pixel centre (docs/spec/shading.md); N > 1
 // samples are stratified: a jittered sqrt(N) x sqrt(N) grid when N is a square, else N-rooks
 // (one sample in each of N rows and each of N columns). Jitter comes from a hash of
 // (seed, pixel, stratum), so the same seed gives the same image and the order of evaluation

@@ -1,5 +1,5 @@
 #pragma once
-// The shading contract of spec/shading.md as functions over a scalar type T (float for the
+// The shading contract of docs/spec/shading.md as functions over a scalar type T (float for the
 // renderer, double for the reference path). Every renderer path calls these; none re-derives them.
 #include <cmath>
 #include <limits>
@@ -34,7 +34,7 @@ T attenuation(const glm::tvec3<T>& c, T d) {
 // The type light_factors computes in: double for float inputs. A float cosine carries about two
 // units in the last place (1.2e-7) and c^alpha multiplies that by alpha, so at alpha = 1000 a
 // float evaluation misses the contract's 1e-4 against double; computing in double and rounding
-// each factor once keeps float within it (tests/test_stability.cpp).
+// each factor once keeps float within it (tests/reference/test_stability.cpp).
 template <class T>
 using WideScalar = std::conditional_t<std::is_same_v<T, float>, double, T>;
 

@@ -1,6 +1,6 @@
 #pragma once
-// The surface quantities of spec/shading.md at a primary hit, rebuilt from the compact hit record
-// (object, primitive, t, u, v) that the frame cache keeps per sample.
+// The surface quantities of docs/spec/shading.md at a primary hit, rebuilt from the compact hit
+// record (object, primitive, t, u, v) that the frame cache keeps per sample.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>

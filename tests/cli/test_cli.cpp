@@ -1,4 +1,4 @@
-// The real gloss-cli executable (GLOSS_CLI_PATH) against spec/scene-and-cli.md: outputs, exit
+// The real gloss-cli executable (GLOSS_CLI_PATH) against docs/spec/scene-and-cli.md: outputs, exit
 // status 0 / 2 / 1, one "error:" line naming the file, and no output left behind by a failure.
 #include <sys/stat.h>
 #include <sys/wait.h>

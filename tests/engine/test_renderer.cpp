@@ -1,4 +1,4 @@
-// The one-shot renderer against values computed by hand from spec/shading.md.
+// The one-shot renderer against values computed by hand from docs/spec/shading.md.
 #include "engine/renderer.h"
 
 #include <cmath>

@@ -13,8 +13,9 @@
 namespace gloss {
 namespace {
 
-// Typed from /work/shared/data/opengl-vrml-materials.csv (the teapots.c table): name and the
-// table's shininess fraction, in table order.
+// Typed from the team's copy of the teapots.c table (the data of
+// assets/materials/opengl-vrml.csv, whose header names its origin), not read from the shipped
+// file: name and the table's shininess fraction, in table order.
 struct NamedShininess {
   const char* name;
   float raw;

@@ -1,5 +1,5 @@
 // The reference path (render_reference): equal to values computed by hand and by an independent
-// long-double evaluation of spec/shading.md, and the fast float renderer's agreement with it
+// long-double evaluation of docs/spec/shading.md, and the fast float renderer's agreement with it
 // (spec: 1e-4 on interior pixels for alpha up to 1000; flipped pixels counted and reported).
 #include "reference/reference_renderer.h"
 
@@ -54,7 +54,7 @@ TEST(ReferenceRenderer, FloatHeadOnSphereCentreMatchesHandComputation) {
   check_head_on_centre<float>(1e-5);
 }
 
-// The contract evaluated independently in long double, straight from spec/shading.md, for one
+// The contract evaluated independently in long double, straight from docs/spec/shading.md, for one
 // pixel centre of the head-on sphere (camera f = (0,0,-1), r = (1,0,0), u = (0,1,0) worked out by
 // hand from eye (0,0,5), target 0, up y).
 struct Ld3 {

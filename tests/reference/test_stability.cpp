@@ -1,6 +1,7 @@
-// Numerical stability of the shading contract at the edges of the parameter space (spec/shading.md,
-// "Numerical expectations"): the shading functions of shading.h in float and double, and whole
-// renders (fast float renderer and reference path) of degenerate geometry and scaled scenes.
+// Numerical stability of the shading contract at the edges of the parameter space
+// (docs/spec/shading.md, "Numerical expectations"): the shading functions of shading.h in float and
+// double, and whole renders (fast float renderer and reference path) of degenerate geometry and
+// scaled scenes.
 #include <cmath>
 #include <limits>
 #include <random>

@@ -1,4 +1,4 @@
-// Numerical stability of whole renders (spec/shading.md, "Numerical expectations"): degenerate
+// Numerical stability of whole renders (docs/spec/shading.md, "Numerical expectations"): degenerate
 // and sliver triangles, coordinates up to 1e5, extreme shininess, and no shadow acne on scenes
 // scaled by 1e-3 and 1e4, for the fast float renderer and the reference path in both precisions.
 #include <cmath>

@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
       "gloss: live Phong material editor. Opens SCENE.json (default: the shipped "
       "spheres scene) in a window; press F1 inside for shortcuts. Without a display it "
       "renders the scene to a PNG in the current folder. Guide: docs/editor.md."};
-  cli.add_option("scene", options.scene_path, "scene file (JSON, spec/scene-and-cli.md)");
+  cli.add_option("scene", options.scene_path, "scene file (JSON, docs/scene-format.md)");
   cli.add_option("--script", options.script_path,
                  "replay commands from FILE, one per line (docs/editor.md lists them)");
   cli.add_flag("--no-recovery", options.no_recovery,

@@ -11,7 +11,8 @@
 // glibc's libmvec has vector variants of powf (_ZGV{b,c,d,e}N*vv_powf, glibc >= 2.22), but
 // <math.h> declares them only under -ffast-math, which the renderer must not use (its NaN and
 // infinity guards must keep their meaning). Declaring the SIMD variant here lets the loop below
-// call them under -fopenmp-simd; the library is linked as mvec (src/core/CMakeLists.txt).
+// call them under -fopenmp-simd; the library is linked as mvec (gloss_libmvec,
+// third_party/dependencies.cmake).
 extern "C" __attribute__((__simd__("notinbranch"))) float powf(float, float) noexcept;
 
 namespace gloss {

@@ -1,8 +1,9 @@
 #pragma once
 // c^alpha over short arrays of lanes (the 16 samples of a packet, or a run of pixels): the
 // contract of shading.h's specular_power, vectorized. Exact mode calls glibc's libmvec powf
-// (its vector variants, about 1.7 ns a lane here against 3-6 ns for scalar powf); fast mode is
-// fast_specular_power's polynomial, inlined so it vectorizes too.
+// (its vector variants, measured cheaper per lane than scalar powf:
+// docs/engine.md, "Vector powf"); fast mode is fast_specular_power's polynomial, inlined so it
+// vectorizes too.
 #include <cstdint>
 #include <vector>
 
@@ -14,7 +15,8 @@ namespace gloss {
 
 // Per material: the exponent, and the cosine below which c^alpha < 2^-120. Such results count
 // as zero: they are invisible (far below the contract's 1e-4) and would send libmvec's powf to
-// its slow per-lane path for underflow (measured: 11 ns a lane at shininess 1e6 without it).
+// its slow per-lane path for underflow, several times the cost of a normal lane
+// (docs/engine.md, "Vector powf").
 struct MaterialExponents {
   std::vector<float> alpha;
   std::vector<float> floor;

@@ -2,7 +2,7 @@
 // The total image of 16 pixels covered by one sample each, made in the pass that makes their
 // factors (single_sample_pass.h) instead of reading the factors back (combine_terms): lane by
 // lane the operations of Recombination::terms and total with weight 1, in the same order, so
-// the pixels get the same bits either way (tests/test_single_sample_pass.cpp).
+// the pixels get the same bits either way (tests/engine/test_single_sample_pass.cpp).
 #include <cstddef>
 #include <cstdint>
 

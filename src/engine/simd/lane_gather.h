@@ -1,10 +1,10 @@
 #pragma once
 // out[k] = src[index[k]] for the 16 lanes of a packet. The lanes of a packet mostly index a few
 // neighbouring entries (the two triangles of a wall, adjacent triangles of a mesh, a handful of
-// materials or objects), and on this machine (AMD EPYC, Zen 4) a 16-lane AVX-512 gather costs
-// twice what loading the 16 entries from the lowest index and permuting them does (measured in
-// a loop of dependent calls: 5.4 against 2.7 ns). So a LaneGather finds the indices' range once
-// and each fetch takes the window path when the range fits in 16 entries, the gather otherwise.
+// materials or objects), and loading the 16 entries from the lowest index and permuting them
+// cost about half a 16-lane AVX-512 gather where it was measured
+// (docs/engine.md, "Lane fetches"). So a LaneGather finds the indices' range once and each fetch
+// takes the window path when the range fits in 16 entries, the gather otherwise.
 // Written with intrinsics because GCC's own vectorization of such loops stores lanes one by
 // one and reads them back as a vector (a store-forwarding stall), or hoists the index scaling
 // and falls back to 4-lane gathers. Both paths fetch the same values, so results do not depend

@@ -12,9 +12,9 @@ namespace gloss {
 
 // Scales the kLanes vectors (x[i], y[i], z[i]) to unit length; the arrays are 64-byte aligned.
 // With AVX-512: the 14-bit reciprocal square root estimate and two Newton steps (14 -> 28 -> 56
-// bits; lengths within a few double ulp of 1), about a third of the cost of a double square root
-// and division per lane. Results then differ from the scalar fallback (1 / sqrt) by a few double
-// ulp: far inside the accuracy contract.
+// bits; lengths within a few double ulp of 1), cheaper per lane than a double square root and
+// division (docs/engine.md, "Normalising directions"). Results then differ from the scalar
+// fallback (1 / sqrt) by a few double ulp: far inside the accuracy contract.
 inline void normalize_lanes(double* x, double* y, double* z) {
 #if defined(__AVX512F__)
   static_assert(kLanes % 8 == 0, "whole 8-double registers");

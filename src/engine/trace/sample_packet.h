@@ -4,9 +4,10 @@
 // between, so each per-sample step runs as vector code (16 floats = one AVX-512 register).
 // Steps in data-flow order: directions -> primary hits -> surfaces -> per light: shadow rays
 // and light factors. Lane i is pixel (x0 + i, y0) of the cached region. A row (not a 4 x 4 block,
-// which Embree traces about 4% faster) makes each field of a packet one 64-byte cache line of
-// the cache's arrays, which store_lanes can then stream past the caches without first reading
-// the line (the per-sample cache is written once and read back only by later edits).
+// which Embree traces slightly faster: docs/engine.md, "Packet shape") makes each field of a
+// packet one 64-byte cache line of the cache's arrays, which store_lanes can then stream past
+// the caches without first reading the line (the per-sample cache is written once and read back
+// only by later edits).
 #include <algorithm>
 #include <cstdint>
 #include <cstring>

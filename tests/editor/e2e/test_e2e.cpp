@@ -1,7 +1,7 @@
 // End-to-end: the real gloss under Xvfb, driven by --script, checked through the PNG files it
 // writes. Expected directions come from the preset table (gold's diffuse is (0.75, 0.61, 0.23),
-// silver's (0.51, 0.51, 0.51)) and from spec/shading.md (total = emissive + ambient + diffuse +
-// specular), never from earlier output of the program.
+// silver's (0.51, 0.51, 0.51)) and from docs/spec/shading.md (total = emissive + ambient +
+// diffuse + specular), never from earlier output of the program.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>

@@ -1,6 +1,7 @@
 #pragma once
 // An OpenGL 3.3 core context without any window system: EGL on Mesa's surfaceless platform
-// (TOOLCHAIN.md), for testing the editor's GL pieces without X. Rendering goes to FBOs.
+// (third_party/README.md, EGL), for testing the editor's GL pieces without X. Rendering goes
+// to FBOs.
 #include <string>
 
 namespace gloss::test {

@@ -1,5 +1,5 @@
 // The editor's GL pieces without X: float texture upload, and the display shaders' output for
-// known inputs read back from an FBO. Expected bytes come from spec/shading.md's encodings
+// known inputs read back from an FBO. Expected bytes come from docs/spec/shading.md's encodings
 // evaluated here in double precision; GL's float-to-byte conversion may round either way at
 // exact halves, so comparisons allow one step.
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
-// The viewport's camera maths, against values worked out by hand from spec/shading.md's camera.
+// The viewport's camera maths, against values worked out by hand from the camera of
+// docs/spec/shading.md.
 #include <gtest/gtest.h>
 
 #include <cmath>
