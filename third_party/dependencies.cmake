@@ -10,7 +10,8 @@ find_package(embree 3 REQUIRED)
 find_package(TBB REQUIRED)
 # Vectors and matrices (everywhere). Debian 12: 0.9.9.8.
 find_package(glm REQUIRED)
-# Scene and material JSON (io only; the editor's state files go through io). Debian 12: 3.11.2.
+# Scene and material JSON (io; the editor's recovery file goes through io) and the benchmark's
+# JSON report (analysis), private to both. Debian 12: 3.11.2.
 find_package(nlohmann_json 3 REQUIRED)
 # Wavefront OBJ (io only). No version: Debian's is "2rc10" and a version request fails.
 find_package(tinyobjloader REQUIRED)

@@ -8,7 +8,6 @@
 #include <stdexcept>
 #include <tuple>
 
-#include <nlohmann/json.hpp>
 
 #include "analysis/image_resample.h"
 #include "base/timing.h"

@@ -1,6 +1,6 @@
 #pragma once
 // Screenshot and export files: what goes into them and names that never replace a file. The
-// viewport and term-sheet exports are rendered by the core renderer at the document's full
+// viewport and term-sheet exports are rendered by the CPU renderer at the document's full
 // resolution (scene.render), so they do not depend on the window's size or preview quality.
 #include <ctime>
 #include <filesystem>

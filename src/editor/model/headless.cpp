@@ -14,12 +14,12 @@ namespace gloss {
 namespace {
 
 void say_no_display(const std::string& reason) {
-  std::fprintf(stderr, "gloss: no display (%s); using the core renderer without a window\n",
+  std::fprintf(stderr, "gloss: no display (%s); using the CPU renderer without a window\n",
                reason.c_str());
 }
 
 // A script without frames: `wait` returns at once (every export renders to convergence),
-// viewport and term screenshots render with the core renderer, a window screenshot is an error,
+// viewport and term screenshots render with the CPU renderer, a window screenshot is an error,
 // a started quality measurement is measured to its end at once and cancel does nothing.
 class HeadlessHost : public ScriptHost {
  public:

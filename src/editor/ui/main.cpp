@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  // ---- Setup: window and GL; without them, the core renderer alone ------------------------
+  // ---- Setup: window and GL; without them, the CPU renderer alone ------------------------
   glfwSetErrorCallback(on_glfw_error);
   if (!glfwInit()) {
     return script ? run_script_without_display(*scene, *script, g_glfw_error)
