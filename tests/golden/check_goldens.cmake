@@ -2,11 +2,11 @@ cmake_minimum_required(VERSION 3.20)
 # Renders every case of cases.txt with gloss-cli and compares the SHA-256 of each PFM with
 # checksums-SET.txt (bit-identical images). CMake's file(SHA256) does the hashing, so the check
 # needs nothing beyond the build's own tools.
-#   cmake -DCLI=gloss-cli -DROOT=repo -DOUT=scratch-folder -DSET=fma|sse2 [-DUPDATE=ON]
-#         -P check_goldens.cmake
-# SET: the instruction set the renderer was compiled for. Builds with FMA (x86-64-v3: AVX2 or
-# AVX-512) agree bit for bit; the baseline x86-64 build (SSE2, no FMA contraction, libmvec's SSE
-# powf) rounds differently, so it has its own set. UPDATE=ON rewrites the set instead of
+#   cmake -DCLI=gloss-cli -DROOT=repo -DOUT=scratch-folder -DSET=fma|sse2|sse2-scalar
+#         [-DUPDATE=ON] -P check_goldens.cmake
+# SET: how the renderer was compiled (tests/CMakeLists.txt chooses): with FMA (x86-64-v3: AVX2
+# and AVX-512 agree bit for bit), the baseline x86-64 optimised (no FMA contraction, libmvec's
+# SSE powf), or the baseline at -O1 (scalar powf). UPDATE=ON rewrites the set instead of
 # comparing (scripts/update-goldens).
 foreach(var CLI ROOT OUT SET)
   if(NOT DEFINED ${var})
