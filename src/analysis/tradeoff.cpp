@@ -8,7 +8,6 @@
 #include <stdexcept>
 #include <tuple>
 
-
 #include "analysis/image_resample.h"
 #include "base/timing.h"
 #include "engine/renderer.h"
@@ -65,12 +64,6 @@ void check_options(const TradeoffOptions& o) {
   }
   for (int d : o.resolution_divisors) {
     if (d < 1) throw std::invalid_argument("tradeoff: resolution divisors must be >= 1");
-  }
-  for (const std::string& k : o.knobs) {
-    const auto& all = tradeoff_knobs();
-    if (std::find(all.begin(), all.end(), k) == all.end()) {
-      throw std::invalid_argument("tradeoff: unknown knob '" + k + "'");
-    }
   }
 }
 
@@ -194,8 +187,7 @@ struct Setting {
 };
 
 // The settings of one knob, each as a change of the base configuration.
-std::vector<Setting> settings_of(const std::string& knob, const Session& session,
-                                 const TradeoffOptions& o) {
+std::vector<Setting> settings_of(Knob knob, const Session& session, const TradeoffOptions& o) {
   const Config base = session.base();
   std::vector<Setting> out;
   auto add = [&](std::string name, auto change, bool reference) {
@@ -203,39 +195,39 @@ std::vector<Setting> settings_of(const std::string& knob, const Session& session
     change(c);
     out.push_back({std::move(name), c, reference});
   };
-  if (knob == "spp") {
+  if (knob == Knob::spp) {
     for (int s : o.spp_levels) {
       add(
           std::to_string(s), [s](Config& c) { c.spp = s; }, s == o.reference_spp);
     }
-  } else if (knob == "tessellation") {
+  } else if (knob == Knob::tessellation) {
     if (session.finest() == 0) return out;  // no teapot: skipped (tradeoff_notes says so)
     for (int level : o.tessellation_levels) {
       add(
           std::to_string(level), [level](Config& c) { c.tessellation = level; },
           level == session.finest());
     }
-  } else if (knob == "pow") {
+  } else if (knob == Knob::pow) {
     add(
         "exact", [](Config&) {}, true);
     add(
         "fast", [](Config& c) { c.pow = PowMode::fast; }, false);
-  } else if (knob == "precision") {
+  } else if (knob == Knob::precision) {
     add(
         "float", [](Config&) {}, false);
     add(
         "double", [](Config& c) { c.path = Path::reference_double; }, true);
-  } else if (knob == "shading") {
+  } else if (knob == Knob::shading) {
     add(
         "per-pixel", [](Config&) {}, true);
     add(
         "gouraud", [](Config& c) { c.path = Path::gouraud_float; }, false);
-  } else if (knob == "resolution") {
+  } else if (knob == Knob::resolution) {
     for (int d : o.resolution_divisors) {
       add(
           divisor_name(d), [d](Config& c) { c.divisor = d; }, d == 1);
     }
-  } else if (knob == "shadows") {
+  } else if (knob == Knob::shadows) {
     add(
         "on", [](Config& c) { c.shadows = true; }, base.shadows);
     add(
@@ -313,13 +305,50 @@ std::vector<std::string> tradeoff_notes(const Scene& scene, const TradeoffOption
   return notes;
 }
 
+const std::vector<Knob>& tradeoff_knobs() {
+  static const std::vector<Knob> knobs{Knob::spp,       Knob::tessellation, Knob::pow,
+                                       Knob::precision, Knob::shading,      Knob::resolution,
+                                       Knob::shadows};
+  return knobs;
+}
+
+const char* to_string(Knob knob) {
+  switch (knob) {
+    case Knob::spp:
+      return "spp";
+    case Knob::tessellation:
+      return "tessellation";
+    case Knob::pow:
+      return "pow";
+    case Knob::precision:
+      return "precision";
+    case Knob::shading:
+      return "shading";
+    case Knob::resolution:
+      return "resolution";
+    case Knob::shadows:
+      return "shadows";
+  }
+  return "?";
+}
+
+bool parse_knob(const std::string& name, Knob& knob) {
+  for (const Knob k : tradeoff_knobs()) {
+    if (name == to_string(k)) {
+      knob = k;
+      return true;
+    }
+  }
+  return false;
+}
+
 std::vector<TradeoffRow> run_tradeoff(const Scene& scene, const TradeoffOptions& options,
                                       const std::function<bool(const TradeoffRow&)>& on_row) {
   check_options(options);
   Session session(scene, options);
   std::vector<TradeoffRow> rows;
   if (!session.make_reference()) return rows;
-  for (const std::string& knob : tradeoff_knobs()) {
+  for (const Knob knob : tradeoff_knobs()) {
     if (!options.knobs.empty() &&
         std::find(options.knobs.begin(), options.knobs.end(), knob) == options.knobs.end()) {
       continue;
@@ -354,7 +383,7 @@ std::string tradeoff_to_csv(const std::vector<TradeoffRow>& rows) {
     } else {
       std::snprintf(psnr, sizeof psnr, "%.3f", r.error.psnr_db);
     }
-    std::snprintf(line, sizeof line, "%s,%s,%.3f,%.6g,%s,%.6g,%.4f\n", r.knob.c_str(),
+    std::snprintf(line, sizeof line, "%s,%s,%.3f,%.6g,%s,%.6g,%.4f\n", to_string(r.knob),
                   r.setting.c_str(), r.time_ms, r.error.rmse, psnr, r.error.max_abs,
                   r.error.pct_pixels_off);
     csv += line;

@@ -16,12 +16,15 @@
 
 namespace gloss {
 
-// The knobs, in the order run_tradeoff measures them.
-inline const std::vector<std::string>& tradeoff_knobs() {
-  static const std::vector<std::string> knobs{"spp",     "tessellation", "pow",    "precision",
-                                              "shading", "resolution",   "shadows"};
-  return knobs;
-}
+// The accuracy knobs, in the order run_tradeoff measures them.
+enum class Knob { spp, tessellation, pow, precision, shading, resolution, shadows };
+
+// Every knob, in measuring order.
+const std::vector<Knob>& tradeoff_knobs();
+// The knob's name as tables, CSV files and the Quality window print it ("spp", "pow" ...);
+// parse_knob returns false for any other name.
+const char* to_string(Knob knob);
+bool parse_knob(const std::string& name, Knob& knob);
 
 struct TradeoffOptions {
   int width = 0, height = 0;  // full-size image, pixels; 0: the scene's (one 0: from its aspect)
@@ -31,7 +34,7 @@ struct TradeoffOptions {
   std::vector<int> spp_levels{1, 2, 4, 8, 16, 32, 64};    // spp knob, fast float renderer
   std::vector<int> tessellation_levels{2, 4, 8, 16, 32};  // teapot segments per patch side
   std::vector<int> resolution_divisors{8, 4, 2, 1};       // preview at 1/d, upsampled
-  std::vector<std::string> knobs;             // names from tradeoff_knobs() to measure; empty: all
+  std::vector<Knob> knobs;                                // the knobs to measure; empty: all
   const std::atomic<bool>* cancel = nullptr;  // checked between renders and inside references
 };
 
@@ -45,7 +48,7 @@ void tradeoff_image_size(const Scene& scene, const TradeoffOptions& options, int
 TradeoffOptions quick_tradeoff_options();
 
 struct TradeoffRow {
-  std::string knob;     // one of tradeoff_knobs()
+  Knob knob = Knob::spp;
   std::string setting;  // spp: "1".."64"; tessellation: "2".."32"; pow: "exact", "fast";
                         // precision: "float", "double"; shading: "per-pixel", "gouraud";
                         // resolution: "1/8".."1"; shadows: "on", "off"

@@ -110,7 +110,7 @@ void print_row(const TradeoffRow& r) {
   const std::string marks =
       std::string(r.reference_setting ? "*" : "") + (r.base_setting ? "b" : "");
   std::snprintf(line, sizeof line, "  %-13s %-10s %-2s %11.3f %11.3g %9.2f %11.3g %9.3f\n",
-                r.knob.c_str(), r.setting.c_str(), marks.c_str(), r.time_ms, r.error.rmse,
+                to_string(r.knob), r.setting.c_str(), marks.c_str(), r.time_ms, r.error.rmse,
                 r.error.psnr_db, r.error.max_abs, r.error.pct_pixels_off);
   std::cout << line << std::flush;
 }
@@ -180,7 +180,8 @@ void run_tradeoff_command(const TradeoffArgs& args) {
     // The base rows render one configuration: drawn once.
     std::string base;
     for (const TradeoffRow& r : rows) {
-      if (r.base_setting) base += (base.empty() ? "" : ",") + r.knob + "=" + r.setting;
+      if (r.base_setting)
+        base += (base.empty() ? "" : ",") + std::string(to_string(r.knob)) + "=" + r.setting;
     }
     try {
       write_atomically(args.plot, [&](const std::string& temp_png) {

@@ -44,7 +44,7 @@ class Tradeoff : public ::testing::Test {
   static void TearDownTestSuite() { delete rows; }
   static const TradeoffRow& row(const std::string& knob, const std::string& setting) {
     for (const TradeoffRow& r : *rows) {
-      if (r.knob == knob && r.setting == setting) return r;
+      if (to_string(r.knob) == knob && r.setting == setting) return r;
     }
     throw std::out_of_range(knob + " " + setting);
   }
@@ -56,10 +56,11 @@ TEST_F(Tradeoff, EveryKnobIsPresentWithItsSettingsInOrder) {
   std::map<std::string, std::vector<std::string>> got;
   std::vector<std::string> order;
   for (const TradeoffRow& r : *rows) {
-    if (got[r.knob].empty()) order.push_back(r.knob);
-    got[r.knob].push_back(r.setting);
+    if (got[to_string(r.knob)].empty()) order.push_back(to_string(r.knob));
+    got[to_string(r.knob)].push_back(r.setting);
   }
-  EXPECT_EQ(order, tradeoff_knobs());
+  EXPECT_EQ(order, (std::vector<std::string>{"spp", "tessellation", "pow", "precision", "shading",
+                                             "resolution", "shadows"}));
   EXPECT_EQ(got["spp"], (std::vector<std::string>{"1", "4", "16"}));
   EXPECT_EQ(got["tessellation"], (std::vector<std::string>{"2", "4", "8"}));
   EXPECT_EQ(got["pow"], (std::vector<std::string>{"exact", "fast"}));
@@ -68,7 +69,7 @@ TEST_F(Tradeoff, EveryKnobIsPresentWithItsSettingsInOrder) {
   EXPECT_EQ(got["resolution"], (std::vector<std::string>{"1/4", "1/2", "1"}));
   EXPECT_EQ(got["shadows"], (std::vector<std::string>{"on", "off"}));
   for (const TradeoffRow& r : *rows) {
-    EXPECT_GT(r.time_ms, 0.0) << r.knob << " " << r.setting;
+    EXPECT_GT(r.time_ms, 0.0) << to_string(r.knob) << " " << r.setting;
     EXPECT_EQ(r.error.pixels, 40u * 30u);
   }
 }
@@ -86,7 +87,7 @@ TEST_F(Tradeoff, ReferenceSettingOfEveryKnobHasAlmostNoError) {
   for (const TradeoffRow& r : *rows) {
     if (!r.reference_setting) continue;
     ++marked;
-    EXPECT_LT(r.error.max_abs, 1e-4) << r.knob << " " << r.setting;
+    EXPECT_LT(r.error.max_abs, 1e-4) << to_string(r.knob) << " " << r.setting;
   }
   EXPECT_EQ(marked, 7);  // one per knob
   EXPECT_EQ(row("precision", "double").error.rmse, 0.0);
@@ -96,7 +97,7 @@ TEST_F(Tradeoff, ReferenceSettingOfEveryKnobHasAlmostNoError) {
 TEST_F(Tradeoff, BaseRowsAreTheReferenceSettingsButFloatAndTheBaseSpp) {
   std::vector<std::string> base;
   for (const TradeoffRow& r : *rows) {
-    if (r.base_setting) base.push_back(r.knob + "=" + r.setting);
+    if (r.base_setting) base.push_back(std::string(to_string(r.knob)) + "=" + r.setting);
   }
   EXPECT_EQ(base,
             (std::vector<std::string>{"spp=16", "tessellation=8", "pow=exact", "precision=float",
@@ -131,13 +132,13 @@ TEST_F(Tradeoff, CsvHasTheIssuesHeaderAndOneLinePerRow) {
 
 TEST(TradeoffControl, ReturningFalseFromOnRowStopsAfterThatRow) {
   TradeoffOptions o = small_options();
-  o.knobs = {"pow", "shadows"};
+  o.knobs = {Knob::pow, Knob::shadows};
   int calls = 0;
   const std::vector<TradeoffRow> rows =
       run_tradeoff(small_teapot(), o, [&](const TradeoffRow&) { return ++calls < 3; });
   ASSERT_EQ(rows.size(), 3u);
-  EXPECT_EQ(rows[0].knob, "pow");
-  EXPECT_EQ(rows[2].knob, "shadows");
+  EXPECT_EQ(rows[0].knob, Knob::pow);
+  EXPECT_EQ(rows[2].knob, Knob::shadows);
 }
 
 TEST(TradeoffControl, ACancelFlagSetBeforehandStopsBeforeAnyRow) {
@@ -150,10 +151,10 @@ TEST(TradeoffControl, ACancelFlagSetBeforehandStopsBeforeAnyRow) {
 TEST(TradeoffControl, SceneWithoutTeapotSkipsTessellationAndSaysSo) {
   Scene scene = test::head_on_sphere_scene();
   TradeoffOptions o = small_options();
-  o.knobs = {"tessellation", "pow"};
+  o.knobs = {Knob::tessellation, Knob::pow};
   const std::vector<TradeoffRow> rows = run_tradeoff(scene, o);
   ASSERT_EQ(rows.size(), 2u);
-  EXPECT_EQ(rows[0].knob, "pow");
+  EXPECT_EQ(rows[0].knob, Knob::pow);
   bool said = false;
   for (const std::string& note : tradeoff_notes(scene, o)) {
     said = said || note.find("tessellation: skipped") != std::string::npos;
@@ -167,11 +168,22 @@ TEST(TradeoffControl, OptionsOutOfRangeAreRefused) {
   o.runs = 0;
   EXPECT_THROW(run_tradeoff(scene, o), std::invalid_argument);
   o = small_options();
-  o.knobs = {"spp", "colour"};
-  EXPECT_THROW(run_tradeoff(scene, o), std::invalid_argument);
-  o = small_options();
   o.tessellation_levels = {0};
   EXPECT_THROW(run_tradeoff(scene, o), std::invalid_argument);
+}
+
+// The names tables, CSV files and the Quality window print are the knobs' only spelling.
+TEST(TradeoffKnobs, NamesReadBackAndUnknownNamesAreRefused) {
+  for (const Knob knob : tradeoff_knobs()) {
+    Knob parsed = Knob::spp;
+    EXPECT_TRUE(parse_knob(to_string(knob), parsed)) << to_string(knob);
+    EXPECT_EQ(parsed, knob);
+  }
+  Knob untouched = Knob::shadows;
+  EXPECT_FALSE(parse_knob("colour", untouched));
+  EXPECT_FALSE(parse_knob("SPP", untouched));
+  EXPECT_EQ(untouched, Knob::shadows);
+  EXPECT_STREQ(to_string(Knob::resolution), "resolution");
 }
 
 }  // namespace

@@ -62,11 +62,11 @@ void QualityMeasurement::start(const Scene& scene, TradeoffOptions options) {
   m_scene = scene;
   m_options = options;
   m_knobs.clear();
-  for (const std::string& knob : tradeoff_knobs()) {
+  for (const Knob knob : tradeoff_knobs()) {
     const bool chosen =
         options.knobs.empty() ||
         std::find(options.knobs.begin(), options.knobs.end(), knob) != options.knobs.end();
-    if (chosen && (knob != "tessellation" || has_teapot(scene))) m_knobs.push_back(knob);
+    if (chosen && (knob != Knob::tessellation || has_teapot(scene))) m_knobs.push_back(knob);
   }
   m_rows.clear();
   m_incoming.clear();
@@ -126,7 +126,7 @@ bool QualityMeasurement::poll() {
 
 int QualityMeasurement::knobs_done() const {
   int done = 0;
-  for (const std::string& knob : m_knobs) {
+  for (const Knob knob : m_knobs) {
     const bool any = std::any_of(m_rows.begin(), m_rows.end(),
                                  [&](const TradeoffRow& r) { return r.knob == knob; });
     done += any ? 1 : 0;
@@ -134,10 +134,11 @@ int QualityMeasurement::knobs_done() const {
   return done;
 }
 
-std::string QualityMeasurement::current_knob() const {
-  if (!running()) return "";
+std::optional<Knob> QualityMeasurement::current_knob() const {
+  if (!running()) return std::nullopt;
   const std::size_t done = static_cast<std::size_t>(knobs_done());
-  return done < m_knobs.size() ? m_knobs[done] : "";
+  if (done < m_knobs.size()) return m_knobs[done];
+  return std::nullopt;
 }
 
 double QualityMeasurement::elapsed_s() const {
@@ -150,8 +151,7 @@ bool QualityMeasurement::stale(const Scene& current) const {
   return !same_scene(measured_part(m_scene), measured_part(current));
 }
 
-std::vector<TradeoffRow> rows_of_knob(const std::vector<TradeoffRow>& rows,
-                                      const std::string& knob) {
+std::vector<TradeoffRow> rows_of_knob(const std::vector<TradeoffRow>& rows, Knob knob) {
   std::vector<TradeoffRow> out;
   std::copy_if(rows.begin(), rows.end(), std::back_inserter(out),
                [&](const TradeoffRow& r) { return r.knob == knob; });
@@ -193,32 +193,32 @@ std::string quality_verdict(const std::vector<TradeoffRow>& knob_rows) {
 }
 
 std::optional<Command> command_for_row(const TradeoffRow& row) {
-  if (row.knob == "spp") {
+  if (row.knob == Knob::spp) {
     const int spp = std::atoi(row.setting.c_str());
     if (spp < 1 || spp > kMaxSpp) return std::nullopt;
     return Command(SetField{FieldPart::render, 0, "spp", number_value(spp)});
   }
-  if (row.knob == "shadows" && (row.setting == "on" || row.setting == "off")) {
+  if (row.knob == Knob::shadows && (row.setting == "on" || row.setting == "off")) {
     return Command(SetField{FieldPart::render, 0, "shadows", number_value(row.setting == "on")});
   }
   PowMode pow = PowMode::exact;
-  if (row.knob == "pow" && parse_pow_mode(row.setting, pow)) {
+  if (row.knob == Knob::pow && parse_pow_mode(row.setting, pow)) {
     return Command(SetField{FieldPart::render, 0, "pow", number_value(static_cast<int>(pow))});
   }
   return std::nullopt;
 }
 
 std::optional<float> preview_scale_for_row(const TradeoffRow& row) {
-  if (row.knob != "resolution") return std::nullopt;
+  if (row.knob != Knob::resolution) return std::nullopt;
   const int d = divisor_of(row.setting);
   if (d < 1 || d > 4) return std::nullopt;  // the preview scale slider's range is 0.25..1
   return 1.0f / static_cast<float>(d);
 }
 
 bool row_in_use(const TradeoffRow& row, const Scene& scene, float preview_scale) {
-  if (row.knob == "spp") return scene.render.spp == std::atoi(row.setting.c_str());
-  if (row.knob == "shadows") return scene.render.shadows == (row.setting == "on");
-  if (row.knob == "pow") return (scene.render.pow == PowMode::fast) == (row.setting == "fast");
+  if (row.knob == Knob::spp) return scene.render.spp == std::atoi(row.setting.c_str());
+  if (row.knob == Knob::shadows) return scene.render.shadows == (row.setting == "on");
+  if (row.knob == Knob::pow) return to_string(scene.render.pow) == row.setting;
   if (const std::optional<float> scale = preview_scale_for_row(row)) {
     return std::fabs(*scale - preview_scale) < 1e-3f;
   }

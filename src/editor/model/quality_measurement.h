@@ -43,11 +43,11 @@ class QualityMeasurement {
   const std::vector<TradeoffRow>& rows() const { return m_rows; }
   const std::vector<std::string>& notes() const { return m_notes; }
   // The knobs this measurement covers, in run order (tessellation only for a teapot scene).
-  const std::vector<std::string>& knobs() const { return m_knobs; }
+  const std::vector<Knob>& knobs() const { return m_knobs; }
   // Knobs whose rows have all arrived.
   int knobs_done() const;
-  // The knob being measured while running (the first one also renders the reference); else "".
-  std::string current_knob() const;
+  // The knob being measured while running (the first one also renders the reference); else nothing.
+  std::optional<Knob> current_knob() const;
   const std::string& error() const { return m_error; }
   // Seconds since start while running; the measurement's duration after it ended.
   double elapsed_s() const;
@@ -65,7 +65,7 @@ class QualityMeasurement {
   State m_state = State::idle;
   Scene m_scene;  // the copy measured (the worker reads its own copy)
   TradeoffOptions m_options;
-  std::vector<std::string> m_knobs;
+  std::vector<Knob> m_knobs;
   std::vector<TradeoffRow> m_rows;
   std::vector<std::string> m_notes;
   std::string m_error;
@@ -79,8 +79,7 @@ class QualityMeasurement {
 };
 
 // The rows of one knob, in measured order.
-std::vector<TradeoffRow> rows_of_knob(const std::vector<TradeoffRow>& rows,
-                                      const std::string& knob);
+std::vector<TradeoffRow> rows_of_knob(const std::vector<TradeoffRow>& rows, Knob knob);
 
 // One line that helps choose a setting of one knob: the cheapest setting whose image is within
 // 1/255 of the reference on 99% of pixels (pct_pixels_off <= 1). When none is (every row carries

@@ -57,8 +57,10 @@ void draw_controls(App& app) {
   const int done = q.knobs_done();
   char overlay[128];
   if (q.running()) {
-    std::snprintf(overlay, sizeof overlay, "%s: knob %d of %d, %.1f s", q.current_knob().c_str(),
-                  std::min(done + 1, total), total, q.elapsed_s());
+    const std::optional<Knob> current = q.current_knob();
+    std::snprintf(overlay, sizeof overlay, "%s: knob %d of %d, %.1f s",
+                  current ? to_string(*current) : "", std::min(done + 1, total), total,
+                  q.elapsed_s());
   } else if (q.state() == QualityMeasurement::State::idle) {
     std::snprintf(overlay, sizeof overlay, "%s", state_text(q));
   } else {
@@ -92,10 +94,10 @@ void draw_use(App& app, const TradeoffRow& row) {
   }
 }
 
-void draw_knob_table(App& app, const std::string& knob, const std::vector<TradeoffRow>& rows) {
+void draw_knob_table(App& app, Knob knob, const std::vector<TradeoffRow>& rows) {
   const ImGuiTableFlags flags =
       ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV;
-  if (!ImGui::BeginTable(knob.c_str(), 7, flags)) return;
+  if (!ImGui::BeginTable(to_string(knob), 7, flags)) return;
   // Widths of the widest expected cell, so that the knobs' tables line up.
   auto width = [](const char* widest) { return ImGui::CalcTextSize(widest).x; };
   ImGui::TableSetupColumn("setting", ImGuiTableColumnFlags_WidthFixed, width("per-pixel"));
@@ -140,11 +142,11 @@ void draw_knob_table(App& app, const std::string& knob, const std::vector<Tradeo
 
 void draw_knobs(App& app) {
   const QualityMeasurement& q = app.quality;
-  const std::string current = q.current_knob();
-  for (const std::string& knob : q.knobs()) {
+  const std::optional<Knob> current = q.current_knob();
+  for (const Knob knob : q.knobs()) {
     const std::vector<TradeoffRow> rows = rows_of_knob(q.rows(), knob);
     ImGui::Spacing();
-    ImGui::TextUnformatted(knob.c_str());
+    ImGui::TextUnformatted(to_string(knob));
     ImGui::SameLine(ImGui::CalcTextSize("tessellation  ").x);
     if (rows.empty()) {
       ImGui::TextDisabled(knob == current ? "measuring..." : q.running() ? "waiting" : "-");

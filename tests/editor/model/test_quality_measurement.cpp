@@ -38,8 +38,8 @@ TradeoffOptions tiny_options() {
   return o;
 }
 
-std::size_t knob_position(const std::string& knob) {
-  const std::vector<std::string>& all = tradeoff_knobs();
+std::size_t knob_position(Knob knob) {
+  const std::vector<Knob>& all = tradeoff_knobs();
   return static_cast<std::size_t>(std::find(all.begin(), all.end(), knob) - all.begin());
 }
 
@@ -57,23 +57,23 @@ TEST(QualityMeasurement, RowsArriveInKnobOrderWithOneBaseRowPerKnob) {
   }
   ASSERT_EQ(q.state(), QualityMeasurement::State::done) << q.error();
   // Two spheres, no teapot: every knob but tessellation.
-  const std::vector<std::string> expected{"spp",     "pow",        "precision",
-                                          "shading", "resolution", "shadows"};
+  const std::vector<Knob> expected{Knob::spp,     Knob::pow,        Knob::precision,
+                                   Knob::shading, Knob::resolution, Knob::shadows};
   EXPECT_EQ(q.knobs(), expected);
   EXPECT_EQ(q.knobs_done(), 6);
   for (std::size_t i = 1; i < q.rows().size(); ++i) {
     EXPECT_LE(knob_position(q.rows()[i - 1].knob), knob_position(q.rows()[i].knob));
   }
-  for (const std::string& knob : expected) {
+  for (const Knob knob : expected) {
     const std::vector<TradeoffRow> rows = rows_of_knob(q.rows(), knob);
-    ASSERT_FALSE(rows.empty()) << knob;
+    ASSERT_FALSE(rows.empty()) << to_string(knob);
     EXPECT_EQ(std::count_if(rows.begin(), rows.end(),
                             [](const TradeoffRow& r) { return r.base_setting; }),
               1)
-        << knob;
+        << to_string(knob);
   }
-  EXPECT_EQ(rows_of_knob(q.rows(), "spp").size(), 2u);         // spp_levels {1, 2}
-  EXPECT_EQ(rows_of_knob(q.rows(), "resolution").size(), 2u);  // divisors {2, 1}
+  EXPECT_EQ(rows_of_knob(q.rows(), Knob::spp).size(), 2u);         // spp_levels {1, 2}
+  EXPECT_EQ(rows_of_knob(q.rows(), Knob::resolution).size(), 2u);  // divisors {2, 1}
   EXPECT_EQ(q.width(), 32);
   EXPECT_EQ(q.height(), 24);  // the scene's 64 x 48 aspect
   EXPECT_FALSE(q.worker_alive());
@@ -85,10 +85,10 @@ TEST(QualityMeasurement, TeapotSceneListsEveryKnob) {
   q.wait();
   ASSERT_EQ(q.state(), QualityMeasurement::State::done) << q.error();
   EXPECT_EQ(q.knobs(), tradeoff_knobs());
-  for (const std::string& knob : tradeoff_knobs()) {
-    EXPECT_FALSE(rows_of_knob(q.rows(), knob).empty()) << knob;
+  for (const Knob knob : tradeoff_knobs()) {
+    EXPECT_FALSE(rows_of_knob(q.rows(), knob).empty()) << to_string(knob);
   }
-  EXPECT_EQ(rows_of_knob(q.rows(), "tessellation").size(), 2u);  // levels {2, 4}
+  EXPECT_EQ(rows_of_knob(q.rows(), Knob::tessellation).size(), 2u);  // levels {2, 4}
 }
 
 // Settings heavy enough (a 256-spp double reference at 256 px, five runs) that the measurement
@@ -134,7 +134,7 @@ TEST(QualityMeasurement, RestartReplacesTheRunningMeasurement) {
   q.wait();
   EXPECT_EQ(q.state(), QualityMeasurement::State::done);
   EXPECT_EQ(q.width(), 32);
-  EXPECT_EQ(rows_of_knob(q.rows(), "spp").size(), 2u);
+  EXPECT_EQ(rows_of_knob(q.rows(), Knob::spp).size(), 2u);
 }
 
 TEST(QualityMeasurement, BadOptionsFailWithTheMessage) {
@@ -168,7 +168,7 @@ TEST(QualityMeasurement, StaleOnlyWhenWhatWasMeasuredChanged) {
 TradeoffRow row(const std::string& knob, const std::string& setting, double ms, double pct,
                 double rmse = 0.0, bool reference = false) {
   TradeoffRow r;
-  r.knob = knob;
+  EXPECT_TRUE(parse_knob(knob, r.knob)) << knob;
   r.setting = setting;
   r.time_ms = ms;
   r.error.pct_pixels_off = pct;
@@ -188,17 +188,19 @@ TEST(QualityVerdict, OtherwiseTheCheapestAsGoodAsTheReferenceSetting) {
   // Reference c: 2% off, RMSE 0.010, 9 ms. b: 2.5% (<= 3) and 0.011 (<= 0.015) at 3 ms (<= 8.55):
   // as good and cheaper. a: 5% off, not as good. d: as good but 11 ms, dearer.
   const std::string v =
-      quality_verdict({row("k", "a", 1.0, 5.0, 0.02), row("k", "b", 3.0, 2.5, 0.011),
-                       row("k", "c", 9.0, 2.0, 0.010, true), row("k", "d", 11.0, 2.0, 0.010)});
+      quality_verdict({row("spp", "a", 1.0, 5.0, 0.02), row("spp", "b", 3.0, 2.5, 0.011),
+                       row("spp", "c", 9.0, 2.0, 0.010, true), row("spp", "d", 11.0, 2.0, 0.010)});
   EXPECT_EQ(v, "b: as good as c at 3.00 ms vs 9.00 ms");
   // b at 8.8 ms is less than 5% cheaper than c: keep the reference setting.
-  EXPECT_EQ(quality_verdict({row("k", "b", 8.8, 2.5, 0.011), row("k", "c", 9.0, 2.0, 0.010, true)}),
-            "keep c: nothing 5% cheaper is as good");
+  EXPECT_EQ(
+      quality_verdict({row("spp", "b", 8.8, 2.5, 0.011), row("spp", "c", 9.0, 2.0, 0.010, true)}),
+      "keep c: nothing 5% cheaper is as good");
   // b with 1.6x the RMSE is not as good.
-  EXPECT_EQ(quality_verdict({row("k", "b", 1.0, 2.5, 0.016), row("k", "c", 9.0, 2.0, 0.010, true)}),
-            "keep c: nothing 5% cheaper is as good");
+  EXPECT_EQ(
+      quality_verdict({row("spp", "b", 1.0, 2.5, 0.016), row("spp", "c", 9.0, 2.0, 0.010, true)}),
+      "keep c: nothing 5% cheaper is as good");
   // Without a reference row the most accurate row (e) is the anchor.
-  EXPECT_EQ(quality_verdict({row("k", "e", 20.0, 1.5, 0.010), row("k", "f", 10.0, 2.4, 0.012)}),
+  EXPECT_EQ(quality_verdict({row("spp", "e", 20.0, 1.5, 0.010), row("spp", "f", 10.0, 2.4, 0.012)}),
             "f: as good as e at 10 ms vs 20 ms");
   EXPECT_EQ(quality_verdict({}), "");
 }
