@@ -1,5 +1,7 @@
 #include "base/error.h"
 
+#include "base/printable_text.h"
+
 namespace gloss {
 
 namespace {
@@ -11,7 +13,7 @@ std::string format_input_error(const std::string& file, const std::string& messa
     if (column > 0) out += ":" + std::to_string(column);
   }
   if (!field.empty()) out += ": " + field;
-  return out + ": " + message;
+  return printable_text(out + ": " + message);
 }
 }  // namespace
 
@@ -23,5 +25,8 @@ InputError::InputError(std::string file, std::string message, int line, int colu
       m_field(std::move(field)),
       m_line(line),
       m_column(column) {}
+
+RuntimeFailure::RuntimeFailure(const std::string& message)
+    : std::runtime_error(printable_text(message)) {}
 
 }  // namespace gloss

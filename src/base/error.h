@@ -8,7 +8,9 @@ namespace gloss {
 
 // Bad input: unreadable, malformed or invalid scene/material/mesh file, impossible setting.
 // what() is one line: "FILE:LINE:COL: MESSAGE" when a position is known, "FILE: FIELD: MESSAGE"
-// when a field is known, else "FILE: MESSAGE".
+// when a field is known, else "FILE: MESSAGE". It passes through printable_text
+// (base/printable_text.h), so control characters and broken UTF-8 from the input (a name with ESC
+// or \r in it) reach no terminal raw; file(), message() and field() keep the bytes as given.
 class InputError : public std::runtime_error {
  public:
   InputError(std::string file, std::string message, int line = 0, int column = 0,
@@ -25,9 +27,10 @@ class InputError : public std::runtime_error {
 };
 
 // A failure that is not the input's fault (cannot write an output, out of memory, Embree error).
+// what() is message through printable_text, as for InputError.
 class RuntimeFailure : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit RuntimeFailure(const std::string& message);
 };
 
 }  // namespace gloss

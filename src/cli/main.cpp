@@ -9,16 +9,18 @@
 #include <CLI/CLI.hpp>
 
 #include "base/error.h"
+#include "base/printable_text.h"
 #include "base/version.h"
 #include "cli/commands.h"
 
 namespace {
 
-// Messages can span lines (nlohmann, CLI11); the contract is one line.
+// Messages can span lines (nlohmann, CLI11); the contract is one line, and no control character
+// of the input (a file name given on the command line) reaches the terminal.
 int report_error(std::string message, int status) {
   std::replace(message.begin(), message.end(), '\n', ' ');
   while (!message.empty() && message.back() == ' ') message.pop_back();
-  std::cerr << "error: " << message << "\n";
+  std::cerr << "error: " << gloss::printable_text(message) << "\n";
   return status;
 }
 

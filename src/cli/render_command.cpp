@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "base/error.h"
+#include "base/printable_text.h"
 #include "base/text_distance.h"
 #include "base/version.h"
 #include "cli/commands.h"
@@ -180,7 +181,8 @@ void run_render(RenderArgs args) {
   std::cout << "rendered " << args.scene << " (" << settings_summary(scene.render, args.precision)
             << ") in " << time_text << "\n";
   for (const std::string& path : writer.commit()) std::cout << "wrote " << path << "\n";
-  for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
+  for (const std::string& warning : warnings)
+    std::cerr << "warning: " << printable_text(warning) << "\n";
 }
 
 }  // namespace

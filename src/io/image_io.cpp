@@ -79,10 +79,12 @@ int parse_dimension(const std::string& path, const std::string& token, const cha
 
 struct PngError {
   char message[256] = "libpng could not allocate its state";
+  int system_error = 0;  // errno when libpng gave up (its "Write Error" after a short fwrite)
 };
 
 void on_png_error(png_structp png, png_const_charp message) {
   auto* error = static_cast<PngError*>(png_get_error_ptr(png));
+  error->system_error = errno;
   std::snprintf(error->message, sizeof error->message, "%s", message);
   png_longjmp(png, 1);
 }
@@ -301,9 +303,7 @@ void write_png(const std::string& path, const Image& image, bool srgb, const Tex
   std::vector<png_bytep> rows(image.height);
   for (int y = 0; y < image.height; ++y) rows[y] = rgb.data() + row_bytes * y;
 
-  write_atomically(path, [&](const std::string& temp_path) {
-    std::FILE* file = std::fopen(temp_path.c_str(), "wb");
-    if (file == nullptr) fail_write(path, std::strerror(errno));
+  write_stream_atomically(path, [&](std::FILE* file) {
     PngWriteJob job;
     job.file = file;
     job.width = image.width;
@@ -312,13 +312,13 @@ void write_png(const std::string& path, const Image& image, bool srgb, const Tex
     job.text = chunks.data();
     job.text_count = static_cast<int>(chunks.size());
     job.srgb = srgb;
-    const bool encoded = run_png_write(job);
-    const bool flushed = std::fflush(file) == 0 && std::ferror(file) == 0;
-    const int flush_error = errno;
-    const bool closed = std::fclose(file) == 0;
-    if (!encoded) fail_write(path, job.error.message);
-    if (!flushed) fail_write(path, std::strerror(flush_error));
-    if (!closed) fail_write(path, std::strerror(errno));
+    errno = 0;
+    if (run_png_write(job)) return;
+    // A short fwrite is libpng's "Write Error"; the stream's errno says why (ENOSPC: disk full).
+    if (std::ferror(file) != 0 && job.error.system_error != 0) {
+      throw_write_error(path, job.error.system_error);
+    }
+    fail_write(path, job.error.message);
   });
 }
 

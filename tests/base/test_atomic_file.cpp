@@ -1,7 +1,12 @@
 #include "base/atomic_file.h"
 
+#include <signal.h>
+#include <sys/mount.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -146,6 +151,81 @@ TEST(AtomicFile, ReadTextFileOfMissingFileOrFolderThrowsInputErrorNamingThePath)
     EXPECT_NE(error.message().find("cannot read"), std::string::npos) << error.message();
   }
   EXPECT_THROW(read_text_file(folder.path().string()), InputError);
+}
+
+// A writer killed mid-write (kill -9 of a render) leaves no temporary behind.
+TEST(AtomicFile, KilledWriterLeavesNoTemporary) {
+  ScratchFolder folder;
+  const std::string path = folder.file("big.png");
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    write_stream_atomically(path, [](std::FILE* file) {
+      const std::string chunk(1 << 20, 'x');
+      std::fwrite(chunk.data(), 1, chunk.size(), file);
+      std::fflush(file);
+      ::raise(SIGKILL);
+    });
+    ::_exit(0);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  EXPECT_TRUE(folder.entries().empty());
+}
+
+// Where a named temporary was left (a file system without O_TMPFILE, an outside program's
+// writer), the next write of the same target removes it once its process is gone.
+TEST(AtomicFile, StaleTemporaryOfADeadProcessIsRemovedByTheNextWrite) {
+  ScratchFolder folder;
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) ::_exit(0);
+  ASSERT_EQ(::waitpid(child, nullptr, 0), child);
+  const std::string stale = ".out.txt.tmp-" + std::to_string(child) + "-0";
+  const std::string alive = ".out.txt.tmp-" + std::to_string(::getpid()) + "-99999";
+  const std::string other = ".other.txt.tmp-" + std::to_string(child) + "-0";
+  for (const std::string& name : {stale, alive, other}) std::ofstream(folder.file(name)) << "old";
+  write_atomically(folder.file("out.txt"),
+                   [](const std::string& temp_path) { std::ofstream(temp_path) << "new"; });
+  EXPECT_EQ(folder.entries(), (std::vector<std::string>{other, alive, "out.txt"}));
+}
+
+TEST(AtomicFile, FullDiskSaysSo) {
+  try {
+    throw_write_error("out.png", ENOSPC);
+  } catch (const RuntimeFailure& error) {
+    EXPECT_STREQ(error.what(), "disk full writing out.png");
+  }
+  try {
+    throw_write_error("out.png", EACCES);
+  } catch (const RuntimeFailure& error) {
+    EXPECT_STREQ(error.what(), "cannot write out.png: Permission denied");
+  }
+}
+
+// A real full file system: a 64 KiB tmpfs. Needs mount rights (root); skipped without them.
+TEST(AtomicFile, WriteToAFullFileSystemSaysDiskFullAndLeavesNothing) {
+  ScratchFolder folder;
+  const std::string mount_point = folder.file("small");
+  std::filesystem::create_directory(mount_point);
+  if (::mount("tmpfs", mount_point.c_str(), "tmpfs", 0, "size=64k") != 0) {
+    GTEST_SKIP() << "cannot mount a tmpfs here: " << std::strerror(errno);
+  }
+  const std::string path = mount_point + "/out.txt";
+  std::string message;
+  try {
+    write_text_atomically(path, std::string(1 << 20, 'x'));
+  } catch (const RuntimeFailure& error) {
+    message = error.what();
+  }
+  std::vector<std::string> left;
+  for (const auto& entry : std::filesystem::directory_iterator(mount_point)) {
+    left.push_back(entry.path().filename().string());
+  }
+  ::umount(mount_point.c_str());
+  EXPECT_EQ(message, "disk full writing " + path);
+  EXPECT_TRUE(left.empty());
 }
 
 }  // namespace
