@@ -12,6 +12,7 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "scene/render_settings.h"
 
 namespace gloss {
 
@@ -346,6 +347,14 @@ Png8 read_png(const std::string& path) {
     throw InputError(path, "PNG does not decode to 8-bit RGB");
   }
 
+  // The header's size is the file's word: refused before the pixels are allocated, with the
+  // renderer's own pixel limit, so a 1000000x1000000 header is an InputError, not bad_alloc.
+  const long long pixels = static_cast<long long>(job.width) * job.height;
+  if (pixels > kMaxImagePixels) {
+    throw InputError(path, "PNG is " + std::to_string(job.width) + "x" +
+                               std::to_string(job.height) + ", more than the limit of " +
+                               std::to_string(kMaxImagePixels) + " pixels");
+  }
   Png8 png;
   png.width = job.width;
   png.height = job.height;

@@ -17,7 +17,9 @@ void byte_offset_to_line_column(const std::string& text, std::size_t offset, int
 // Parses text as JSON; on a syntax error or truncated text throws InputError(file, message, line,
 // column) of the last character the parser read: the offending character, or the end of the
 // offending token (a misplaced string is reported at its closing quote). Truncated text is
-// reported just past its end. Object keys come out sorted.
+// reported just past its end. Any other exception of the JSON library (a number such as 1e400
+// that overflows a double) is an InputError too, at the offending token. Object keys come out
+// sorted.
 nlohmann::json parse_json_text(const std::string& text, const std::string& file);
 
 // As parse_json_text, but objects keep the file's key order (for lists the user arranged).

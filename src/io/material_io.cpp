@@ -14,6 +14,7 @@
 #include "io/field_json.h"
 #include "io/json_location.h"
 #include "io/material_json.h"
+#include "io/name_escape.h"
 #include "io/preset_table.h"
 #include "scene/fields.h"
 #include "scene/validation.h"
@@ -107,11 +108,13 @@ const Field<Material>& mtl_field(const std::string& keyword) {
   return *find_field(material_fields(), key);
 }
 
-// Names must survive a write and a read: newmtl takes the rest of the line, trimmed.
-void check_names(const std::string& path, const std::vector<NamedMaterial>& materials) {
+// Names must survive a write and a read. MTL: newmtl takes the rest of the line, trimmed. JSON
+// holds any name but the empty one (escaped, io/name_escape.h).
+void check_names(const std::string& path, const std::vector<NamedMaterial>& materials, bool mtl) {
   for (std::size_t i = 0; i < materials.size(); ++i) {
     const std::string& name = materials[i].first;
-    if (name.empty() || trim(name) != name || name.find_first_of("\r\n") != std::string::npos) {
+    const bool mtl_safe = trim(name) == name && name.find_first_of("\r\n") == std::string::npos;
+    if (name.empty() || (mtl && !mtl_safe)) {
       throw RuntimeFailure("cannot write " + path + ": invalid material name '" + name + "'");
     }
     for (std::size_t j = 0; j < i; ++j) {
@@ -151,11 +154,11 @@ Material material_from_json(const nlohmann::json& value, const std::string& file
 }
 
 void save_materials_json(const std::string& path, const std::vector<NamedMaterial>& materials) {
-  check_names(path, materials);
+  check_names(path, materials, false);
   nlohmann::ordered_json document;
   document["materials"] = nlohmann::ordered_json::object();
   for (const auto& [name, material] : materials) {
-    document["materials"][name] = material_to_json(material);
+    document["materials"][escape_name(name)] = material_to_json(material);
   }
   write_text_atomically(path, document.dump(2) + "\n");
 }
@@ -172,14 +175,19 @@ std::vector<NamedMaterial> load_materials_json(const std::string& path) {
   std::vector<NamedMaterial> materials;
   for (const auto& item : document["materials"].items()) {
     const std::string field = child_path("materials", item.key());
-    materials.emplace_back(item.key(),
-                           material_from_json(nlohmann::json(item.value()), path, field));
+    if (item.key().empty()) reader.fail("materials", "a material name must not be empty");
+    const std::string name = unescape_name(item.key());
+    for (const NamedMaterial& earlier : materials) {
+      // "\\xE6" and "\\xe6" are one name.
+      if (earlier.first == name) fail_field(path, field, "duplicate material name");
+    }
+    materials.emplace_back(name, material_from_json(nlohmann::json(item.value()), path, field));
   }
   return materials;
 }
 
 void save_mtl(const std::string& path, const std::vector<NamedMaterial>& materials) {
-  check_names(path, materials);
+  check_names(path, materials, true);
   auto colour_line = [](const char* keyword, const glm::vec3& c) {
     return std::string(keyword) + " " + float_text(c.x) + " " + float_text(c.y) + " " +
            float_text(c.z) + "\n";

@@ -7,6 +7,8 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "io/json_location.h"
+#include "io/name_escape.h"
 #include "io/scene_loader.h"
 
 namespace gloss {
@@ -30,31 +32,35 @@ std::string recovery_text(const Scene& scene, int selected_object) {
   nlohmann::json j;
   j["gloss_recovery"] = kRecoveryVersion;
   j["saved_at"] = local_time_text();
-  j["scene_path"] = scene.path;
+  j["scene_path"] = escape_name(scene.path);
   j["selected_object"] = selected_object;
   j["scene"] = nlohmann::json::parse(scene_to_json_text(scene));
   return j.dump(2) + "\n";
 }
 
 Recovery parse_recovery(const std::string& text, const std::string& file) {
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(file, std::string("not a recovery file: ") + e.what());
-  }
-  if (!j.is_object() || j.value("gloss_recovery", 0) != kRecoveryVersion || !j.contains("scene") ||
-      !j["scene"].is_object()) {
+  const nlohmann::json j = parse_json_text(text, file);
+  const auto version = j.is_object() ? j.find("gloss_recovery") : j.end();
+  if (!j.is_object() || version == j.end() || *version != kRecoveryVersion ||
+      !j.contains("scene") || !j["scene"].is_object()) {
     throw InputError(
         file, "not a gloss recovery file (version " + std::to_string(kRecoveryVersion) + ")");
   }
   Recovery recovery;
-  const std::string scene_path = j.value("scene_path", std::string());
+  std::string scene_path;
+  try {
+    scene_path = unescape_name(j.value("scene_path", std::string()));
+    recovery.selected_object = j.value("selected_object", -1);
+    recovery.saved_at = j.value("saved_at", std::string());
+  } catch (const nlohmann::json::exception& error) {
+    // A value of the wrong type (type_error 302) names no field; these three are the only ones.
+    throw InputError(file, std::string("scene_path, selected_object or saved_at has the wrong "
+                                       "type (") +
+                               error.what() + ")");
+  }
   // The scene's relative paths (meshes) resolve against the file the session had open.
   recovery.scene = parse_scene(j["scene"].dump(), scene_path.empty() ? file : scene_path);
   recovery.scene.path = scene_path;
-  recovery.selected_object = j.value("selected_object", -1);
-  recovery.saved_at = j.value("saved_at", std::string());
   return recovery;
 }
 

@@ -11,6 +11,7 @@
 
 #include "io/field_json.h"
 #include "io/material_json.h"
+#include "io/name_escape.h"
 #include "scene/fields.h"
 
 namespace gloss {
@@ -84,10 +85,10 @@ Json object_json(const Object& object, const std::string& material_name) {
   const bool scaled = object.type == ObjectType::teapot || object.type == ObjectType::mesh;
   Json j;
   j["type"] = to_string(object.type);
-  j["name"] = object.name;
+  j["name"] = escape_name(object.name);
   if (object.type == ObjectType::mesh) {
-    j["file"] = p.file;
-    if (!p.group.empty()) j["group"] = p.group;
+    j["file"] = escape_name(p.file);
+    if (!p.group.empty()) j["group"] = escape_name(p.group);
   }
   // Optional placement fields are written only when they differ from their defaults.
   if (placed && p.position != defaults.position) j["position"] = vec3_json(p.position);
@@ -112,7 +113,7 @@ Json object_json(const Object& object, const std::string& material_name) {
     j["tessellation"] = p.tessellation;
   }
   if (scaled && p.smooth != defaults.smooth) j["smooth"] = p.smooth;
-  j["material"] = material_name;
+  j["material"] = escape_name(material_name);
   return j;
 }
 
@@ -136,7 +137,7 @@ std::string scene_to_json_text(const Scene& scene) {
   });
   root["materials"] = Json::object();
   for (std::size_t i : order) {
-    root["materials"][scene.material_names[i]] = material_to_json(scene.materials[i]);
+    root["materials"][escape_name(scene.material_names[i])] = material_to_json(scene.materials[i]);
   }
   root["objects"] = Json::array();
   for (const Object& object : scene.objects) {

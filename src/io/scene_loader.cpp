@@ -9,6 +9,7 @@
 #include "io/field_json.h"
 #include "io/json_location.h"
 #include "io/material_json.h"
+#include "io/name_escape.h"
 #include "io/scene_json_reader.h"
 #include "io/scene_object_reader.h"
 #include "scene/fields.h"
@@ -16,49 +17,6 @@
 namespace gloss {
 
 namespace {
-
-// A SAX pass that only records where parsing stops and on which token. json_location reports
-// syntax errors; this finds values nlohmann refuses after lexing them, such as 1e999 (number
-// overflow, an out_of_range exception without a position).
-class ErrorLocator : public nlohmann::json_sax<nlohmann::json> {
- public:
-  bool null() override { return true; }
-  bool boolean(bool) override { return true; }
-  bool number_integer(number_integer_t) override { return true; }
-  bool number_unsigned(number_unsigned_t) override { return true; }
-  bool number_float(number_float_t, const string_t&) override { return true; }
-  bool string(string_t&) override { return true; }
-  bool binary(binary_t&) override { return true; }
-  bool start_object(std::size_t) override { return true; }
-  bool key(string_t&) override { return true; }
-  bool end_object() override { return true; }
-  bool start_array(std::size_t) override { return true; }
-  bool end_array() override { return true; }
-  bool parse_error(std::size_t position, const std::string& token,
-                   const nlohmann::detail::exception&) override {
-    // position counts the characters read, up to the end of the offending token.
-    start = position >= token.size() ? position - token.size() : 0;
-    found = true;
-    return false;
-  }
-  std::size_t start = 0;
-  bool found = false;
-};
-
-nlohmann::json parse_scene_json(const std::string& text, const std::string& path) {
-  try {
-    return parse_json_text(text, path);
-  } catch (const nlohmann::json::exception& error) {
-    const std::string what = error.what();
-    const std::size_t prefix = what.find("] ");
-    const std::string message = prefix == std::string::npos ? what : what.substr(prefix + 2);
-    ErrorLocator locator;
-    nlohmann::json::sax_parse(text, &locator);
-    int line = 0, column = 0;
-    if (locator.found) byte_offset_to_line_column(text, locator.start, line, column);
-    throw InputError(path, message, line, column);
-  }
-}
 
 Camera read_camera(const JsonObjectReader& top) {
   Camera camera;
@@ -91,8 +49,9 @@ MaterialMap read_materials(const JsonObjectReader& top) {
   if (!block.is_object()) top.fail("materials", "expected an object {name: material, ...}");
   for (const auto& item : block.items()) {
     if (item.key().empty()) top.fail("materials", "a material name must not be empty");
-    materials.emplace(item.key(), material_from_json(item.value(), top.file(),
-                                                     child_path("materials", item.key())));
+    materials.emplace(
+        unescape_name(item.key()),
+        material_from_json(item.value(), top.file(), child_path("materials", item.key())));
   }
   return materials;
 }
@@ -132,7 +91,7 @@ void resolve_materials(const std::string& file, const MaterialMap& materials,
 
 Scene parse_scene(const std::string& text, const std::string& path,
                   std::vector<std::string>* warnings) {
-  const nlohmann::json root = parse_scene_json(text, path);
+  const nlohmann::json root = parse_json_text(text, path);
   const JsonObjectReader top(
       root, path, "",
       allowed_keys(scene_fields(), {"camera", "lights", "materials", "objects", "render"}));

@@ -8,6 +8,7 @@
 
 #include "base/error.h"
 #include "base/text_distance.h"
+#include "io/name_escape.h"
 #include "io/obj_loader.h"
 #include "io/scene_json_reader.h"
 #include "io/teapot_reader.h"
@@ -171,9 +172,10 @@ void read_scene_object(const nlohmann::json& value, std::size_t index,
 
   Object object;
   object.type = type;
-  object.name = reader.string("name", to_string(type) + std::to_string(index));
-  const std::string material =
-      type == ObjectType::mesh ? reader.string("material", "") : reader.string("material");
+  // Names and paths are bytes, escaped where they are not UTF-8 (io/name_escape.h).
+  object.name = unescape_name(reader.string("name", to_string(type) + std::to_string(index)));
+  const std::string material = unescape_name(
+      type == ObjectType::mesh ? reader.string("material", "") : reader.string("material"));
   if (reader.has("material") && material.empty()) reader.fail("material", "must not be empty");
   ShapeParams& params = object.params;
   Mesh mesh;
@@ -226,9 +228,9 @@ void read_scene_object(const nlohmann::json& value, std::size_t index,
       transform_mesh(mesh, placement(params));
       break;
     case ObjectType::mesh:
-      params.file = reader.string("file");
+      params.file = unescape_name(reader.string("file"));
       if (params.file.empty()) reader.fail("file", "must not be empty");
-      params.group = reader.string("group", "");
+      params.group = unescape_name(reader.string("group", ""));
       params.position = reader.vec3("position", params.position);
       params.rotate_y = reader.number("rotate_y", params.rotate_y);
       params.scale = read_scale(reader);

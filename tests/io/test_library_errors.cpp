@@ -1,0 +1,76 @@
+// Every reader turns the libraries' exceptions into an InputError naming the file and the place
+// (docs/spec/scene-and-cli.md: bad input is exit 2 with one line naming the file).
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "base/error.h"
+#include "io/material_io.h"
+#include "io/recovery_file.h"
+#include "io/scene_loader.h"
+#include "support/scratch_folder.h"
+
+namespace gloss {
+namespace {
+
+template <class F>
+InputError input_error_of(F read) {
+  try {
+    read();
+  } catch (const InputError& error) {
+    return error;
+  } catch (const std::exception& error) {
+    ADD_FAILURE() << "not an InputError: " << error.what();
+  }
+  ADD_FAILURE() << "nothing thrown";
+  return InputError("", "");
+}
+
+// 1e400 overflows a double: nlohmann throws out_of_range (406) without a position.
+TEST(LibraryErrors, MaterialsJsonNumberOutOfRangeIsAnInputErrorAtTheNumber) {
+  ScratchFolder folder;
+  const std::string path = folder.file("m.json");
+  std::ofstream(path) << "{\"materials\": {\n  \"a\": {\"shininess\": 1e400}\n}}\n";
+  const InputError error = input_error_of([&] { load_materials_json(path); });
+  EXPECT_EQ(error.file(), path);
+  EXPECT_EQ(error.line(), 2);
+  EXPECT_EQ(error.column(), 22);  // the '1' of 1e400
+  EXPECT_NE(error.message().find("1e400"), std::string::npos) << error.what();
+}
+
+TEST(LibraryErrors, SceneNumberOutOfRangeIsAnInputErrorAtTheNumber) {
+  const InputError error = input_error_of(
+      [] { parse_scene("{\"objects\": [],\n \"ambient\": [1e999, 0, 0]}", "s.json"); });
+  EXPECT_EQ(error.file(), "s.json");
+  EXPECT_EQ(error.line(), 2);
+  EXPECT_EQ(error.column(), 14);
+}
+
+TEST(LibraryErrors, RecoveryFileWithWrongTypesIsAnInputError) {
+  const std::string scene = R"({"objects": []})";
+  const InputError wrong_type = input_error_of([&] {
+    parse_recovery(R"({"gloss_recovery": 1, "selected_object": "two", "scene": )" + scene + "}",
+                   "r.json");
+  });
+  EXPECT_EQ(wrong_type.file(), "r.json");
+  const InputError version_string = input_error_of(
+      [&] { parse_recovery(R"({"gloss_recovery": "1", "scene": )" + scene + "}", "r.json"); });
+  EXPECT_EQ(version_string.file(), "r.json");
+  const InputError overflow = input_error_of(
+      [&] { parse_recovery(R"({"gloss_recovery": 1e999, "scene": )" + scene + "}", "r.json"); });
+  EXPECT_EQ(overflow.line(), 1);
+}
+
+TEST(LibraryErrors, EmptyOrDuplicateMaterialNamesInAMaterialsFileAreRefusedByTheReader) {
+  ScratchFolder folder;
+  const std::string path = folder.file("m.json");
+  std::ofstream(path) << R"({"materials": {"": {}}})";
+  EXPECT_EQ(input_error_of([&] { load_materials_json(path); }).field(), "materials");
+  std::ofstream(path) << R"({"materials": {"a\\xE6": {}, "a\\xe6": {}}})";
+  EXPECT_NE(input_error_of([&] { load_materials_json(path); }).message().find("duplicate"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace gloss
