@@ -1,5 +1,8 @@
 #include "io/scene_object_reader.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <utility>
@@ -12,6 +15,7 @@
 #include "io/obj_loader.h"
 #include "io/scene_json_reader.h"
 #include "io/teapot_reader.h"
+#include "scene/limits.h"
 #include "scene/shapes.h"
 
 namespace gloss {
@@ -73,8 +77,27 @@ glm::mat4 placement(const ShapeParams& params) {
   return glm::scale(m, params.scale);
 }
 
+// Placed vertices within the coordinate limit (scene/limits.h), where float arithmetic on them
+// stays finite; a teapot scaled by 1e30 is refused here, naming the object.
+void check_placed_bounds(const Mesh& mesh, const ObjectReadContext& context,
+                         const std::string& path) {
+  glm::vec3 lo, hi;
+  if (!mesh_bounds(mesh, lo, hi)) return;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double reach = std::max(std::fabs(static_cast<double>(lo[axis])),
+                                  std::fabs(static_cast<double>(hi[axis])));
+    if (!(reach <= kMaxCoordinate)) {
+      char text[96];
+      std::snprintf(text, sizeof text, "placed vertices reach %g on axis %d, beyond the limit %g",
+                    reach, axis, kMaxCoordinate);
+      fail_field(context.file, path, text);
+    }
+  }
+}
+
 // Drops zero-area triangles; degenerate input is a warning, never an error.
 void drop_degenerate(Mesh& mesh, const ObjectReadContext& context, const std::string& path) {
+  check_placed_bounds(mesh, context, path);
   const std::size_t dropped = drop_degenerate_triangles(mesh);
   if (dropped > 0 && context.warnings != nullptr) {
     context.warnings->push_back(context.file + ": " + path + ": dropped " +

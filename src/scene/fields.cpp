@@ -1,5 +1,7 @@
 #include "scene/fields.h"
 
+#include "scene/limits.h"
+
 namespace gloss {
 
 namespace {
@@ -39,6 +41,7 @@ const FieldTable<PointLight>& light_fields() {
     constexpr FieldKind colour = FieldKind::colour;
     FieldTable<PointLight> t;
     t.push_back(vec3_field<&PointLight::position>(FieldKind::vector, "position", "position")
+                    .range(-kMaxCoordinate, kMaxCoordinate)
                     .ui(-1e4, 1e4)
                     .invalidates(ChangeClass::light)
                     .needed()
@@ -112,12 +115,15 @@ const FieldTable<Camera>& camera_fields() {
     constexpr FieldKind vector = FieldKind::vector;
     FieldTable<Camera> t;
     t.push_back(vec3_field<&Camera::eye>(vector, "eye", "eye")
+                    .range(-kMaxCoordinate, kMaxCoordinate)
                     .ui(-1e4, 1e4)
                     .explain("camera position, world units"));
     t.push_back(vec3_field<&Camera::target>(vector, "target", "target")
+                    .range(-kMaxCoordinate, kMaxCoordinate)
                     .ui(-1e4, 1e4)
                     .explain("the point looked at; must differ from the eye"));
     t.push_back(vec3_field<&Camera::up>(vector, "up", "up")
+                    .range(-kMaxCoordinate, kMaxCoordinate)
                     .ui(-1.0, 1.0)
                     .explain("up hint; not parallel to target - eye"));
     t.push_back(scalar_field<&Camera::fov_y>(FieldKind::number, "fov_y", "field of view")

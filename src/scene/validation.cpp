@@ -2,12 +2,14 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 
 #include <glm/geometric.hpp>
 
 #include "base/field_path.h"
 #include "scene/fields.h"
+#include "scene/limits.h"
 
 namespace gloss {
 
@@ -32,16 +34,43 @@ void check_fields(const std::string& file, const std::string& path, const FieldT
   }
 }
 
-// The rules that tie fields together: the view direction and the up hint.
-void check_camera(const std::string& file, const Camera& camera) {
-  // In double so that the test is exact for any finite float input.
+template <class T>
+bool finite_vector(const glm::tvec3<T>& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// The camera's frame built in the precision T a renderer builds it in (float: the fast
+// renderer; double: the reference path), by the renderers' own make_camera_basis, so what passes
+// here cannot fail there. Throws naming the field.
+template <class T>
+void check_camera_in(const std::string& file, const Camera& camera, const char* precision) {
   const glm::dvec3 view = glm::dvec3(camera.target) - glm::dvec3(camera.eye);
-  const glm::dvec3 up(camera.up);
-  if (glm::length(view) == 0.0) fail_field(file, "camera.target", "must differ from camera.eye");
-  if (glm::length(up) == 0.0) fail_field(file, "camera.up", "must not be zero");
-  if (glm::length(glm::cross(glm::normalize(view), glm::normalize(up))) < 1e-6) {
-    fail_field(file, "camera.up", "must not be parallel to the view direction (target - eye)");
+  const std::string distance = number_text(glm::length(view));
+  try {
+    const CameraBasis<T> basis = make_camera_basis<T>(camera, 1, 1);
+    if (!finite_vector(basis.forward) || !finite_vector(basis.right) || !finite_vector(basis.up)) {
+      throw std::invalid_argument("up is parallel to the view direction");
+    }
+  } catch (const std::invalid_argument& error) {
+    if (std::string(error.what()).find("coincide") != std::string::npos) {
+      fail_field(file, "camera.target",
+                 glm::length(view) == 0.0 ? std::string("must differ from camera.eye")
+                                          : "is " + distance + " from camera.eye, too close for " +
+                                                precision + " arithmetic to give a view direction");
+    }
+    fail_field(file, "camera.up",
+               std::string("must not be parallel to the view direction (target - eye) nor too "
+                           "short for ") +
+                   precision + " arithmetic, got length " +
+                   number_text(glm::length(glm::dvec3(camera.up))));
   }
+}
+
+// The rules that tie fields together: the view direction and the up hint. The fields' own
+// ranges (|x| <= kMaxCoordinate) have been checked, so the differences are finite in float.
+void check_camera(const std::string& file, const Camera& camera) {
+  check_camera_in<float>(file, camera, "float");
+  check_camera_in<double>(file, camera, "double");
 }
 
 // The pixel budget: each side within range is not enough.
@@ -71,13 +100,17 @@ void check_object(const Scene& scene, std::size_t index) {
                "material index " + std::to_string(object.material) + " is out of range");
   }
   if (object.type == ObjectType::sphere) {
-    if (!(std::isfinite(object.center.x) && std::isfinite(object.center.y) &&
-          std::isfinite(object.center.z))) {
-      fail_field(file, field + ".center", "every component must be a finite number");
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!(std::fabs(object.center[axis]) <= kMaxCoordinate)) {
+        fail_field(file, index_path(field + ".center", axis),
+                   "must be a finite number from " + number_text(-kMaxCoordinate) + " to " +
+                       number_text(kMaxCoordinate) + ", got " + number_text(object.center[axis]));
+      }
     }
-    if (!(std::isfinite(object.radius) && object.radius > 0.0f)) {
+    if (!(object.radius > 0.0f && object.radius <= kMaxCoordinate)) {
       fail_field(file, field + ".radius",
-                 "must be a finite number > 0, got " + number_text(object.radius));
+                 "must be a finite number > 0 and at most " + number_text(kMaxCoordinate) +
+                     ", got " + number_text(object.radius));
     }
   } else if (!object.mesh) {
     fail_field(file, field, "has no geometry");

@@ -239,5 +239,38 @@ TEST(SceneLoaderErrors, MissingSceneFileNamesThePath) {
   }
 }
 
+// Validation computes in the renderer's float: what passes cannot fail later as "eye and target
+// coincide" with no field (docs/spec/scene-and-cli.md, "Numeric limits").
+TEST(SceneLoaderErrors, CoordinatesBeyondFloatArithmeticAreRefusedNamingTheField) {
+  // 1.85e19 squared overflows a float: the renderer's |target - eye| was infinite.
+  expect_field_error(with_camera(R"({"eye": [0, 0, 1.85e19], "target": [0, 0, 0]})"),
+                     "camera.eye[2]", "from -1e+15 to 1e+15");
+  expect_field_error(with_camera(R"({"eye": [0, 0, 5], "target": [-2e15, 0, 0]})"),
+                     "camera.target[0]", "got -2e+15");
+  expect_field_error(with_light(R"({"position": [0, 1e16, 0]})"), "lights[0].position[1]",
+                     "from -1e+15 to 1e+15");
+  expect_field_error(with_object(R"({"type": "sphere", "center": [3e38, 0, 0], "radius": 1,
+                                     "material": "m"})"),
+                     "objects[0].center[0]", "got 3e+38");
+  expect_field_error(with_object(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1e20,
+                                     "material": "m"})"),
+                     "objects[0].radius", "at most 1e+15");
+  expect_field_error(with_object(R"({"type": "box", "min": [0, 0, 0], "max": [1, 1, 2e15],
+                                     "material": "m"})"),
+                     "objects[0]", "placed vertices reach 2e+15 on axis 2");
+}
+
+TEST(SceneLoaderErrors, DistancesThatCollapseInFloatAreRefusedNamingTheField) {
+  // 1e-30 apart: distinct floats, but (1e-30)^2 underflows to 0 in float, so the renderer's
+  // view direction had no length.
+  expect_field_error(with_camera(R"({"eye": [0, 0, 1e-30], "target": [0, 0, 0]})"), "camera.target",
+                     "too close for float arithmetic");
+  // An up hint of length 1e-30: its cross product with the view direction underflows likewise.
+  expect_field_error(with_camera(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1e-30, 0]})"),
+                     "camera.up", "too short for float");
+  EXPECT_NO_THROW(
+      parse_scene(with_camera(R"({"eye": [0, 0, 1e15], "target": [0, 0, -1e15]})"), "bad.json"));
+}
+
 }  // namespace
 }  // namespace gloss
