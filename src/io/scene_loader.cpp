@@ -5,6 +5,7 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "base/memory_budget.h"
 #include "base/text_distance.h"
 #include "io/field_json.h"
 #include "io/json_location.h"
@@ -110,6 +111,9 @@ Scene parse_scene(const std::string& text, const std::string& path,
   context.file = path;
   context.base_dir = std::filesystem::path(path).parent_path().string();  // "" = current folder
   context.warnings = warnings;
+  std::uint64_t claimed_bytes = 0;
+  context.budget_bytes = memory_budget_bytes();
+  context.claimed_bytes = &claimed_bytes;
   std::vector<PendingObject> pending;
   for (std::size_t i = 0; i < objects.size(); ++i) {
     read_scene_object(objects[i], i, context, materials, pending);

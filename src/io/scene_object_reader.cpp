@@ -10,12 +10,14 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "base/error.h"
+#include "base/memory_budget.h"
 #include "base/text_distance.h"
 #include "io/name_escape.h"
 #include "io/obj_loader.h"
 #include "io/scene_json_reader.h"
 #include "io/teapot_reader.h"
 #include "scene/limits.h"
+#include "scene/memory_estimate.h"
 #include "scene/shapes.h"
 
 namespace gloss {
@@ -95,6 +97,21 @@ void check_placed_bounds(const Mesh& mesh, const ObjectReadContext& context,
   }
 }
 
+// Adds an object's triangles to the scene's claim; refuses the object that passes the budget.
+// what describes the object for the message ("teapot, tessellation 64").
+void claim_geometry(const ObjectReadContext& context, const std::string& path,
+                    const std::string& what, std::uint64_t triangles) {
+  if (context.claimed_bytes == nullptr) return;
+  const std::uint64_t total = *context.claimed_bytes + geometry_bytes(triangles);
+  if (total > context.budget_bytes) {
+    fail_field(context.file, path,
+               what + ", " + std::to_string(triangles) + " triangles: the scene needs ~" +
+                   std::to_string(megabytes(total)) + " MB with it, budget " +
+                   memory_budget_text());
+  }
+  *context.claimed_bytes = total;
+}
+
 // Drops zero-area triangles; degenerate input is a warning, never an error.
 void drop_degenerate(Mesh& mesh, const ObjectReadContext& context, const std::string& path) {
   check_placed_bounds(mesh, context, path);
@@ -155,6 +172,10 @@ void read_mesh(const JsonObjectReader& reader, const ObjectReadContext& context,
   }
 
   const glm::mat4 transform = placement(params);
+  std::uint64_t triangles = 0;
+  for (const ObjPart* part : parts) triangles += part->mesh.triangles.size();
+  // The file is read by now (its size bounds what that took); its copies are not made yet.
+  claim_geometry(context, reader.path(), "mesh " + params.file, triangles);
   auto emit = [&](Mesh mesh, Object object, std::string material_name) {
     transform_mesh(mesh, transform);
     drop_degenerate(mesh, context, reader.path());
@@ -247,6 +268,9 @@ void read_scene_object(const nlohmann::json& value, std::size_t index,
       params.scale = read_scale(reader);
       params.tessellation = static_cast<int>(reader.integer("tessellation", 8, 1, 64));
       params.smooth = reader.boolean("smooth", params.smooth);
+      // Counted before tessellating: 1000 teapots at 64 would otherwise allocate until bad_alloc.
+      claim_geometry(context, path, "teapot, tessellation " + std::to_string(params.tessellation),
+                     teapot_triangles(params.tessellation));
       mesh = tessellate_patches(teapot_patches(), params.tessellation, params.smooth);
       transform_mesh(mesh, placement(params));
       break;
@@ -262,6 +286,8 @@ void read_scene_object(const nlohmann::json& value, std::size_t index,
       return;
   }
   drop_degenerate(mesh, context, path);
+  if (type != ObjectType::teapot)
+    claim_geometry(context, path, to_string(type), mesh.triangles.size());
   object.mesh = std::make_shared<const Mesh>(std::move(mesh));
   out.push_back({std::move(object), material, reader.path("material")});
 }

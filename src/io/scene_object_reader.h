@@ -2,6 +2,7 @@
 // The "objects" entries of a scene file (docs/scene-format.md) turned into Objects with their
 // world-space geometry. Material names are resolved to indices by the caller, once every object
 // (and so every OBJ's MTL material) is known.
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -23,6 +24,11 @@ struct ObjectReadContext {
   std::string file;      // the scene file, for messages
   std::string base_dir;  // the folder relative paths resolve against; empty: the current one
   std::vector<std::string>* warnings = nullptr;
+  // The memory budget (base/memory_budget.h) and the geometry claimed by the objects read so far
+  // (scene/memory_estimate.h), both in bytes; an object that would pass the budget is refused
+  // before its triangles are made where their count is known beforehand (teapots).
+  std::uint64_t budget_bytes = UINT64_MAX;
+  std::uint64_t* claimed_bytes = nullptr;
 };
 
 // An object whose material is still a name. field is the path of the entry's "material" key.

@@ -8,8 +8,10 @@
 #include <glm/geometric.hpp>
 
 #include "base/field_path.h"
+#include "base/memory_budget.h"
 #include "scene/fields.h"
 #include "scene/limits.h"
+#include "scene/memory_estimate.h"
 
 namespace gloss {
 
@@ -117,6 +119,36 @@ void check_object(const Scene& scene, std::size_t index) {
   }
 }
 
+// The geometry and the render caches against the memory budget (base/memory_budget.h), before
+// a renderer allocates: the object that passes it, else the render settings, are named.
+void check_memory(const Scene& scene) {
+  const std::string& file = scene.path;
+  const std::uint64_t budget = memory_budget_bytes();
+  std::uint64_t total = 0;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const Object& object = scene.objects[i];
+    if (!object.mesh) continue;
+    total += geometry_bytes(object.mesh->triangles.size());
+    if (total > budget) {
+      fail_field(file, index_path("objects", i),
+                 std::string(to_string(object.type)) + ", " +
+                     std::to_string(object.mesh->triangles.size()) +
+                     " triangles: the scene needs ~" + std::to_string(megabytes(total)) +
+                     " MB with it, budget " + memory_budget_text());
+    }
+  }
+  const RenderSettings& r = scene.render;
+  const std::uint64_t render = render_bytes(r, scene.lights.size());
+  if (total + render > budget) {
+    fail_field(file, "render",
+               std::to_string(r.width) + "x" + std::to_string(r.height) + " at " +
+                   std::to_string(r.spp) + " spp with " + std::to_string(scene.lights.size()) +
+                   " light(s) needs ~" + std::to_string(megabytes(render)) + " MB besides ~" +
+                   std::to_string(megabytes(total)) + " MB of geometry, budget " +
+                   memory_budget_text());
+  }
+}
+
 }  // namespace
 
 void validate_scene(const Scene& scene) {
@@ -138,6 +170,7 @@ void validate_scene(const Scene& scene) {
     validate_material(file, child_path("materials", scene.material_names[i]), scene.materials[i]);
   }
   for (std::size_t i = 0; i < scene.objects.size(); ++i) check_object(scene, i);
+  check_memory(scene);
 }
 
 void validate_material(const std::string& file, const std::string& field,
