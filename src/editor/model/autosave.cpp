@@ -1,5 +1,6 @@
 #include "editor/model/autosave.h"
 
+#include <exception>
 #include <system_error>
 
 #include "base/atomic_file.h"
@@ -29,16 +30,35 @@ bool Autosaver::step(const CommandLayer& layer, int selected_object, double now_
   if (m_written_revision == m_seen_revision) return false;
   const bool quiet = now_s - m_last_change_s >= m_quiet_s;
   const bool overdue = m_first_change_s >= 0.0 && now_s - m_first_change_s >= m_max_delay_s;
-  if (!quiet && !overdue) return false;
+  const bool retry_due = m_retry_at_s >= 0.0 && now_s >= m_retry_at_s;
+  if (m_retry_at_s >= 0.0 ? !retry_due : (!quiet && !overdue)) return false;
 
-  m_written_revision = m_seen_revision;
-  m_first_change_s = -1.0;
   if (!layer.dirty()) {
     discard();
+    m_written_revision = m_seen_revision;
+    m_first_change_s = m_retry_at_s = -1.0;
+    m_failure.clear();
     return false;
   }
-  write_text_atomically(m_file.string(), recovery_text(layer.scene(), selected_object));
+  try {
+    write_text_atomically(m_file.string(), recovery_text(layer.scene(), selected_object));
+  } catch (const std::exception& error) {
+    // Any failure (the folder, the disk, a name the writer refused) leaves the edits unprotected:
+    // it is reported, not thrown, and the write is tried again.
+    m_failure = error.what();
+    ++m_failure_count;
+    m_retry_at_s = now_s + m_retry_s;
+    return false;
+  }
+  m_written_revision = m_seen_revision;
+  m_first_change_s = m_retry_at_s = -1.0;
+  m_failure.clear();
   return true;
+}
+
+std::string autosave_notice(const Autosaver& autosaver) {
+  if (autosaver.failure().empty()) return {};
+  return "AUTOSAVE FAILING, edits are not protected against a crash: " + autosaver.failure();
 }
 
 void Autosaver::discard() {

@@ -200,11 +200,16 @@ void run_frame(App& app) {
   }
   app.viewport.sync(app.commands.scene(), app.commands.revision(), app.view, frame_start);
   if (app.autosaver) {
-    try {
-      app.autosaver->step(app.commands, app.selected_object, frame_start);
-    } catch (const std::exception& e) {
-      app.notices.error(std::string("autosave failed: ") + e.what(), frame_start);
+    // A failure is announced once when it appears or changes; the status bar keeps it on screen
+    // (autosave_notice) until a write succeeds.
+    app.autosaver->step(app.commands, app.selected_object, frame_start);
+    const std::string& failure = app.autosaver->failure();
+    if (!failure.empty() && failure != app.autosave_failure_shown) {
+      app.notices.error("autosave failed: " + failure, frame_start);
+    } else if (failure.empty() && !app.autosave_failure_shown.empty()) {
+      app.notices.info("autosave works again", frame_start);
     }
+    app.autosave_failure_shown = failure;
   }
   update_title(app);
   if (glfwWindowShouldClose(app.window)) {

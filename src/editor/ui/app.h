@@ -78,6 +78,7 @@ struct App {
   RecentFiles recent;
   std::filesystem::path config_folder;
   std::optional<Autosaver> autosaver;
+  std::string autosave_failure_shown;        // the autosave failure already announced as a notice
   std::optional<Recovery> offered_recovery;  // a crashed session's document awaiting an answer
   std::unique_ptr<ScriptPlayer> script;
   std::vector<NamedMaterial> library;  // materials loaded from a file, applied on demand

@@ -28,6 +28,7 @@ struct Options {
   std::string scene_path;   // empty: the shipped default scene, else the built-in one
   std::string script_path;  // empty: interactive
   bool no_recovery = false;
+  std::string recovery_path;       // empty: default_recovery_file()
   int width = 1280, height = 800;  // window size, screen pixels
 };
 
@@ -61,6 +62,9 @@ int main(int argc, char** argv) {
                  "replay commands from FILE, one per line (docs/editor.md lists them)");
   cli.add_flag("--no-recovery", options.no_recovery,
                "neither offer nor write the crash-recovery file");
+  cli.add_option("--recovery-file", options.recovery_path,
+                 "autosave to FILE instead of the state folder's recovery.json; with --script, "
+                 "autosave runs too (to test it), without offering the file back");
   cli.add_option("--window-width", options.width, "window width, pixels")
       ->check(CLI::Range(320, 8192));
   cli.add_option("--window-height", options.height, "window height, pixels")
@@ -121,8 +125,13 @@ int main(int argc, char** argv) {
     App app(window, std::move(*scene));
     if (script) {
       app.script = std::make_unique<ScriptPlayer>(std::move(*script));
+      if (!options.recovery_path.empty()) {
+        app.autosaver.emplace(options.recovery_path, app.commands.revision());
+      }
     } else if (!options.no_recovery) {
-      const std::filesystem::path recovery_file = default_recovery_file();
+      const std::filesystem::path recovery_file =
+          options.recovery_path.empty() ? default_recovery_file()
+                                        : std::filesystem::path(options.recovery_path);
       try {
         app.offered_recovery = read_recovery(recovery_file);
       } catch (const std::exception& e) {

@@ -42,7 +42,12 @@ void draw_status_bar(App& app, ImVec2 pos, ImVec2 size) {
   ImGui::TextDisabled("| UI %.1f ms (max %.1f) | edit->image %.0f ms, full res %.0f ms",
                       app.frame_times.average(), app.frame_times.largest(), latency.first_image_ms,
                       latency.full_image_ms);
-  if (!app.notices.last.empty()) {
+  if (app.autosaver && !app.autosaver->failure().empty()) {
+    // Stays until a write succeeds: a crash now would lose the edits.
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "| %s",
+                       autosave_notice(*app.autosaver).c_str());
+  } else if (!app.notices.last.empty()) {
     ImGui::SameLine();
     ImGui::TextDisabled("| %s", app.notices.last.c_str());
   }

@@ -108,5 +108,50 @@ TEST(Autosave, TheFileIsWrittenAtomically) {
   EXPECT_EQ(files, 1u);
 }
 
+// A write that fails (here the state folder is a file) is reported on screen at once, not
+// thrown away: failure() and the notice say why, and the write is tried again until it works.
+TEST(Autosave, AFailingWriteSetsTheNoticeAndIsRetried) {
+  const std::filesystem::path dir = temp_folder("failing");
+  std::ofstream(dir / "state") << "a file where the folder should be";
+  const std::filesystem::path file = dir / "state" / "recovery.json";
+  CommandLayer layer(test::two_sphere_scene());
+  Autosaver autosaver(file, layer.revision(), 1.0, 10.0);
+  layer.execute(ApplyPreset{1, "gold"});
+  EXPECT_TRUE(autosave_notice(autosaver).empty());
+  EXPECT_FALSE(autosaver.step(layer, 1, 0.0));
+  bool written = true;
+  EXPECT_NO_THROW(written = autosaver.step(layer, 1, 1.25));
+  EXPECT_FALSE(written);
+  EXPECT_EQ(autosaver.failure_count(), 1);
+  EXPECT_EQ(autosaver.failure().rfind("cannot write " + file.string() + ": ", 0), 0u)
+      << autosaver.failure();
+  EXPECT_EQ(autosave_notice(autosaver).rfind("AUTOSAVE FAILING", 0), 0u);
+
+  EXPECT_FALSE(autosaver.step(layer, 1, 2.0));  // not again every frame
+  EXPECT_EQ(autosaver.failure_count(), 1);
+  std::filesystem::remove(dir / "state");
+  std::filesystem::create_directory(dir / "state");
+  EXPECT_TRUE(autosaver.step(layer, 1, 6.25));  // 5 s after the failure
+  EXPECT_TRUE(autosaver.failure().empty());
+  EXPECT_TRUE(autosave_notice(autosaver).empty());
+  EXPECT_TRUE(std::filesystem::exists(file));
+}
+
+// Names that are not UTF-8 (an MTL's "Terrain\xE6k") no longer make every autosave fail.
+TEST(Autosave, NamesThatAreNotUtf8AreAutosaved) {
+  const std::filesystem::path file = temp_folder("bytes") / "recovery.json";
+  Scene scene = test::two_sphere_scene();
+  scene.objects[0].name = "Terrain\xE6k";
+  scene.material_names[0] = "t/Terrain\xE6k";
+  CommandLayer layer(scene);
+  Autosaver autosaver(file, layer.revision(), 1.0, 10.0);
+  layer.execute(ApplyPreset{1, "gold"});
+  EXPECT_FALSE(autosaver.step(layer, 1, 0.0));
+  EXPECT_TRUE(autosaver.step(layer, 1, 1.25)) << autosaver.failure();
+  const std::optional<Recovery> recovery = read_recovery(file);
+  ASSERT_TRUE(recovery.has_value());
+  EXPECT_EQ(recovery->scene.objects[0].name, "Terrain\xE6k");
+}
+
 }  // namespace
 }  // namespace gloss
