@@ -58,7 +58,7 @@ bool Autosaver::step(const CommandLayer& layer, int selected_object, double now_
 
 std::string autosave_notice(const Autosaver& autosaver) {
   if (autosaver.failure().empty()) return {};
-  return "AUTOSAVE FAILING, edits are not protected against a crash: " + autosaver.failure();
+  return "AUTOSAVE FAILING (a crash would lose the edits): " + autosaver.failure();
 }
 
 void Autosaver::discard() {

@@ -21,6 +21,12 @@ void draw_status_bar(App& app, ImVec2 pos, ImVec2 size) {
     ImGui::End();
     return;
   }
+  if (app.autosaver && !app.autosaver->failure().empty()) {
+    // First, so no window width cuts it off; stays until a write succeeds.
+    ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s |",
+                       autosave_notice(*app.autosaver).c_str());
+    ImGui::SameLine();
+  }
   if (const RenderedFrame* frame = app.viewport.shown_frame()) {
     const FrameInfo& info = frame->info;
     const double rays_per_s =
@@ -42,12 +48,7 @@ void draw_status_bar(App& app, ImVec2 pos, ImVec2 size) {
   ImGui::TextDisabled("| UI %.1f ms (max %.1f) | edit->image %.0f ms, full res %.0f ms",
                       app.frame_times.average(), app.frame_times.largest(), latency.first_image_ms,
                       latency.full_image_ms);
-  if (app.autosaver && !app.autosaver->failure().empty()) {
-    // Stays until a write succeeds: a crash now would lose the edits.
-    ImGui::SameLine();
-    ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "| %s",
-                       autosave_notice(*app.autosaver).c_str());
-  } else if (!app.notices.last.empty()) {
+  if (!app.notices.last.empty()) {
     ImGui::SameLine();
     ImGui::TextDisabled("| %s", app.notices.last.c_str());
   }
