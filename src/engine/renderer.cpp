@@ -8,14 +8,12 @@
 #include "engine/trace/embree_scene.h"
 #include "engine/trace/sample_cache.h"
 #include "engine/trace/single_sample_pass.h"
+#include "scene/memory_estimate.h"
 #include "scene/validation.h"
 
 namespace gloss {
 
 namespace {
-// Bound on the per-sample cache of one band (bytes); larger images go band by band.
-constexpr std::size_t kBandBudget = std::size_t(256) << 20;
-
 void copy_rows(const Image& band, int row0, Image& image) {
   std::memcpy(&image.pixels[static_cast<std::size_t>(row0) * image.width], band.pixels.data(),
               band.pixels.size() * sizeof(glm::vec3));
@@ -31,10 +29,9 @@ TermImages render(const Scene& scene, const RenderOptions& options) {
   ctx.plan = make_render_plan(scene, options.full_plan);
 
   const int w = scene.render.width, h = scene.render.height, spp = scene.render.spp;
-  const std::size_t bytes_per_row = static_cast<std::size_t>(w) * spp *
-                                    (20 + 16 * std::max<std::size_t>(1, ctx.plan.lights.size()));
-  int band_rows = static_cast<int>(std::max<std::size_t>(1, kBandBudget / bytes_per_row));
-  band_rows = std::min(h, std::max(4, band_rows));
+  // Larger images go band by band, each band's sample cache about kSampleBandBytes; validation
+  // counted the same (scene/memory_estimate.h).
+  const int band_rows = sample_band_rows(w, h, spp, ctx.plan.lights.size());
 
   TermImages out;
   out.total = Image(w, h);

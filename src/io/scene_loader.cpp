@@ -115,6 +115,7 @@ Scene parse_scene(const std::string& text, const std::string& path,
   context.budget_bytes = memory_budget_bytes();
   context.claimed_bytes = &claimed_bytes;
   std::vector<PendingObject> pending;
+  claim_geometry_in_advance(objects, context);
   for (std::size_t i = 0; i < objects.size(); ++i) {
     read_scene_object(objects[i], i, context, materials, pending);
   }

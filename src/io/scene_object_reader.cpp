@@ -207,6 +207,25 @@ void read_mesh(const JsonObjectReader& reader, const ObjectReadContext& context,
 
 }  // namespace
 
+void claim_geometry_in_advance(const nlohmann::json& objects, const ObjectReadContext& context) {
+  if (!objects.is_array() || context.claimed_bytes == nullptr) return;
+  const std::uint64_t start = *context.claimed_bytes;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const nlohmann::json& value = objects[i];
+    if (!value.is_object() || value.value("type", nlohmann::json()) != "teapot") continue;
+    const auto level = value.find("tessellation");
+    long long tessellation = 8;
+    if (level != value.end()) {
+      if (!level->is_number_integer() || *level < 1 || *level > 64) continue;
+      tessellation = level->get<long long>();
+    }
+    claim_geometry(context, index_path("objects", i),
+                   "teapot, tessellation " + std::to_string(tessellation),
+                   teapot_triangles(static_cast<int>(tessellation)));
+  }
+  *context.claimed_bytes = start;  // the reading pass claims each object again as it reads it
+}
+
 void read_scene_object(const nlohmann::json& value, std::size_t index,
                        const ObjectReadContext& context, MaterialMap& materials,
                        std::vector<PendingObject>& out) {

@@ -38,6 +38,12 @@ struct PendingObject {
   std::string field;
 };
 
+// Refuses, before any object is read, the object whose estimated geometry (teapots from their
+// tessellation; meshes count when read) takes the scene past context's budget, so 1000 teapots at
+// tessellation 64 fail at once rather than after gigabytes. Values the reader would refuse are
+// skipped here; the reader names them.
+void claim_geometry_in_advance(const nlohmann::json& objects, const ObjectReadContext& context);
+
 // Reads objects[index] and appends the Object(s) it makes: one, or one per OBJ part for a mesh
 // without a material (which also adds its MTL materials to materials, named "<stem>/<name>").
 void read_scene_object(const nlohmann::json& value, std::size_t index,

@@ -121,7 +121,7 @@ void check_object(const Scene& scene, std::size_t index) {
 
 // The geometry and the render caches against the memory budget (base/memory_budget.h), before
 // a renderer allocates: the object that passes it, else the render settings, are named.
-void check_memory(const Scene& scene) {
+void check_memory(const Scene& scene, SampleMemory samples) {
   const std::string& file = scene.path;
   const std::uint64_t budget = memory_budget_bytes();
   std::uint64_t total = 0;
@@ -138,7 +138,7 @@ void check_memory(const Scene& scene) {
     }
   }
   const RenderSettings& r = scene.render;
-  const std::uint64_t render = render_bytes(r, scene.lights.size());
+  const std::uint64_t render = render_bytes(r, scene.lights.size(), samples);
   if (total + render > budget) {
     fail_field(file, "render",
                std::to_string(r.width) + "x" + std::to_string(r.height) + " at " +
@@ -151,7 +151,7 @@ void check_memory(const Scene& scene) {
 
 }  // namespace
 
-void validate_scene(const Scene& scene) {
+void validate_scene(const Scene& scene, SampleMemory samples) {
   const std::string& file = scene.path;
   check_fields(file, "camera", camera_fields(), scene.camera);
   check_camera(file, scene.camera);
@@ -170,7 +170,7 @@ void validate_scene(const Scene& scene) {
     validate_material(file, child_path("materials", scene.material_names[i]), scene.materials[i]);
   }
   for (std::size_t i = 0; i < scene.objects.size(); ++i) check_object(scene, i);
-  check_memory(scene);
+  check_memory(scene, samples);
 }
 
 void validate_material(const std::string& file, const std::string& field,

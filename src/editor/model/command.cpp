@@ -167,7 +167,7 @@ void apply_command(const Command& command, Scene& scene) {
              },
              command);
   try {
-    validate_scene(next);
+    validate_scene(next, SampleMemory::whole_image);  // the progressive renderer holds it all
   } catch (const InputError& e) {
     throw CommandError(e.field().empty() ? e.message() : e.field() + ": " + e.message());
   }
