@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # Kills gloss-cli renders with SIGKILL while they write their outputs and counts what is left in
 # the output folder besides finished files: temporaries that outlived their process.
-# Usage: scripts/measure_kill_debris.sh GLOSS_CLI [RUNS=30] [SCENE=assets/scenes/spheres.json]
+# Usage: scripts/measure_kill_debris.sh GLOSS_CLI [RUNS=30] [MAX_DELAY_MS=1500]
+#        [SCENE=assets/scenes/spheres.json]
 # Each run renders 4096x4096 to a PNG and a 201 MB PFM; once the process holds a file open in
-# the output folder (it is writing), it is killed after a random 0-300 ms.
+# the output folder (it is writing), it is killed after a random 0 to MAX_DELAY_MS ms, which
+# spans the PNG's encoding and the PFM's write.
 set -u
 cli=$1
 runs=${2:-30}
-scene=${3:-"$(dirname "$0")/../assets/scenes/spheres.json"}
+max_delay_ms=${3:-1500}
+scene=${4:-"$(dirname "$0")/../assets/scenes/spheres.json"}
 out=$(mktemp -d /tmp/gloss-kill-XXXXXX)
 killed_writing=0
 for ((i = 0; i < runs; i++)); do
@@ -21,7 +24,8 @@ for ((i = 0; i < runs; i++)); do
     sleep 0.01
   done
   if ((writing)); then
-    sleep "0.$(printf '%03d' $((RANDOM % 300)))"
+    delay=$((RANDOM % (max_delay_ms + 1)))
+    sleep "$((delay / 1000)).$(printf '%03d' $((delay % 1000)))"
     killed_writing=$((killed_writing + 1))
   fi
   kill -9 "$pid" 2>/dev/null

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <memory>
+#include <new>
 #include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -154,6 +156,12 @@ void read_mesh(const JsonObjectReader& reader, const ObjectReadContext& context,
     model = load_obj(resolved, params.smooth);
   } catch (const InputError& error) {
     fail_field(context.file, reader.path("file"), error.what());
+  } catch (const std::bad_alloc&) {
+    throw;  // not the file's fault as such: exit 1
+  } catch (const std::exception& error) {
+    // Whatever the model library throws (std::out_of_range, std::length_error ...) is still the
+    // file's fault: bad input naming it.
+    fail_field(context.file, reader.path("file"), resolved + ": " + error.what());
   }
   for (const std::string& warning : model.warnings) {
     if (context.warnings)
