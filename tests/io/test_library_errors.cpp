@@ -1,11 +1,15 @@
 // Every reader turns the libraries' exceptions into an InputError naming the file and the place
 // (docs/spec/scene-and-cli.md: bad input is exit 2 with one line naming the file).
+#include <zlib.h>
+
+#include <cstdint>
 #include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "base/error.h"
+#include "io/image_io.h"
 #include "io/material_io.h"
 #include "io/recovery_file.h"
 #include "io/scene_loader.h"
@@ -70,6 +74,32 @@ TEST(LibraryErrors, EmptyOrDuplicateMaterialNamesInAMaterialsFileAreRefusedByThe
   std::ofstream(path) << R"({"materials": {"a\\xE6": {}, "a\\xe6": {}}})";
   EXPECT_NE(input_error_of([&] { load_materials_json(path); }).message().find("duplicate"),
             std::string::npos);
+}
+
+void append_chunk(std::string& png, const std::string& type, const std::string& data) {
+  const auto be32 = [&](std::uint32_t v) {
+    for (int shift = 24; shift >= 0; shift -= 8) png += static_cast<char>((v >> shift) & 0xFF);
+  };
+  be32(static_cast<std::uint32_t>(data.size()));
+  const std::string body = type + data;
+  png += body;
+  be32(static_cast<std::uint32_t>(
+      crc32(0, reinterpret_cast<const Bytef*>(body.data()), static_cast<uInt>(body.size()))));
+}
+
+// A PNG header of 1000000 x 1000000 pixels (libpng's own limit) with a token IDAT: 3e12 bytes of
+// RGB, which read_png used to ask of std::vector (std::length_error or bad_alloc, exit 1).
+TEST(LibraryErrors, APngHeaderPastThePixelLimitIsAnInputError) {
+  ScratchFolder folder;
+  std::string png = "\x89PNG\r\n\x1a\n";
+  const std::string ihdr("\x00\x0f\x42\x40\x00\x0f\x42\x40\x08\x02\x00\x00\x00", 13);
+  append_chunk(png, "IHDR", ihdr);  // 0x0F4240 = 1000000, 8-bit RGB
+  append_chunk(png, "IDAT", std::string("\x78\x9c", 2));
+  append_chunk(png, "IEND", "");
+  std::ofstream(folder.file("huge.png"), std::ios::binary) << png;
+  const InputError error = input_error_of([&] { read_png(folder.file("huge.png")); });
+  EXPECT_EQ(error.file(), folder.file("huge.png"));
+  EXPECT_EQ(error.message(), "PNG is 1000000x1000000, more than the limit of 67108864 pixels");
 }
 
 }  // namespace
