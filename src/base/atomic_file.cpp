@@ -130,6 +130,7 @@ int open_unnamed_temporary(const std::string& path) {
 // Gives the unnamed file fd a temporary name (linkat through /proc), then renames it over path.
 // Returns false when /proc is not mounted, so the caller can fall back.
 bool publish_unnamed(int fd, const std::string& path) {
+  remove_stale_temporaries(path);  // a process killed between its linkat and its rename
   const std::string proc_link = "/proc/self/fd/" + std::to_string(fd);
   for (int attempt = 0; attempt < 100; ++attempt) {
     const std::string name = next_temporary_name(path);
