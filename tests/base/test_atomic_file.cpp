@@ -191,6 +191,18 @@ TEST(AtomicFile, StaleTemporaryOfADeadProcessIsRemovedByTheNextWrite) {
   EXPECT_EQ(folder.entries(), (std::vector<std::string>{other, alive, "out.txt"}));
 }
 
+TEST(AtomicFile, StaleTemporaryIsAlsoRemovedByAnUnnamedWrite) {
+  ScratchFolder folder;
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) ::_exit(0);
+  ASSERT_EQ(::waitpid(child, nullptr, 0), child);
+  const std::string stale = ".out.txt.tmp-" + std::to_string(child) + "-3";
+  std::ofstream(folder.file(stale)) << "old";
+  write_text_atomically(folder.file("out.txt"), "new");
+  EXPECT_EQ(folder.entries(), std::vector<std::string>{"out.txt"});
+}
+
 TEST(AtomicFile, FullDiskSaysSo) {
   try {
     throw_write_error("out.png", ENOSPC);
