@@ -104,6 +104,48 @@ void drop_normals(aiMesh& mesh) {
   mesh.mNormals = nullptr;
 }
 
+// GenSmoothNormals writes each face's normal into its corners' vertices, so it needs one vertex
+// per polygon corner (assimp's "verbose" format). The PLY and glTF readers share vertices between
+// faces without saying so, and assimp's own un-sharing step is internal, not a flag: this is it,
+// for a mesh that (after RemoveComponent) holds only positions and faces. Morph targets are
+// dropped (gloss does not animate) because their arrays follow the old vertex numbering.
+void unshare_vertices(aiMesh& mesh) {
+  unsigned corners = 0;
+  for (unsigned f = 0; f < mesh.mNumFaces; ++f) corners += mesh.mFaces[f].mNumIndices;
+  auto* positions = new aiVector3D[corners];
+  unsigned next = 0;
+  for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+    aiFace& face = mesh.mFaces[f];
+    for (unsigned k = 0; k < face.mNumIndices; ++k) {
+      positions[next] = mesh.mVertices[face.mIndices[k]];
+      face.mIndices[k] = next++;
+    }
+  }
+  delete[] mesh.mVertices;
+  mesh.mVertices = positions;
+  mesh.mNumVertices = corners;
+  // RemoveComponent took these away already; any left would follow the old numbering.
+  for (unsigned c = 0; c < AI_MAX_NUMBER_OF_TEXTURECOORDS; ++c) {
+    delete[] mesh.mTextureCoords[c];
+    mesh.mTextureCoords[c] = nullptr;
+  }
+  for (unsigned c = 0; c < AI_MAX_NUMBER_OF_COLOR_SETS; ++c) {
+    delete[] mesh.mColors[c];
+    mesh.mColors[c] = nullptr;
+  }
+  delete[] mesh.mTangents;
+  delete[] mesh.mBitangents;
+  mesh.mTangents = mesh.mBitangents = nullptr;
+  for (unsigned b = 0; b < mesh.mNumBones; ++b) delete mesh.mBones[b];
+  delete[] mesh.mBones;
+  mesh.mBones = nullptr;
+  mesh.mNumBones = 0;
+  for (unsigned a = 0; a < mesh.mNumAnimMeshes; ++a) delete mesh.mAnimMeshes[a];
+  delete[] mesh.mAnimMeshes;
+  mesh.mAnimMeshes = nullptr;
+  mesh.mNumAnimMeshes = 0;
+}
+
 glm::vec3 to_vec3(const aiVector3D& v) {
   return glm::vec3(v.x, v.y, v.z);
 }
@@ -155,12 +197,12 @@ void append_mesh(const aiMesh& in, bool with_normals, Mesh& out) {
   }
 }
 
-// The importer's flags: polygons (concave ones and ones with bridged holes included) become
-// triangles, points and lines are removed, node transforms are applied and meshes sharing a
-// material are merged, and components gloss does not use are dropped before vertices are joined.
-constexpr unsigned kImportFlags = aiProcess_Triangulate | aiProcess_SortByPType |
-                                  aiProcess_RemoveComponent | aiProcess_PreTransformVertices |
-                                  aiProcess_ValidateDataStructure;
+// The importer's flags: node transforms are applied and meshes sharing a material are merged,
+// and components gloss does not use are dropped. Polygons are triangulated (and points and
+// lines removed) in the second pass (load_model), after vertices were un-shared, so that
+// GenSmoothNormals counts each polygon once at a vertex, as for an OBJ file, whatever the format.
+constexpr unsigned kImportFlags =
+    aiProcess_RemoveComponent | aiProcess_PreTransformVertices | aiProcess_ValidateDataStructure;
 constexpr int kRemovedComponents = aiComponent_TANGENTS_AND_BITANGENTS | aiComponent_COLORS |
                                    aiComponent_TEXCOORDS | aiComponent_BONEWEIGHTS |
                                    aiComponent_ANIMATIONS | aiComponent_TEXTURES |
@@ -210,8 +252,15 @@ Model load_model(const std::string& path, const ModelOptions& options) {
   for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
     aiMesh& mesh = *scene->mMeshes[m];
     if (mesh.mNormals != nullptr && (flat || !normals_usable(mesh))) drop_normals(mesh);
+    if (mesh.mNormals == nullptr && !flat) unshare_vertices(mesh);
   }
-  scene = importer.ApplyPostProcessing(aiProcess_JoinIdenticalVertices |
+  // Concave polygons and ones with bridged holes become their proper triangles (assimp orders
+  // the steps: Triangulate, then GenSmoothNormals, then JoinIdenticalVertices).
+  // SortByPType (points and lines removed) runs here, after Triangulate: before it, it would put
+  // a model's triangles and its quads into separate meshes, and normals are not smoothed across
+  // meshes.
+  scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType |
+                                       aiProcess_JoinIdenticalVertices |
                                        (flat ? 0u : unsigned(aiProcess_GenSmoothNormals)));
   if (scene == nullptr) {
     const std::string message = importer.GetErrorString();
