@@ -54,10 +54,8 @@ NamedMaterial convert_material(const aiMaterial& in, unsigned index,
         glm::mix(glm::vec3(0.04f), m.diffuse, std::clamp(metallic, 0.0f, 1.0f)) * (1.0f - r);
   }
   get_colour(in, AI_MATKEY_COLOR_EMISSIVE, m.emission);
-  if (!get_float(in, AI_MATKEY_SHININESS, m.shininess) && pbr) {
-    const float r = std::max(roughness, 0.0f);
-    m.shininess = r > 0.0f ? std::clamp(2.0f / (r * r * r * r) - 2.0f, 1.0f, 1000.0f) : 1000.0f;
-  }
+  // assimp's glTF 2.0 reader gives shininess itself: 1000 (1 - roughness)^2.
+  get_float(in, AI_MATKEY_SHININESS, m.shininess);
 
   const std::pair<const char*, glm::vec3> colours[] = {
       {"Ka", m.ambient}, {"Kd", m.diffuse}, {"Ks", m.specular}, {"Ke", m.emission}};

@@ -16,9 +16,10 @@ struct NamedMaterial {
 };
 
 // Phong files (OBJ/MTL): Ka, Kd, Ks, Ke, Ns as written. glTF 2.0 (metallic-roughness):
-// kd = base colour, ka = kd, ks = mix(0.04, base colour, metallic) * (1 - roughness),
-// Ns = 2 / roughness^4 - 2 clamped to 1..1000 (the Blinn-Phong exponent whose lobe matches a
-// GGX roughness), ke = emissive factor; textures are ignored. Keys a file lacks keep gloss's
+// kd = base colour, ka = kd, ks = mix(0.04, base colour, metallic) * (1 - roughness) (the
+// glTF reflectance at normal incidence, faded out as the surface gets rough), Ns = assimp's
+// own AI_MATKEY_SHININESS for glTF, 1000 (1 - roughness)^2, ke = emissive factor; textures are
+// ignored. Keys a file lacks keep gloss's
 // material defaults. Throws InputError (file = model_file, field = the material and key) for a
 // colour component that is negative or not finite, or a negative or non-finite exponent.
 NamedMaterial convert_material(const aiMaterial& in, unsigned index, const std::string& model_file);

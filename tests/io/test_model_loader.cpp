@@ -1,5 +1,6 @@
 #include "io/model_loader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <string>
@@ -240,6 +241,23 @@ TEST(ModelLoader, MalformedTwoSkipsItsEmptyFaceAndKeepsTheOtherFive) {
   ASSERT_EQ(model.parts.size(), 1u);
   EXPECT_EQ(model.parts[0].mesh.triangles.size(), 10u);
   EXPECT_NEAR(area(model.parts[0].mesh), 5.0, 1e-6);
+}
+
+TEST(ModelLoader, GltfMetallicRoughnessMapsToPhongAsDocumented) {
+  const std::string path = "/usr/share/assimp/models/glTF2/ClearCoat-glTF/ClearCoatTest.gltf";
+  if (!std::ifstream(path)) GTEST_SKIP() << "assimp-testmodels not installed";
+  const Model model = load_model(path);
+  // "Simple_Base": base colour (0.5, 0.02, 0.01), metallic 0, roughness 0.44.
+  const auto it =
+      std::find(model.material_names.begin(), model.material_names.end(), "Simple_Base");
+  ASSERT_NE(it, model.material_names.end());
+  const Material& m = model.materials[it - model.material_names.begin()];
+  EXPECT_EQ(m.diffuse, glm::vec3(0.5f, 0.02f, 0.01f));
+  EXPECT_EQ(m.ambient, m.diffuse);
+  EXPECT_NEAR(m.specular.x, 0.04 * (1 - 0.44), 1e-6);  // mix(0.04, base, 0) * (1 - roughness)
+  EXPECT_EQ(m.specular.x, m.specular.y);
+  EXPECT_NEAR(m.shininess, 1000 * (1 - 0.44) * (1 - 0.44), 1e-3);  // assimp: 1000 (1 - r)^2
+  EXPECT_EQ(m.emission, glm::vec3(0.0f));
 }
 
 TEST(ModelLoader, DegenerateTrianglesAreDroppedWithAWarning) {
