@@ -201,6 +201,11 @@ TEST(SceneLoaderErrors, ShapeParametersOutOfRangeAreRefused) {
   expect_field_error(
       with_object(R"({"type": "box", "min": [0, 0, 0], "max": [1, 0, 1], "material": "m"})"),
       "objects[0].max", "greater than min");
+  // Checked before the file is read, so the file need not exist.
+  expect_field_error(with_object(R"({"type": "mesh", "file": "x.obj", "crease_angle": 180.5})"),
+                     "objects[0].crease_angle", "0..180");
+  expect_field_error(with_object(R"({"type": "mesh", "file": "x.obj", "crease_angle": -1})"),
+                     "objects[0].crease_angle", "0..180");
 }
 
 TEST(SceneLoaderErrors, ObjProblemsNameTheObjectAndTheObjFile) {
