@@ -8,7 +8,7 @@ GLOSS_JOBS="${GLOSS_JOBS:-$(nproc)}"
 # Debian 12 / Ubuntu package names (third_party/README.md says what each is for).
 GLOSS_PACKAGES=(
   cmake g++ clang libglfw3-dev libimgui-dev libglm-dev python3-glad libstb-dev
-  libtinyobjloader-dev libembree-dev libtbb-dev nlohmann-json3-dev libcli11-dev libpng-dev
+  libassimp-dev assimp-testmodels libembree-dev libtbb-dev nlohmann-json3-dev libcli11-dev libpng-dev
   libgtest-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri libegl-dev libclang-rt-14-dev
   imagemagick xdotool python3-matplotlib
 )

@@ -13,8 +13,11 @@ find_package(glm REQUIRED)
 # Scene and material JSON (io; the editor's recovery file goes through io) and the benchmark's
 # JSON report (analysis), private to both. Debian 12: 3.11.2.
 find_package(nlohmann_json 3 REQUIRED)
-# Wavefront OBJ (io only). No version: Debian's is "2rc10" and a version request fails.
-find_package(tinyobjloader REQUIRED)
+# Models: OBJ with MTL, PLY, STL, glTF 2.0 (io only, private to gloss_io). Debian 12: 5.2.5. One
+# reader for every format, so triangulation (concave polygons, bridged holes), normals and
+# materials behave the same whatever the file. assimp-testmodels (a package, not a build
+# dependency) gives the corpus test in tests/io its files when installed.
+find_package(assimp 5.2 REQUIRED)
 # PNG with text chunks (io only). Debian 12: libpng 1.6.39.
 find_package(PNG REQUIRED)
 # Command lines of gloss-cli and gloss. Debian 12: 2.1.2.

@@ -1,5 +1,10 @@
 #include "engine/render_plan.h"
 
+#include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
+
+#include "scene/mesh.h"
+
 namespace gloss {
 
 namespace {
@@ -7,11 +12,29 @@ bool nonzero(const glm::vec3& c) {
   return c.x != 0.0f || c.y != 0.0f || c.z != 0.0f;
 }
 
+// Whether the eye may be inside a closed convex object (bounds widened by 1e-4 of the size, so
+// that rounding can only turn shadow rays on).
+bool eye_may_be_inside(const Object& object, const glm::vec3& eye) {
+  if (object.type == ObjectType::sphere) {
+    return glm::length(glm::dvec3(eye) - glm::dvec3(object.center)) <
+           double(object.radius) * (1 + 1e-4);
+  }
+  glm::vec3 lo, hi;
+  if (object.type != ObjectType::box || !object.mesh || !mesh_bounds(*object.mesh, lo, hi)) {
+    return false;  // a quad is flat: no inside
+  }
+  const glm::vec3 margin = (hi - lo) * 1e-4f;
+  return glm::all(glm::greaterThan(eye, lo - margin)) && glm::all(glm::lessThan(eye, hi + margin));
+}
+
 // True when some object could block the segment from a lit surface point to a light: two or more
-// objects, or one that is not convex (a convex surface never occludes itself where ndl > 0).
+// objects, or one that is not convex, or a closed convex one seen from inside (its far wall can
+// hide a light outside). Seen from outside, a convex surface never occludes itself where ndl > 0.
 bool can_cast_shadows(const Scene& scene) {
   if (scene.objects.size() >= 2) return true;
-  return scene.objects.size() == 1 && !is_convex(scene.objects[0].type);
+  if (scene.objects.size() != 1) return false;
+  const Object& only = scene.objects[0];
+  return !is_convex(only.type) || eye_may_be_inside(only, scene.camera.eye);
 }
 }  // namespace
 

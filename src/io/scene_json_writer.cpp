@@ -113,6 +113,9 @@ Json object_json(const Object& object, const std::string& material_name) {
     j["tessellation"] = p.tessellation;
   }
   if (scaled && p.smooth != defaults.smooth) j["smooth"] = p.smooth;
+  if (object.type == ObjectType::mesh && p.crease_angle != defaults.crease_angle) {
+    j["crease_angle"] = float_json(p.crease_angle);
+  }
   j["material"] = escape_name(material_name);
   return j;
 }

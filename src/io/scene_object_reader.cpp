@@ -14,8 +14,8 @@
 #include "base/error.h"
 #include "base/memory_budget.h"
 #include "base/text_distance.h"
+#include "io/model_loader.h"
 #include "io/name_escape.h"
-#include "io/obj_loader.h"
 #include "io/scene_json_reader.h"
 #include "io/teapot_reader.h"
 #include "scene/limits.h"
@@ -41,8 +41,8 @@ std::vector<std::string> allowed_keys(ObjectType type) {
       return {"type",     "name",  "material",     "position",
               "rotate_y", "scale", "tessellation", "smooth"};
     case ObjectType::mesh:
-      return {"type",     "name",  "material", "file",  "group",
-              "position", "scale", "rotate_y", "smooth"};
+      return {"type",     "name",  "material", "file",   "group",
+              "position", "scale", "rotate_y", "smooth", "crease_angle"};
   }
   return {};
 }
@@ -74,7 +74,7 @@ glm::vec3 read_scale(const JsonObjectReader& reader) {
   return scale;
 }
 
-// translate(position) * rotate_y * scale, the placement of teapots and OBJ meshes.
+// translate(position) * rotate_y * scale, the placement of teapots and model meshes.
 glm::mat4 placement(const ShapeParams& params) {
   glm::mat4 m = glm::translate(glm::mat4(1.0f), params.position);
   m = glm::rotate(m, glm::radians(params.rotate_y), glm::vec3(0.0f, 1.0f, 0.0f));
@@ -125,11 +125,11 @@ void drop_degenerate(Mesh& mesh, const ObjectReadContext& context, const std::st
 }
 
 // The parts' triangles as one mesh; smooth only when every part carries normals.
-Mesh merge_parts(const std::vector<const ObjPart*>& parts) {
+Mesh merge_parts(const std::vector<const ModelPart*>& parts) {
   Mesh merged;
   bool smooth = true;
-  for (const ObjPart* part : parts) smooth = smooth && part->mesh.smooth();
-  for (const ObjPart* part : parts) {
+  for (const ModelPart* part : parts) smooth = smooth && part->mesh.smooth();
+  for (const ModelPart* part : parts) {
     const auto base = static_cast<unsigned>(merged.positions.size());
     merged.positions.insert(merged.positions.end(), part->mesh.positions.begin(),
                             part->mesh.positions.end());
@@ -151,9 +151,9 @@ void read_mesh(const JsonObjectReader& reader, const ObjectReadContext& context,
   const std::string resolved = file_path.is_absolute() || context.base_dir.empty()
                                    ? params.file
                                    : (std::filesystem::path(context.base_dir) / file_path).string();
-  ObjModel model;
+  Model model;
   try {
-    model = load_obj(resolved, params.smooth);
+    model = load_model(resolved, {params.smooth, params.crease_angle});
   } catch (const InputError& error) {
     fail_field(context.file, reader.path("file"), error.what());
   } catch (const std::bad_alloc&) {
@@ -168,9 +168,9 @@ void read_mesh(const JsonObjectReader& reader, const ObjectReadContext& context,
       context.warnings->push_back(context.file + ": " + reader.path("file") + ": " + warning);
   }
 
-  std::vector<const ObjPart*> parts;
+  std::vector<const ModelPart*> parts;
   std::vector<std::string> groups;
-  for (const ObjPart& part : model.parts) {
+  for (const ModelPart& part : model.parts) {
     groups.push_back(part.material_name);
     if (!reader.has("group") || part.material_name == params.group) parts.push_back(&part);
   }
@@ -181,7 +181,7 @@ void read_mesh(const JsonObjectReader& reader, const ObjectReadContext& context,
 
   const glm::mat4 transform = placement(params);
   std::uint64_t triangles = 0;
-  for (const ObjPart* part : parts) triangles += part->mesh.triangles.size();
+  for (const ModelPart* part : parts) triangles += part->mesh.triangles.size();
   // The file is read by now (its size bounds what that took); its copies are not made yet.
   claim_geometry(context, reader.path(), "mesh " + params.file, triangles);
   auto emit = [&](Mesh mesh, Object object, std::string material_name) {
@@ -198,7 +198,7 @@ void read_mesh(const JsonObjectReader& reader, const ObjectReadContext& context,
   // No scene material: one object per part, each with its MTL material. A scene material that
   // already has the name (for example from a saved copy of this scene) takes precedence.
   const std::string stem = file_path.stem().string();
-  for (const ObjPart* part : parts) {
+  for (const ModelPart* part : parts) {
     Object object = prototype;
     object.params.group = part->material_name;
     if (parts.size() > 1) object.name += "/" + part->material_name;
@@ -309,6 +309,10 @@ void read_scene_object(const nlohmann::json& value, std::size_t index,
       params.rotate_y = reader.number("rotate_y", params.rotate_y);
       params.scale = read_scale(reader);
       params.smooth = reader.boolean("smooth", params.smooth);
+      params.crease_angle = reader.number("crease_angle", params.crease_angle);
+      if (!(params.crease_angle >= 0.0f && params.crease_angle <= 180.0f)) {
+        reader.fail("crease_angle", "must be 0..180 degrees");
+      }
       read_mesh(reader, context, std::move(object), material, materials, out);
       return;
   }

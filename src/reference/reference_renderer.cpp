@@ -12,6 +12,7 @@
 
 #include "engine/parallel_loops.h"
 #include "engine/trace/embree_scene.h"
+#include "engine/trace/self_shadow.h"
 #include "reference/reference_hit.h"
 #include "scene/camera.h"
 #include "scene/validation.h"
@@ -68,8 +69,11 @@ struct Job {
 
 // The spec's shadow test for one light from a hit: the segment from the offset origin
 // (surface.h shadow_ray_origin, shared with the fast renderer) to just short of the light.
+// object: the index of the hit's object (its sphere is left out of its own shadow test,
+// engine/trace/self_shadow.h).
 template <class T>
-bool occluded(RTCScene scene, const ReferenceHit<T>& h, const glm::vec3& light_position) {
+bool occluded(const Job<T>& job, int object, const ReferenceHit<T>& h,
+              const glm::vec3& light_position) {
   const Surface s{glm::vec3(h.p), glm::vec3(h.n), glm::vec3(h.ng), glm::vec3(h.v)};
   const glm::vec3 org = shadow_ray_origin(s, static_cast<float>(h.t));
   const glm::vec3 dir = light_position - org;
@@ -84,11 +88,11 @@ bool occluded(RTCScene scene, const ReferenceHit<T>& h, const glm::vec3& light_p
   ray.tfar = 1.0f - 1e-5f;  // as the fast renderer: a light resting on a surface still lights it
   ray.time = 0.0f;
   ray.mask = 0xffffffffu;
-  ray.id = 0;
+  ray.id = shadow_ray_id(*job.scene, object, s);
   ray.flags = 0;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  rtcOccluded1(scene, &context, &ray);
+  rtcOccluded1(job.rtc, &context, &ray);
   return ray.tfar == -std::numeric_limits<float>::infinity();
 }
 
@@ -146,7 +150,7 @@ void shade_sample(const Job<T>& job, int x, int y, int s, PixelSums<T>& sum, Sam
   rh.ray.tfar = std::numeric_limits<float>::infinity();
   rh.ray.time = 0.0f;
   rh.ray.mask = 0xffffffffu;
-  rh.ray.id = 0;
+  rh.ray.id = kNoOriginSphere;
   rh.ray.flags = 0;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -189,7 +193,7 @@ void shade_sample(const Job<T>& job, int x, int y, int s, PixelSums<T>& sum, Sam
       if (lit_side) light_weights(job, h.p, h.n, h.v, light, alpha, dw, sw);
     }
     if (!lit_side) continue;
-    if (scene.render.shadows && occluded(job.rtc, h, light.position)) {
+    if (scene.render.shadows && occluded(job, key.object, h, light.position)) {
       key.shadowed |= std::uint64_t(1) << (i % 64);
       continue;  // vis = 0
     }

@@ -18,17 +18,23 @@ namespace gloss {
 enum class ObjectType { sphere, quad, box, teapot, mesh };
 const char* to_string(ObjectType type);
 
+// Default crease angle of a `mesh` object, degrees: where a model file has no normals, faces
+// meeting at more than this keep a hard edge (a box stays a box), smaller angles are smoothed.
+inline constexpr float kDefaultCreaseAngle = 30.0f;
+
 // The parameters an object was made from, kept so a scene saves back as the user wrote it.
 struct ShapeParams {
   glm::vec3 quad[4]{};                      // quad: corners in order around the quad
   glm::vec3 box_min{-0.5f}, box_max{0.5f};  // box: axis-aligned extent before rotate_y
-  std::string file;                         // mesh: OBJ path as written in the scene
-  std::string group;                        // mesh: the OBJ material group this object holds
+  std::string file;                         // mesh: model path as written in the scene
+  std::string group;                        // mesh: the model's material this object holds
   glm::vec3 position{0.0f};                 // box/teapot/mesh: translation after scale and rotate_y
   glm::vec3 scale{1.0f};                    // teapot/mesh: per-axis scale
   float rotate_y = 0.0f;                    // box/teapot/mesh: degrees about +y
   int tessellation = 8;                     // teapot: segments per patch side, 1..64
   bool smooth = true;                       // teapot/mesh: interpolate vertex normals
+  float crease_angle = kDefaultCreaseAngle;  // mesh without file normals: degrees, 0..180, edges
+                                             // sharper than this stay hard (io/model_loader.h)
 };
 
 struct Object {

@@ -28,7 +28,8 @@ bool same_params(const ShapeParams& a, const ShapeParams& b) {
   }
   return a.box_min == b.box_min && a.box_max == b.box_max && a.file == b.file &&
          a.group == b.group && a.position == b.position && a.scale == b.scale &&
-         a.rotate_y == b.rotate_y && a.tessellation == b.tessellation && a.smooth == b.smooth;
+         a.rotate_y == b.rotate_y && a.tessellation == b.tessellation && a.smooth == b.smooth &&
+         a.crease_angle == b.crease_angle;
 }
 
 }  // namespace

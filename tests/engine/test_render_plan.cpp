@@ -35,6 +35,19 @@ TEST(RenderPlan, LoneConvexSphereNeedsNoShadowRays) {
   EXPECT_TRUE(make_render_plan(scene, true).shadow_rays);
 }
 
+// From inside, the sphere's far wall hides a light outside: the eye at 0.5 of the unit radius
+// needs shadow rays, and the plan's image must still equal the unplanned one there.
+TEST(RenderPlan, LoneSphereSeenFromInsideNeedsShadowRays) {
+  Scene scene = test::head_on_sphere_scene();
+  scene.camera.eye = {0, 0, 0.5f};
+  EXPECT_TRUE(make_render_plan(scene).shadow_rays);
+  scene.camera.eye = {0, 0, 1.01f};  // just outside: nothing can be hidden
+  EXPECT_FALSE(make_render_plan(scene).shadow_rays);
+  scene.camera.eye = {0, 0, 0.5f};
+  scene.lights[0].position = {0, 3, -1};
+  expect_planned_equals_unplanned(scene);
+}
+
 TEST(RenderPlan, SecondObjectOrShadowsOffDecideShadowRays) {
   Scene scene = test::head_on_sphere_scene();
   test::add_sphere(scene, {2, 0, 0}, 0.5f, 0);

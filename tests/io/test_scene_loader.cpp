@@ -92,6 +92,7 @@ void expect_scenes_equal(const Scene& a, const Scene& b) {
     EXPECT_EQ(x.params.rotate_y, y.params.rotate_y) << x.name;
     EXPECT_EQ(x.params.tessellation, y.params.tessellation) << x.name;
     EXPECT_EQ(x.params.smooth, y.params.smooth) << x.name;
+    EXPECT_EQ(x.params.crease_angle, y.params.crease_angle) << x.name;
     expect_meshes_equal(x, y);
   }
 }
@@ -320,12 +321,15 @@ TEST(SceneLoader, SceneWithEveryKindOfObjectRoundTripsExactly) {
       {"type": "teapot", "position": [0, 0, 1], "scale": [0.1, 0.2, 0.3], "rotate_y": -30,
        "tessellation": 3, "smooth": false, "material": "a"},
       {"type": "mesh", "file": "parts.obj", "scale": 0.7, "rotate_y": 45},
-      {"type": "mesh", "name": "merged", "file": "parts.obj", "material": "a"}
+      {"type": "mesh", "name": "merged", "file": "parts.obj", "material": "a",
+       "crease_angle": 62.5}
     ],
     "render": {"width": 321, "height": 123, "spp": 7, "model": "blinn-phong", "shadows": false,
                "energy_normalize": true, "srgb": true, "seed": 4000000000, "pow": "fast"}})");
   const Scene scene = load_scene(folder.file("scene.json"));
   ASSERT_EQ(scene.objects.size(), 7u);  // the first mesh splits into its two MTL materials
+  EXPECT_EQ(scene.objects.at(6).params.crease_angle, 62.5f);
+  EXPECT_EQ(scene.objects.at(5).params.crease_angle, kDefaultCreaseAngle);
   expect_scenes_equal(scene, parse_scene(scene_to_json_text(scene), scene.path));
 
   // Saved into another folder, the relative OBJ path is rebased and still finds the file.

@@ -118,7 +118,7 @@ bool execute(App& app, const Command& command);
 // app_actions.cpp: file and export actions. Each throws InputError / RuntimeFailure with a
 // message for the UI; on failure the document is unchanged.
 void open_scene(App& app, const std::string& path);
-void add_obj(App& app, const std::string& path);
+void add_model(App& app, const std::string& path);
 void save_scene_as(App& app, const std::string& path);
 void load_materials(App& app, const std::string& path);
 void save_materials(App& app, const std::string& path);

@@ -10,7 +10,7 @@
 #include "base/error.h"
 #include "editor/model/export_image.h"
 #include "editor/ui/app.h"
-#include "io/obj_loader.h"
+#include "io/model_loader.h"
 #include "io/scene_loader.h"
 
 namespace gloss {
@@ -56,11 +56,11 @@ void open_scene(App& app, const std::string& requested) {
   app.notices.info("opened " + path, app.now_s());
 }
 
-void add_obj(App& app, const std::string& path) {
-  const ObjModel model = load_obj(path, true);
+void add_model(App& app, const std::string& path) {
+  const Model model = load_model(path);
   // Fit the model into a 2-unit box centred on the camera target.
   glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-  for (const ObjPart& part : model.parts) {
+  for (const ModelPart& part : model.parts) {
     glm::vec3 a, b;
     if (!mesh_bounds(part.mesh, a, b)) continue;
     lo = glm::min(lo, a);
@@ -78,7 +78,7 @@ void add_obj(App& app, const std::string& path) {
       glm::scale(glm::translate(glm::mat4(1.0f), position), glm::vec3(scale));
   const std::string absolute = std::filesystem::absolute(path).lexically_normal().string();
   const std::string stem = std::filesystem::path(path).stem().string();
-  for (const ObjPart& part : model.parts) {
+  for (const ModelPart& part : model.parts) {
     Material material;
     std::string material_name = part.material_name.empty() ? stem : part.material_name;
     for (std::size_t i = 0; i < model.material_names.size(); ++i) {
@@ -235,8 +235,8 @@ void browser_action(App& app, const std::string& path) {
       case BrowsePurpose::open_scene:
         open_scene(app, path);
         break;
-      case BrowsePurpose::add_obj:
-        add_obj(app, path);
+      case BrowsePurpose::add_model:
+        add_model(app, path);
         break;
       case BrowsePurpose::load_materials:
         load_materials(app, path);

@@ -7,14 +7,16 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "io/model_loader.h"
+
 namespace gloss {
 
 const char* title(BrowsePurpose purpose) {
   switch (purpose) {
     case BrowsePurpose::open_scene:
       return "Open scene";
-    case BrowsePurpose::add_obj:
-      return "Add OBJ model";
+    case BrowsePurpose::add_model:
+      return "Add model";
     case BrowsePurpose::load_materials:
       return "Load materials";
     case BrowsePurpose::save_scene:
@@ -34,8 +36,8 @@ std::vector<std::string> extensions(BrowsePurpose purpose) {
     case BrowsePurpose::open_scene:
     case BrowsePurpose::save_scene:
       return {".json"};
-    case BrowsePurpose::add_obj:
-      return {".obj"};
+    case BrowsePurpose::add_model:
+      return model_extensions();
     case BrowsePurpose::load_materials:
     case BrowsePurpose::save_materials:
       return {".json", ".mtl"};

@@ -10,7 +10,7 @@
 
 namespace gloss {
 
-enum class BrowsePurpose { open_scene, add_obj, load_materials, save_scene, save_materials };
+enum class BrowsePurpose { open_scene, add_model, load_materials, save_scene, save_materials };
 const char* title(BrowsePurpose purpose);
 bool is_save(BrowsePurpose purpose);
 // Extensions listed (lowercase, with the dot); the first is added to a typed save name without one.

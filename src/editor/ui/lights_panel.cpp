@@ -75,7 +75,7 @@ void draw_scene(App& app) {
                                            : std::filesystem::path(scene.path).parent_path();
   if (ImGui::Button("Open scene...")) app.browser.show(BrowsePurpose::open_scene, folder, "");
   ImGui::SameLine();
-  if (ImGui::Button("Add OBJ...")) app.browser.show(BrowsePurpose::add_obj, folder, "");
+  if (ImGui::Button("Add model...")) app.browser.show(BrowsePurpose::add_model, folder, "");
 }
 
 }  // namespace

@@ -93,7 +93,7 @@ void draw_material_panel(App& app, ImVec2 pos, ImVec2 size) {
   }
   const Scene& scene = app.commands.scene();
   if (scene.objects.empty()) {
-    ImGui::TextWrapped("The scene has no objects. Open a scene or add an OBJ model (File menu).");
+    ImGui::TextWrapped("The scene has no objects. Open a scene or add a model (File menu).");
     draw_model_switch(app);
     ImGui::End();
     return;

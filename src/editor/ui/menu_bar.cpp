@@ -32,8 +32,8 @@ void file_menu(App& app) {
     }
     ImGui::EndMenu();
   }
-  if (ImGui::MenuItem("Add OBJ model...")) {
-    app.browser.show(BrowsePurpose::add_obj, scene_folder(app), "");
+  if (ImGui::MenuItem("Add model...")) {
+    app.browser.show(BrowsePurpose::add_model, scene_folder(app), "");
   }
   ImGui::Separator();
   const std::string& path = app.commands.scene().path;

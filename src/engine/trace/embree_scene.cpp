@@ -5,6 +5,7 @@
 #include <string>
 
 #include "base/error.h"
+#include "engine/trace/self_shadow.h"
 
 namespace gloss {
 
@@ -32,6 +33,7 @@ void attach_sphere(RTCDevice device, RTCScene scene, const Object& object, unsig
   v[1] = object.center.y;
   v[2] = object.center.z;
   v[3] = object.radius;
+  rtcSetGeometryOccludedFilterFunction(geom, drop_origin_sphere_hits);
   rtcCommitGeometry(geom);
   rtcAttachGeometryByID(scene, geom, id);
   rtcReleaseGeometry(geom);

@@ -21,7 +21,7 @@ inline void set_packet_ray(Ray16& ray, int lane, const glm::vec3& org, const glm
   ray.tfar[lane] = tfar;
   ray.time[lane] = 0.0f;
   ray.mask[lane] = 0xffffffffu;
-  ray.id[lane] = static_cast<unsigned>(lane);
+  ray.id[lane] = RTC_INVALID_GEOMETRY_ID;  // starts on no sphere (self_shadow.h); callers set it
   ray.flags[lane] = 0;
 }
 

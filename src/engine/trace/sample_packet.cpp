@@ -11,6 +11,7 @@
 #include "engine/simd/lane_math.h"
 #include "engine/simd/lane_records.h"
 #include "engine/trace/ray_packet.h"
+#include "engine/trace/self_shadow.h"
 #include "scene/camera.h"
 #include "shading/shading.h"
 #include "shading/surface.h"
@@ -196,8 +197,10 @@ long long packet_light(const SamplePacket& packet, const SurfaceLanes& surfaces,
   if (ctx.plan.shadow_rays) {
     RTCRay16 ray;
     for (int i = 0; i < kLanes; ++i) {
-      const glm::vec3 org = shadow_ray_origin(surfaces.get(i), packet.t[i]);
+      const Surface s = surfaces.get(i);
+      const glm::vec3 org = shadow_ray_origin(s, packet.t[i]);
       set_packet_ray(ray, i, org, light.position - org, kShadowRayEnd);
+      ray.id[i] = shadow_ray_id(*ctx.scene, packet.object[i], s);
     }
     rays = count_set_lanes(lit);
     RTCIntersectContext context = coherent_context();
