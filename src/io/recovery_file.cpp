@@ -1,12 +1,14 @@
 #include "io/recovery_file.h"
 
 #include <ctime>
+#include <limits>
 #include <system_error>
 
 #include <nlohmann/json.hpp>
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "io/scene_json_reader.h"
 #include "io/scene_loader.h"
 
 namespace gloss {
@@ -53,7 +55,14 @@ Recovery parse_recovery(const std::string& text, const std::string& file) {
   // The scene's relative paths (meshes) resolve against the file the session had open.
   recovery.scene = parse_scene(j["scene"].dump(), scene_path.empty() ? file : scene_path);
   recovery.scene.path = scene_path;
-  recovery.selected_object = j.value("selected_object", -1);
+  // Checked before converting: nlohmann converts 1e300 to int unchecked (undefined behaviour;
+  // found by fuzz/fuzz_recovery).
+  const auto selected = j.find("selected_object");
+  recovery.selected_object =
+      selected == j.end()
+          ? -1
+          : static_cast<int>(json_integer(*selected, -1, std::numeric_limits<int>::max(), file,
+                                          "selected_object"));
   recovery.saved_at = j.value("saved_at", std::string());
   return recovery;
 }
