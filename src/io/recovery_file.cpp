@@ -45,8 +45,11 @@ Recovery parse_recovery(const std::string& text, const std::string& file) {
   } catch (const nlohmann::json::exception& e) {
     throw InputError(file, std::string("not a recovery file: ") + e.what());
   }
-  if (!j.is_object() || j.value("gloss_recovery", 0) != kRecoveryVersion || !j.contains("scene") ||
-      !j["scene"].is_object()) {
+  // The version is compared as a JSON value: j.value("gloss_recovery", 0) converted 1e72 to int
+  // unchecked (undefined behaviour; found by fuzz/fuzz_recovery).
+  const auto version = j.is_object() ? j.find("gloss_recovery") : j.end();
+  if (!j.is_object() || version == j.end() || *version != kRecoveryVersion ||
+      !j.contains("scene") || !j["scene"].is_object()) {
     throw InputError(
         file, "not a gloss recovery file (version " + std::to_string(kRecoveryVersion) + ")");
   }

@@ -44,5 +44,23 @@ TEST(RecoveryFile, SelectedObjectOutsideAnIntIsAnInputErrorNamingTheField) {
   }
 }
 
+// Found by fuzz/fuzz_recovery: a version of 1.7e72 went through the same unchecked conversion.
+// Any version other than 1 is not a recovery file.
+TEST(RecoveryFile, AVersionOtherThanOneIsNotARecoveryFile) {
+  const std::string good = recovery_with_selection("0");
+  for (const char* version : {"1.7e72", "-1e300", "2", "1.5", "\"1\""}) {
+    std::string text = good;
+    text.replace(text.find("\"gloss_recovery\": 1"), 19,
+                 std::string("\"gloss_recovery\": ") + version);
+    try {
+      parse_recovery(text, "r.json");
+      ADD_FAILURE() << "version " << version << " was accepted";
+    } catch (const InputError& error) {
+      EXPECT_NE(std::string(error.what()).find("not a gloss recovery file"), std::string::npos)
+          << error.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace gloss
