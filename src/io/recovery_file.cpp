@@ -1,6 +1,7 @@
 #include "io/recovery_file.h"
 
 #include <ctime>
+#include <limits>
 #include <system_error>
 
 #include <nlohmann/json.hpp>
@@ -9,6 +10,7 @@
 #include "base/error.h"
 #include "io/json_location.h"
 #include "io/name_escape.h"
+#include "io/scene_json_reader.h"
 #include "io/scene_loader.h"
 
 namespace gloss {
@@ -50,17 +52,23 @@ Recovery parse_recovery(const std::string& text, const std::string& file) {
   std::string scene_path;
   try {
     scene_path = unescape_name(j.value("scene_path", std::string()));
-    recovery.selected_object = j.value("selected_object", -1);
     recovery.saved_at = j.value("saved_at", std::string());
   } catch (const nlohmann::json::exception& error) {
-    // A value of the wrong type (type_error 302) names no field; these three are the only ones.
-    throw InputError(file, std::string("scene_path, selected_object or saved_at has the wrong "
-                                       "type (") +
-                               error.what() + ")");
+    // A value of the wrong type (type_error 302) names no field; these two are the only ones.
+    throw InputError(
+        file, std::string("scene_path or saved_at has the wrong type (") + error.what() + ")");
   }
   // The scene's relative paths (meshes) resolve against the file the session had open.
   recovery.scene = parse_scene(j["scene"].dump(), scene_path.empty() ? file : scene_path);
   recovery.scene.path = scene_path;
+  // Checked before converting: nlohmann converts 1e300 to int unchecked (undefined behaviour;
+  // found by fuzz/fuzz_recovery).
+  const auto selected = j.find("selected_object");
+  recovery.selected_object =
+      selected == j.end()
+          ? -1
+          : static_cast<int>(json_integer(*selected, -1, std::numeric_limits<int>::max(), file,
+                                          "selected_object"));
   return recovery;
 }
 

@@ -1,6 +1,8 @@
 #include "scene/field.h"
 
+#include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace gloss {
 
@@ -53,7 +55,10 @@ FieldProblem field_problem(FieldKind kind, double min, double max, bool open_min
       }
       return {};
     case FieldKind::number:
-      if (!std::isfinite(value.x)) return {"must be a finite number, got " + number_text(value.x)};
+      // Number fields are floats: finite means finite once converted (1e39 is not).
+      if (!std::isfinite(value.x) || std::fabs(value.x) > std::numeric_limits<float>::max()) {
+        return {"must be a finite number, got " + number_text(value.x)};
+      }
       if (!in_range(value.x, min, max, open_min, open_max)) {
         return {range_text(min, max, open_min, open_max) + ", got " + number_text(value.x)};
       }

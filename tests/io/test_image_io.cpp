@@ -257,6 +257,75 @@ TEST(ImageIo, ReadPngRejectsNonPngAndTruncatedFiles) {
   }
 }
 
+// CRC-32 of PNG chunks (ISO 3309, polynomial 0xEDB88320), bit by bit as in the PNG spec's sample
+// code, so the test builds valid headers without the library under test.
+std::uint32_t png_crc(const std::string& bytes) {
+  std::uint32_t crc = 0xFFFFFFFFu;
+  for (const char byte : bytes) {
+    crc ^= static_cast<unsigned char>(byte);
+    for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+  }
+  return crc ^ 0xFFFFFFFFu;
+}
+
+std::string big_endian(std::uint32_t value) {
+  return {static_cast<char>(value >> 24), static_cast<char>(value >> 16),
+          static_cast<char>(value >> 8), static_cast<char>(value)};
+}
+
+std::string png_chunk(const std::string& type, const std::string& data) {
+  return big_endian(static_cast<std::uint32_t>(data.size())) + type + data +
+         big_endian(png_crc(type + data));
+}
+
+// A 57-byte PNG: a valid header for width x height 8-bit RGB, an empty IDAT, IEND.
+std::string png_header_only(std::uint32_t width, std::uint32_t height) {
+  const std::string ihdr =
+      big_endian(width) + big_endian(height) + std::string("\x08\x02\0\0\0", 5);
+  return std::string("\x89PNG\r\n\x1a\n", 8) + png_chunk("IHDR", ihdr) + png_chunk("IDAT", "") +
+         png_chunk("IEND", "");
+}
+
+// Found while writing fuzz/fuzz_png (by hand: the fuzzer cannot forge the header's CRC): the pixel
+// buffer (width x height x 3 bytes) was allocated from the header alone, so 57 bytes claiming
+// 100000 x 100000 asked for 30 GB (std::bad_alloc, or an AddressSanitizer abort). A header past
+// gloss's largest image (16384, scene/render_settings.h) is refused by libpng; one within it but
+// beyond what the file can inflate to (deflate: 1032:1) is refused before allocating. (The same
+// bound on libpng's own allocations, against a text chunk declaring 1.9 GB, cannot be seen from
+// here; fuzz/corpus/png replays that input.)
+TEST(ImageIo, ReadPngRefusesHeadersTheFileCannotHold) {
+  ScratchFolder folder;
+  const struct {
+    std::uint32_t width, height;
+    const char* words;
+  } cases[] = {{100000, 100000, "Invalid IHDR data"},
+               {16385, 1, "Invalid IHDR data"},
+               {16384, 16384, "claims 16384x16384 pixels, more than its 57 bytes can hold"},
+               // 8 x 2466 x 3 = 59184 bytes of pixels, 360 more than 1032 x 57 = 58824.
+               {8, 2466, "claims 8x2466 pixels"}};
+  for (const auto& c : cases) {
+    const std::string path = folder.file("header.png");
+    write_bytes(path, png_header_only(c.width, c.height));
+    ASSERT_EQ(read_bytes(path).size(), 57u);
+    try {
+      read_png(path);
+      ADD_FAILURE() << c.width << "x" << c.height << " was accepted";
+    } catch (const InputError& error) {
+      EXPECT_EQ(error.file(), path);
+      EXPECT_NE(std::string(error.what()).find(c.words), std::string::npos) << error.what();
+    }
+  }
+  // Within the bound (8 x 2450 x 3 = 58800 <= 58824) the header passes and libpng then finds
+  // the image data missing: still an InputError, after a buffer the file could have filled.
+  write_bytes(folder.file("small.png"), png_header_only(8, 2450));
+  try {
+    read_png(folder.file("small.png"));
+    ADD_FAILURE() << "an empty IDAT was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()).find("can hold"), std::string::npos) << error.what();
+  }
+}
+
 TEST(ImageIo, TermNamesAndImagesMatch) {
   TermImages terms;
   terms.emissive = Image(1, 1);

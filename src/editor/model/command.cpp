@@ -42,9 +42,17 @@ const Field<S>& table_field(const FieldTable<S>& table, FieldPart part, const st
   return *field;
 }
 
+// The value is checked with the field's own rule before the setter converts it: the conversion
+// to the member's type (int, float) is undefined outside its range, so validating the scene
+// afterwards is too late (`render height 1e400` from a script; found by fuzz/fuzz_script).
 template <class S>
 void set_in(const FieldTable<S>& table, FieldPart part, S& target, const SetField& c) {
-  table_field(table, part, c.key).set(target, c.value);
+  const Field<S>& field = table_field(table, part, c.key);
+  const FieldProblem problem = field_problem(field, c.value);
+  if (!problem.message.empty()) {
+    throw CommandError(std::string(to_string(part)) + " " + c.key + ": " + problem.message);
+  }
+  field.set(target, c.value);
 }
 
 void set_field(const SetField& c, Scene& scene) {

@@ -52,6 +52,28 @@ TEST(CommandLayer, AFailingCommandChangesNothing) {
   EXPECT_TRUE(same_scene(layer.scene(), test::two_sphere_scene()));
 }
 
+// A value is checked by its field's rule before the setter converts it to the member's type:
+// 1e300 for a float field (shininess) or an int field (spp) would be undefined behaviour there
+// (the script's `render height 6811e395`, found by fuzz/fuzz_script, is in test_script.cpp).
+TEST(CommandLayer, AValueBeyondTheMembersTypeIsRefusedBeforeConversion) {
+  CommandLayer layer(test::two_sphere_scene());
+  try {
+    layer.execute(test::set_shininess(0, 1e300));
+    ADD_FAILURE() << "shininess 1e300 was accepted";
+  } catch (const CommandError& e) {
+    EXPECT_NE(std::string(e.what()).find("must be a finite number"), std::string::npos) << e.what();
+  }
+  try {
+    layer.execute(test::set_render("spp", 1e300));
+    ADD_FAILURE() << "spp 1e300 was accepted";
+  } catch (const CommandError& e) {
+    EXPECT_NE(std::string(e.what()).find("render spp: must be a whole number"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(layer.scene().materials[0].shininess, 64.0f);
+  EXPECT_EQ(layer.undo_count(), 0u);
+}
+
 TEST(CommandLayer, UnknownPresetNamesTheNearestOne) {
   CommandLayer layer(test::two_sphere_scene());
   try {

@@ -181,6 +181,25 @@ TEST(Script, AnInvalidValueIsRefusedByTheOneValidator) {
   EXPECT_EQ(host.layer().scene().lights[0].attenuation, glm::vec3(1.0f, 0.0f, 0.0f));
 }
 
+// Found by fuzz/fuzz_script: `render height 6811e395` parses as a whole number (inf is whole) and
+// the setter converted inf to int before validation saw it (undefined behaviour; UBSan: "inf is
+// outside the range of representable values of type 'int'"). The value is now refused by the
+// field's own rule first, and the document is unchanged.
+TEST(Script, AnOutOfRangeWholeNumberIsRefusedBeforeItIsConverted) {
+  for (const char* value : {"6811e395", "-1e300", "3e9", "16385"}) {
+    RecordingHost host(test::two_sphere_scene());
+    const int height = host.layer().scene().render.height;
+    std::string errors;
+    const LineResult r = run_all(std::string("render height ") + value + "\n", host, errors);
+    EXPECT_EQ(r.status, 2) << value;
+    EXPECT_NE(errors.find("render height: must be a whole number from 1 to 16384"),
+              std::string::npos)
+        << errors;
+    EXPECT_EQ(host.layer().scene().render.height, height);
+    EXPECT_EQ(host.layer().undo_count(), 0u);
+  }
+}
+
 TEST(Script, UndoWithNothingToUndoIsAnError) {
   RecordingHost host(test::two_sphere_scene());
   std::string errors;
