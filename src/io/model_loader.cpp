@@ -23,6 +23,7 @@
 
 #include "base/error.h"
 #include "io/model_material.h"
+#include "io/model_process.h"
 
 namespace gloss {
 
@@ -221,18 +222,9 @@ bool is_model_file(const std::string& path) {
   return std::find(known.begin(), known.end(), ext) != known.end();
 }
 
-Model load_model(const std::string& path, const ModelOptions& options) {
-  std::error_code fs_error;
-  if (std::filesystem::is_directory(path, fs_error)) throw InputError(path, "is a folder");
-  if (!std::ifstream(path, std::ios::binary)) throw InputError(path, "cannot open file");
-  if (!is_model_file(path)) {
-    throw InputError(path, "unknown model format '" + lower_extension(path) +
-                               "' (gloss reads .obj, .ply, .stl, .gltf and .glb)");
-  }
-  if (!(options.crease_angle >= 0.0f && options.crease_angle <= 180.0f)) {
-    throw InputError(path, "crease angle must be 0..180 degrees");
-  }
-
+namespace {
+// The import proper, run in a child process by load_model (model_process.h says why).
+Model import_with_assimp(const std::string& path, const ModelOptions& options) {
   Assimp::Importer importer;
   importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, kRemovedComponents);
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
@@ -319,6 +311,22 @@ Model load_model(const std::string& path, const ModelOptions& options) {
                       model.parts.end());
   }
   return model;
+}
+}  // namespace
+
+Model load_model(const std::string& path, const ModelOptions& options) {
+  std::error_code fs_error;
+  if (std::filesystem::is_directory(path, fs_error)) throw InputError(path, "is a folder");
+  if (!std::ifstream(path, std::ios::binary)) throw InputError(path, "cannot open file");
+  if (!is_model_file(path)) {
+    throw InputError(path, "unknown model format '" + lower_extension(path) +
+                               "' (gloss reads .obj, .ply, .stl, .gltf and .glb)");
+  }
+  if (!(options.crease_angle >= 0.0f && options.crease_angle <= 180.0f)) {
+    throw InputError(path, "crease angle must be 0..180 degrees");
+  }
+  return import_in_child_process(
+      path, [&options](const std::string& file) { return import_with_assimp(file, options); });
 }
 
 }  // namespace gloss
