@@ -229,6 +229,11 @@ std::vector<NamedMaterial> load_mtl(const std::string& path) {
       // The name is the rest of the line: some tools write names with spaces.
       const std::string name = trim(trimmed.substr(tokens[0].text.size()));
       if (name.empty()) throw InputError(path, "newmtl without a name", line_number);
+      // A carriage return inside a line cannot be written back to MTL (save_mtl would refuse
+      // the name it read; found by fuzz/fuzz_mtl): refused here, where the file is at fault.
+      if (name.find('\r') != std::string::npos) {
+        throw InputError(path, "material name contains a carriage return", line_number);
+      }
       for (std::size_t i = 0; i < materials.size(); ++i) {
         if (materials[i].first == name) {
           throw InputError(path,

@@ -288,5 +288,21 @@ TEST(MaterialIo, DuplicateNamesCannotBeSaved) {
   EXPECT_TRUE(folder.entries().empty());
 }
 
+// fuzz/fuzz_mtl found a name the reader took and save_mtl refused: a carriage return inside the
+// line (fuzz/corpus/mtl/name_with_inner_cr.mtl). It is refused where it is read, with its line.
+TEST(MaterialIo, AMtlNameWithACarriageReturnInsideIsRefusedWithItsLine) {
+  ScratchFolder folder;
+  const std::string path = folder.file("cr.mtl");
+  std::ofstream(path, std::ios::binary) << "newmtl ok\nKd 1 1 1\nnewmtl bad\r.5\nKd 0.8 0.7 0.5\n";
+  try {
+    load_mtl(path);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), path);
+    EXPECT_EQ(e.line(), 3);
+    EXPECT_EQ(e.message(), "material name contains a carriage return");
+  }
+}
+
 }  // namespace
 }  // namespace gloss
