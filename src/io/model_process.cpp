@@ -1,13 +1,17 @@
 #include "io/model_process.h"
 
+#include <poll.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <new>
 #include <stdexcept>
@@ -218,6 +222,16 @@ std::string describe(int status) {
 
 }  // namespace
 
+int import_time_limit_seconds() {
+  const char* text = std::getenv(kImportTimeVariable);
+  if (text != nullptr) {
+    char* end = nullptr;
+    const long value = std::strtol(text, &end, 10);
+    if (end != text && *end == '\0' && value >= 1 && value <= 86400) return static_cast<int>(value);
+  }
+  return kDefaultImportTimeSeconds;
+}
+
 Model import_in_child_process(const std::string& path,
                               const std::function<Model(const std::string&)>& import) {
   int fds[2];
@@ -238,15 +252,33 @@ Model import_in_child_process(const std::string& path,
   // it has been read.
   std::string bytes;
   char buffer[65536];
+  const int limit_s = import_time_limit_seconds();
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(limit_s);
+  bool timed_out = false;
   for (;;) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+        deadline - std::chrono::steady_clock::now());
+    pollfd wait_for{fds[0], POLLIN, 0};
+    const int ready = ::poll(&wait_for, 1, static_cast<int>(std::max<long long>(0, left.count())));
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready == 0) {
+      timed_out = true;
+      break;
+    }
     const ssize_t n = ::read(fds[0], buffer, sizeof buffer);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) break;
     bytes.append(buffer, static_cast<std::size_t>(n));
   }
   ::close(fds[0]);
+  if (timed_out) ::kill(pid, SIGKILL);
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (timed_out) {
+    throw InputError(path, "the model library did not finish reading this file in " +
+                               std::to_string(limit_s) + " s (" + kImportTimeVariable +
+                               " sets the limit)");
   }
   const bool clean = WIFEXITED(status) && WEXITSTATUS(status) == 0 && !bytes.empty();
   if (!clean)

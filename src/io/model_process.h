@@ -13,9 +13,17 @@
 
 namespace gloss {
 
+// A hostile file can also keep the library busy for ever (fuzzing found a 100-byte PLY header
+// that does): the child gets GLOSS_IMPORT_TIME_LIMIT_S seconds (default 120; a million-triangle
+// OBJ imports in a few seconds here), then is killed and the file refused.
+inline const char* const kImportTimeVariable = "GLOSS_IMPORT_TIME_LIMIT_S";
+constexpr int kDefaultImportTimeSeconds = 120;
+int import_time_limit_seconds();
+
 // Calls import(path) in a forked child and returns its Model. An InputError thrown in the child
 // is rethrown here as it was; a child that crashes, is killed, or exits without a model becomes
-// InputError(path, "the model library failed on this file (...)").
+// InputError(path, "the model library failed on this file (...)"); one that runs past the time
+// limit is killed and refused the same way.
 Model import_in_child_process(const std::string& path,
                               const std::function<Model(const std::string&)>& import);
 

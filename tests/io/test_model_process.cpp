@@ -3,6 +3,9 @@
 // clean InputError naming the file, with this process unharmed.
 #include "io/model_process.h"
 
+#include <unistd.h>
+
+#include <chrono>
 #include <csignal>
 #include <cstdlib>
 #include <string>
@@ -84,6 +87,23 @@ TEST(ModelProcess, AChildThatExitsOrRunsOutOfMemoryIsAnInputError) {
                 .message()
                 .find("ran out of memory"),
             std::string::npos);
+}
+
+// A 100-byte PLY header found by fuzz_ply keeps assimp busy for ever: the child is killed at
+// the limit (1 s here) and the file refused, naming the variable that sets the limit.
+TEST(ModelProcess, AnImportPastTheTimeLimitIsKilledAndRefused) {
+  setenv(kImportTimeVariable, "1", 1);
+  const auto start = std::chrono::steady_clock::now();
+  const InputError e = error_of([](const std::string&) -> Model {
+    for (;;) pause();
+  });
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  unsetenv(kImportTimeVariable);
+  EXPECT_EQ(e.message(),
+            "the model library did not finish reading this file in 1 s "
+            "(GLOSS_IMPORT_TIME_LIMIT_S sets the limit)");
+  EXPECT_GE(seconds, 0.9) << "returned before the limit";  // a bound, not a speed claim
 }
 
 }  // namespace
