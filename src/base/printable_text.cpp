@@ -8,14 +8,14 @@ bool is_continuation(unsigned char byte) {
   return (byte & 0xC0u) == 0x80u;
 }
 
+}  // namespace
+
 void append_hex_escape(std::string& out, unsigned char byte) {
   const char* const digits = "0123456789ABCDEF";
   out += "\\x";
   out += digits[byte >> 4];
   out += digits[byte & 0x0Fu];
 }
-
-}  // namespace
 
 std::size_t utf8_sequence_length(const std::string& text, std::size_t i) {
   const std::size_t left = text.size() - i;

@@ -11,6 +11,10 @@ namespace gloss {
 // point above U+10FFFF, a truncated sequence). RFC 3629, Table 3-7 of the Unicode standard.
 std::size_t utf8_sequence_length(const std::string& text, std::size_t i);
 
+// Appends byte as \xHH (two uppercase hex digits), the escape of printable_text and of
+// io/name_escape.h alike.
+void append_hex_escape(std::string& out, unsigned char byte);
+
 // text with every byte that could reach a terminal as a control written as \xHH (two uppercase
 // hex digits): C0 controls (0x00-0x1F, including \n, \r, \t and ESC), DEL (0x7F), the C1
 // controls U+0080-U+009F (UTF-8 C2 80 to C2 9F, which some terminals obey) and every byte that

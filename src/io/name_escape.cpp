@@ -19,13 +19,6 @@ bool escape_at(const std::string& text, std::size_t i) {
          hex_value(text[i + 2]) >= 0 && hex_value(text[i + 3]) >= 0;
 }
 
-void append_escape(std::string& out, unsigned char byte) {
-  const char* const digits = "0123456789ABCDEF";
-  out += "\\x";
-  out += digits[byte >> 4];
-  out += digits[byte & 0x0Fu];
-}
-
 }  // namespace
 
 std::string escape_name(const std::string& name) {
@@ -35,7 +28,7 @@ std::string escape_name(const std::string& name) {
   while (i < name.size()) {
     const std::size_t length = utf8_sequence_length(name, i);
     if (length == 0 || escape_at(name, i)) {
-      append_escape(out, static_cast<unsigned char>(name[i]));
+      append_hex_escape(out, static_cast<unsigned char>(name[i]));
       ++i;
     } else {
       out.append(name, i, length);

@@ -200,7 +200,8 @@ long long packet_light(const SamplePacket& packet, const SurfaceLanes& surfaces,
       const Surface s = surfaces.get(i);
       const glm::vec3 org = shadow_ray_origin(s, packet.t[i]);
       set_packet_ray(ray, i, org, light.position - org, kShadowRayEnd);
-      ray.id[i] = shadow_ray_id(*ctx.scene, packet.object[i], s);
+      // Only spheres can find their own origin (self_shadow.h); set_packet_ray left "none".
+      if (ctx.plan.spheres) ray.id[i] = shadow_ray_id(*ctx.scene, packet.object[i], s);
     }
     rays = count_set_lanes(lit);
     RTCIntersectContext context = coherent_context();
