@@ -134,9 +134,10 @@ void gouraud_weights(const Job<T>& job, const Mesh& mesh, std::uint32_t prim,
 
 // One sample: trace, recompute the hit in T, shade every light, add to sum.
 template <class T>
-void shade_sample(const Job<T>& job, int x, int y, int s, PixelSums<T>& sum, SampleKey& key) {
+void shade_sample(const Job<T>& job, int x, int y, int s, int count, PixelSums<T>& sum,
+                  SampleKey& key) {
   const Scene& scene = *job.scene;
-  const SampleOffset o = sample_offset(scene.render.seed, x, y, s, job.spp);
+  const SampleOffset o = sample_offset(scene.render.seed, x, y, s, count);
   const Vec3<T> dir =
       camera_direction<T>(job.camera, T(x) + T(o.dx), T(y) + T(o.dy), job.width, job.height);
   RTCRayHit rh;
@@ -249,21 +250,25 @@ TermImages render_reference(const Scene& scene, const ReferenceOptions& options)
   out.total = out.emissive = out.ambient = out.diffuse = out.specular = Image(w, h);
   std::vector<SampleKey> first(options.edges != nullptr ? pixels : 0);
   std::vector<std::uint8_t> mixed(first.size(), 0);
-  const T inv_spp = T(1) / T(job.spp);
+  if (options.refined != nullptr && options.refined->size() != pixels) {
+    throw std::invalid_argument("render_reference: refined mask of the wrong size");
+  }
   const Vec3<T> background(scene.background);
 
   auto rows = [&](const tbb::blocked_range<int>& range) {
     for (int y = range.begin(); y != range.end(); ++y) {
       if (options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed)) return;
       for (int x = 0; x < w; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * w + x;
+        const int count = options.refined != nullptr && (*options.refined)[i] == 0 ? 1 : job.spp;
+        const T inv_spp = T(1) / T(count);
         PixelSums<T> sum;
         SampleKey key0, key;
         bool is_mixed = false;
-        for (int s = 0; s < job.spp; ++s) {
-          shade_sample(job, x, y, s, sum, s == 0 ? key0 : key);
+        for (int s = 0; s < count; ++s) {
+          shade_sample(job, x, y, s, count, sum, s == 0 ? key0 : key);
           if (s > 0 && !is_mixed) is_mixed = discontinuous(key0, key);
         }
-        const std::size_t i = static_cast<std::size_t>(y) * w + x;
         const Vec3<T> e = sum.emissive * inv_spp, a = sum.ambient * inv_spp,
                       d = sum.diffuse * inv_spp, sp = sum.specular * inv_spp;
         out.emissive.pixels[i] = glm::vec3(e);
