@@ -204,6 +204,8 @@ std::vector<Setting> settings_of(Knob knob, const Session& session, const Tradeo
           std::to_string(s), [s](Config& c) { c.spp = s; }, s == o.reference_spp);
     }
   } else if (knob == Knob::adaptive) {
+    add(
+        "uniform", [](Config&) {}, false);  // the base: what adaptive sampling is weighed against
     for (float t : o.adaptive_thresholds) {
       add(
           std::to_string(o.adaptive_spp) + " t=1/" + std::to_string(std::lround(1.0f / t)),
@@ -269,6 +271,7 @@ TradeoffOptions quick_tradeoff_options() {
   o.runs = 3;
   o.reference_spp = 64;
   o.spp_levels = {1, 2, 4, 8, 16};
+  o.adaptive_thresholds = {1.0f / 16, 1.0f / 64};
   return o;
 }
 

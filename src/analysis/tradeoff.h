@@ -47,12 +47,14 @@ void tradeoff_image_size(const Scene& scene, const TradeoffOptions& options, int
                          int& height);
 
 // Settings for a quick look from the editor's Quality panel: 256 pixels wide, 3 runs, a 64-spp
-// reference, spp up to 16. A few seconds on the shipped scenes.
+// reference, spp up to 16, adaptive at thresholds 1/16 and 1/64. A few seconds on the shipped
+// scenes.
 TradeoffOptions quick_tradeoff_options();
 
 struct TradeoffRow {
   Knob knob = Knob::spp;
-  std::string setting;  // spp: "1".."64"; adaptive: "16 t=1/64" (spp, threshold); tessellation: "2".."32"; pow: "exact", "fast";
+  std::string setting;  // spp: "1".."64"; adaptive: "uniform" (the base), "16 t=1/64" (spp and
+                        // refine threshold); tessellation: "2".."32"; pow: "exact", "fast";
                         // precision: "float", "double"; shading: "per-pixel", "gouraud";
                         // resolution: "1/8".."1"; shadows: "on", "off"
   double time_ms = 0;   // median wall time of one render: BVH build, trace, shade (resolution:
