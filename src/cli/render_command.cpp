@@ -173,12 +173,13 @@ void run_render(RenderArgs args) {
   options.terms = !args.terms_dir.empty();
   const auto start = std::chrono::steady_clock::now();
   TermImages images;
+  std::vector<std::uint32_t> refined;  // adaptive sampling's refined pixels
+  const bool adaptive = scene.render.spp > 1 && scene.render.sampling == Sampling::adaptive;
   if (args.precision == "double") {
     // Adaptive sampling: the fast renderer's placement, then every sample in double.
-    std::vector<std::uint32_t> refined;
     std::vector<std::uint8_t> mask;
     ReferenceOptions reference;
-    if (scene.render.spp > 1 && scene.render.sampling == Sampling::adaptive) {
+    if (adaptive) {
       options.terms = false;
       options.refined = &refined;
       render(scene, options);
@@ -188,6 +189,7 @@ void run_render(RenderArgs args) {
     }
     images = render_reference<double>(scene, reference);
   } else {
+    options.refined = &refined;
     images = render(scene, options);
   }
   const double ms =
@@ -207,7 +209,15 @@ void run_render(RenderArgs args) {
   char time_text[64];
   std::snprintf(time_text, sizeof time_text, "%.1f ms", ms);
   std::cout << "rendered " << args.scene << " (" << settings_summary(scene.render, args.precision)
-            << ") in " << time_text << "\n";
+            << ") in " << time_text;
+  if (adaptive) {
+    char share[64];
+    std::snprintf(share, sizeof share, "; refined %.1f%% of the pixels",
+                  100.0 * static_cast<double>(refined.size()) /
+                      (static_cast<double>(scene.render.width) * scene.render.height));
+    std::cout << share;
+  }
+  std::cout << "\n";
   for (const std::string& path : writer.commit()) std::cout << "wrote " << path << "\n";
   for (const std::string& warning : warnings)
     std::cerr << "warning: " << printable_text(warning) << "\n";
