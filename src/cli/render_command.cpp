@@ -14,6 +14,7 @@
 
 #include <unistd.h>
 
+#include "base/assets.h"
 #include "base/error.h"
 #include "base/printable_text.h"
 #include "base/text_distance.h"
@@ -194,9 +195,9 @@ void run_render(RenderArgs args) {
 void add_render_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("render", "Render a scene file to PNG / PFM images");
   auto args = std::make_shared<RenderArgs>();
-  sub->add_option(
-         "scene", args->scene,
-         "Scene file (JSON, docs/scene-format.md), or a PNG written by gloss (its embedded scene)")
+  sub->add_option("scene", args->scene,
+                  "Scene file (JSON, " + doc_path("scene-format.md") +
+                      "), or a PNG written by gloss (its embedded scene)")
       ->required();
   args->png_option = sub->add_option(
       "-o,--output", args->png,
