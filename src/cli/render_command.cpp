@@ -1,4 +1,5 @@
-// gloss-cli render SCENE.json [-o OUT.png] [--pfm OUT.pfm] [--terms DIR] [--width N] [--height N]
+// gloss-cli render SCENE.json|SHOT.png [-o OUT.png] [--pfm OUT.pfm] [--terms DIR] [--width N]
+// [--height N]
 //                  [--spp N] [--model phong|blinn-phong] [--shadows on|off] [--srgb]
 //                  [--sampling adaptive|uniform] [--aa-threshold T] [--precision float|double]
 // Options override the scene's render block; the result is validated again before rendering.
@@ -13,6 +14,7 @@
 
 #include <unistd.h>
 
+#include "base/assets.h"
 #include "base/error.h"
 #include "base/printable_text.h"
 #include "base/text_distance.h"
@@ -20,6 +22,7 @@
 #include "cli/commands.h"
 #include "engine/renderer.h"
 #include "io/image_io.h"
+#include "io/scene_in_png.h"
 #include "io/scene_loader.h"
 #include "reference/reference_renderer.h"
 
@@ -124,7 +127,7 @@ class OutputWriter {
  public:
   OutputWriter(const Scene& scene, const std::string& precision) : m_srgb(scene.render.srgb) {
     m_text = {{"Software", std::string("gloss ") + gloss_version()},
-              {"gloss:scene", scene_to_json_text(scene)},
+              {kSceneChunkKeyword, embedded_scene_text(scene)},
               {"gloss:settings", settings_summary(scene.render, precision)}};
   }
   ~OutputWriter() {
@@ -158,7 +161,9 @@ void run_render(RenderArgs args) {
   apply_overrides(args, scene);
 
   if (!*args.png_option && !*args.pfm_option && !*args.terms_option) {
-    args.png = fs::path(args.scene).stem().string() + ".png";  // in the current folder
+    // In the current folder; a PNG given as the scene is not overwritten by its own re-render.
+    const bool from_png = has_png_signature(args.scene);
+    args.png = fs::path(args.scene).stem().string() + (from_png ? "-rerender.png" : ".png");
   }
   if (!args.png.empty()) check_writable_folder(fs::path(args.png).parent_path(), args.png);
   if (!args.pfm.empty()) check_writable_folder(fs::path(args.pfm).parent_path(), args.pfm);
@@ -228,10 +233,14 @@ void run_render(RenderArgs args) {
 void add_render_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("render", "Render a scene file to PNG / PFM images");
   auto args = std::make_shared<RenderArgs>();
-  sub->add_option("scene", args->scene, "Scene file (JSON, docs/scene-format.md)")->required();
+  sub->add_option("scene", args->scene,
+                  "Scene file (JSON, " + doc_path("scene-format.md") +
+                      "), or a PNG written by gloss (its embedded scene)")
+      ->required();
   args->png_option = sub->add_option(
       "-o,--output", args->png,
-      "PNG output (8-bit, clamped); default <scene stem>.png when no output is given");
+      "PNG output (8-bit, clamped); default <scene stem>.png (<stem>-rerender.png for a PNG "
+      "scene) when no output is given");
   args->pfm_option = sub->add_option("--pfm", args->pfm, "PFM output (linear float, unclamped)");
   args->terms_option = sub->add_option(
       "--terms", args->terms_dir,

@@ -17,6 +17,7 @@
 #include "editor/model/command_layer.h"
 #include "editor/model/quality_measurement.h"
 #include "editor/model/recent_files.h"
+#include "editor/model/unsaved_guard.h"
 #include "editor/model/view_settings.h"
 #include "editor/ui/file_browser.h"
 #include "editor/ui/notices.h"
@@ -75,7 +76,8 @@ struct App {
   QualityMeasurement quality;  // the Quality window's speed/accuracy measurement
   FileBrowser browser;
   Notices notices;
-  RecentFiles recent;
+  RecentLists recent;    // scenes, models and material files, each its own list
+  UnsavedGuard unsaved;  // the save / discard / cancel question before opening a scene
   std::filesystem::path config_folder;
   std::optional<Autosaver> autosaver;
   std::string autosave_failure_shown;        // the autosave failure already announced as a notice
@@ -118,6 +120,9 @@ bool execute(App& app, const Command& command);
 // app_actions.cpp: file and export actions. Each throws InputError / RuntimeFailure with a
 // message for the UI; on failure the document is unchanged.
 void open_scene(App& app, const std::string& path);
+// Opens path, first asking save / discard / cancel when the document has unsaved changes (the
+// question is a modal; scripts never ask). Throws as open_scene when it opens at once.
+void request_open_scene(App& app, const std::string& path);
 void add_model(App& app, const std::string& path);
 void save_scene_as(App& app, const std::string& path);
 void load_materials(App& app, const std::string& path);
@@ -130,7 +135,7 @@ void poll_exports(App& app);
 void capture_window(App& app);
 // Runs the file browser's chosen action, keeping the browser open with the error on failure.
 void browser_action(App& app, const std::string& path);
-void remember_recent(App& app, const std::string& path);
+void remember_recent(App& app, RecentKind kind, const std::string& path);
 void request_quit(App& app);
 void undo(App& app);
 void redo(App& app);

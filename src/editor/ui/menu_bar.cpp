@@ -18,14 +18,14 @@ void file_menu(App& app) {
   if (ImGui::MenuItem("Open scene...", "Ctrl+O")) {
     app.browser.show(BrowsePurpose::open_scene, scene_folder(app), "");
   }
-  if (ImGui::BeginMenu("Open recent", !app.recent.paths.empty())) {
+  if (ImGui::BeginMenu("Open recent", !app.recent.scenes.paths.empty())) {
     std::string chosen;  // opening reorders the list: act after the loop
-    for (const std::string& path : app.recent.paths) {
+    for (const std::string& path : app.recent.scenes.paths) {
       if (ImGui::MenuItem(path.c_str())) chosen = path;
     }
     if (!chosen.empty()) {
       try {
-        open_scene(app, chosen);
+        request_open_scene(app, chosen);
       } catch (const std::exception& e) {
         app.notices.error(e.what(), app.now_s());
       }
