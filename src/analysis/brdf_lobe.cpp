@@ -33,9 +33,9 @@ LobeSample lobe_sample(const Material& material, const LobeParams& params, doubl
   s.diffuse = kd * f.diffuse_weight;
   const double phong_norm =
       params.energy_normalize ? energy_normalization(ShadingModel::phong, params.phong_alpha) : 1.0;
-  const double blinn_norm = params.energy_normalize
-                                ? energy_normalization(ShadingModel::blinn_phong, params.blinn_alpha)
-                                : 1.0;
+  const double blinn_norm =
+      params.energy_normalize ? energy_normalization(ShadingModel::blinn_phong, params.blinn_alpha)
+                              : 1.0;
   s.phong = ks * (f.spec_weight * specular_power(f.cos_phong, params.phong_alpha) * phong_norm);
   s.blinn = ks * (f.spec_weight * specular_power(f.cos_blinn, params.blinn_alpha) * blinn_norm);
   return s;

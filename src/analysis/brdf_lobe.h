@@ -28,12 +28,12 @@ struct LobeParams {
 
 // Reflected radiance towards one outgoing direction, linear RGB, split by term.
 struct LobeSample {
-  double theta_deg = 0.0;     // outgoing angle from the normal (frame above)
-  glm::dvec3 diffuse{0.0};    // kd * ndl: the same in every direction (the diffuse floor)
-  glm::dvec3 phong{0.0};      // ks * c^alpha (* normalisation), c = R . V
-  glm::dvec3 blinn{0.0};      // ks * c^alpha (* normalisation), c = N . H
-  double cos_phong = 0.0;     // R . V, 0 where the light adds nothing
-  double cos_blinn = 0.0;     // N . H, 0 where the light adds nothing
+  double theta_deg = 0.0;   // outgoing angle from the normal (frame above)
+  glm::dvec3 diffuse{0.0};  // kd * ndl: the same in every direction (the diffuse floor)
+  glm::dvec3 phong{0.0};    // ks * c^alpha (* normalisation), c = R . V
+  glm::dvec3 blinn{0.0};    // ks * c^alpha (* normalisation), c = N . H
+  double cos_phong = 0.0;   // R . V, 0 where the light adds nothing
+  double cos_blinn = 0.0;   // N . H, 0 where the light adds nothing
 };
 
 struct BrdfLobe {

@@ -16,9 +16,9 @@ namespace gloss {
 
 // One point light's factors at the pixel's hit.
 struct LightBreakdown {
-  double distance = 0.0;      // d = |P_i - p|, world units
-  double ndl = 0.0;           // dot(n, l) before the ndl <= 0 rule (0 when d = 0)
-  double cosine = 0.0;        // c of the scene's model (R . V or N . H); 0 where the light adds nothing
+  double distance = 0.0;  // d = |P_i - p|, world units
+  double ndl = 0.0;       // dot(n, l) before the ndl <= 0 rule (0 when d = 0)
+  double cosine = 0.0;    // c of the scene's model (R . V or N . H); 0 where the light adds nothing
   double cosine_power = 0.0;  // c^alpha; 0 where c <= 0 or the light adds nothing
   double attenuation = 1.0;   // 1 / (c0 + c1 d + c2 d^2)
   double visibility = 1.0;    // 0 when shadows are on and the segment to the light is blocked
@@ -27,21 +27,21 @@ struct LightBreakdown {
 };
 
 struct PixelBreakdown {
-  int x = 0, y = 0;               // the pixel, of the scene's render size
-  int width = 0, height = 0;      // the scene's render size
-  bool hit = false;               // false: the primary ray met no surface (total = background)
-  int object = -1;                // index into scene.objects, -1 on a miss
-  std::string object_name;        // as in the scene ("" when unnamed)
-  int material = -1;              // index into scene.materials
+  int x = 0, y = 0;           // the pixel, of the scene's render size
+  int width = 0, height = 0;  // the scene's render size
+  bool hit = false;           // false: the primary ray met no surface (total = background)
+  int object = -1;            // index into scene.objects, -1 on a miss
+  std::string object_name;    // as in the scene ("" when unnamed)
+  int material = -1;          // index into scene.materials
   std::string material_name;
   ShadingModel model = ShadingModel::phong;
-  double alpha = 0.0;             // the material's shininess
-  double energy_factor = 1.0;     // the normalisation applied to specular (1 when off)
-  glm::dvec3 position{0.0};       // p, world units
-  glm::dvec3 normal{0.0};         // n, shading normal on the viewer's side
-  glm::dvec3 view{0.0};           // v, unit, towards the eye
+  double alpha = 0.0;          // the material's shininess
+  double energy_factor = 1.0;  // the normalisation applied to specular (1 when off)
+  glm::dvec3 position{0.0};    // p, world units
+  glm::dvec3 normal{0.0};      // n, shading normal on the viewer's side
+  glm::dvec3 view{0.0};        // v, unit, towards the eye
   glm::dvec3 emissive{0.0}, ambient{0.0}, diffuse{0.0}, specular{0.0};
-  glm::dvec3 total{0.0};          // shading/total.h form_total of the four (background on a miss)
+  glm::dvec3 total{0.0};  // shading/total.h form_total of the four (background on a miss)
   std::vector<LightBreakdown> lights;  // one per scene light, in order
 };
 

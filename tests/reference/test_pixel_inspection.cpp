@@ -37,9 +37,9 @@ TEST(PixelInspection, HeadOnSphereCentreMatchesHandComputation) {
   Scene scene = head_on_sphere_scene();
   scene.lights.push_back(make_light({0, -5, 0}));
   scene.lights.push_back(make_light({0, 0, 10}));
-  const int grey = add_material(scene, "blocker",
-                                make_material(glm::vec3(0.0f), glm::vec3(0.5f), glm::vec3(0.0f),
-                                              glm::vec3(0.0f), 1.0f));
+  const int grey = add_material(
+      scene, "blocker",
+      make_material(glm::vec3(0.0f), glm::vec3(0.5f), glm::vec3(0.0f), glm::vec3(0.0f), 1.0f));
   add_sphere(scene, {0, 0, 7.5f}, 0.5f, grey);
   scene.render.shadows = true;
   const PixelBreakdown b = inspect_pixel(scene, 50, 50);
