@@ -45,7 +45,19 @@ bool Viewport::render_pixel_at(ImVec2 p, ViewMode mode, int width, int height, i
   return false;
 }
 
-// A click with the inspector open pins the pixel under it, or unpins it when it is the pinned one.
+// Screen size of one render pixel in pane i and the marker's half width around it.
+namespace {
+float marker_radius(const Pane& pane, int width) {
+  return std::max(4.0f, 0.5f * pane.size.x / static_cast<float>(width) + 3.0f);
+}
+ImVec2 pixel_centre(const Pane& pane, int x, int y, int width, int height) {
+  return ImVec2(pane.min.x + (static_cast<float>(x) + 0.5f) * pane.size.x / width,
+                pane.min.y + (static_cast<float>(y) + 0.5f) * pane.size.y / height);
+}
+}  // namespace
+
+// A click with the inspector open pins the pixel under it; a click on the pinned pixel's marker
+// unpins it.
 void Viewport::pin_inspected_pixel(App& app, ImVec2 p) const {
   ViewSettings& view = app.view;
   const RenderSettings& render = app.commands.scene().render;
@@ -53,9 +65,15 @@ void Viewport::pin_inspected_pixel(App& app, ImVec2 p) const {
   if (!view.show_inspector || !render_pixel_at(p, view.mode, render.width, render.height, x, y)) {
     return;
   }
-  if (view.inspect_pinned && view.inspect_x == x && view.inspect_y == y) {
-    view.inspect_pinned = false;
-    return;
+  if (view.inspect_pinned) {
+    const Pane& pane = m_panes[pane_at(p)];
+    const ImVec2 c =
+        pixel_centre(pane, view.inspect_x, view.inspect_y, render.width, render.height);
+    const float r = marker_radius(pane, render.width) + 1.0f;
+    if (std::abs(p.x - c.x) <= r && std::abs(p.y - c.y) <= r) {
+      view.inspect_pinned = false;
+      return;
+    }
   }
   view.inspect_pinned = true;
   view.inspect_x = x;
@@ -70,11 +88,9 @@ void Viewport::draw_inspected_pixel(const App& app, ImDrawList* list) const {
   for (int i = 0; i < m_pane_count; ++i) {
     if (view.mode == ViewMode::ab && i == 3) continue;
     const Pane& pane = m_panes[i];
-    const float sx = pane.size.x / static_cast<float>(render.width);
-    const float sy = pane.size.y / static_cast<float>(render.height);
-    const ImVec2 c(pane.min.x + (static_cast<float>(view.inspect_x) + 0.5f) * sx,
-                   pane.min.y + (static_cast<float>(view.inspect_y) + 0.5f) * sy);
-    const float r = std::max(4.0f, 0.5f * sx + 3.0f);
+    const ImVec2 c =
+        pixel_centre(pane, view.inspect_x, view.inspect_y, render.width, render.height);
+    const float r = marker_radius(pane, render.width);
     list->AddRect(ImVec2(c.x - r - 1.0f, c.y - r - 1.0f), ImVec2(c.x + r + 1.0f, c.y + r + 1.0f),
                   IM_COL32(0, 0, 0, 255), 0.0f, 0, 3.0f);
     list->AddRect(ImVec2(c.x - r, c.y - r), ImVec2(c.x + r, c.y + r), IM_COL32(255, 60, 200, 255),
