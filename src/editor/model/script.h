@@ -23,7 +23,8 @@ struct ScreenshotAction {
 };
 struct ViewAction {
   ViewMode mode = ViewMode::render;
-  TermView term = TermView::total;  // for ViewMode::single
+  TermView term = TermView::total;   // for ViewMode::single
+  float lobe_elevation_deg = -1.0f;  // for ViewMode::lobe: 0..90, or -1 to keep the current one
 };
 struct ExposureAction {
   float stops = 0.0f;
@@ -52,9 +53,16 @@ struct QualityAction {
   std::string path;  // csv only
 };
 
-using ScriptAction = std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction,
-                                  ViewAction, ExposureAction, SelectAction, StatsAction,
-                                  SleepAction, AnimateAction, QuitAction, QualityAction>;
+// Prints what the contract computed at the centre of pixel (x, y) of the document's render size
+// (editor/model/pixel_report.h) and pins the editor's pixel inspector there.
+struct InspectAction {
+  int x = 0, y = 0;
+};
+
+using ScriptAction =
+    std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction, ViewAction,
+                 ExposureAction, SelectAction, StatsAction, SleepAction, AnimateAction, QuitAction,
+                 QualityAction, InspectAction>;
 
 struct ScriptLine {
   int line = 0;  // 1-based line number in the file

@@ -193,6 +193,7 @@ void draw_layout(App& app) {
   const ImVec2 viewport_pos(left + side, top);
   const ImVec2 viewport_size(std::max(main->Size.x - 2.0f * side, 1.0f), height);
   app.viewport.draw(app, viewport_pos, viewport_size);
+  draw_inspector(app, viewport_pos, viewport_size);
   draw_status_bar(app, ImVec2(left, top + height), ImVec2(main->Size.x, status_h));
   // The Quality window opens over the viewport's right side (its table needs more width than a
   // side panel has); it can be moved, resized and closed.

@@ -3,6 +3,7 @@
 // viewport and panels' state, and what runs in the background (exports, autosave, a script).
 // main.cpp creates one App after the GL context exists and calls run_frame until it quits.
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <future>
 #include <memory>
@@ -24,6 +25,7 @@
 #include "editor/ui/swatches.h"
 #include "editor/ui/viewport.h"
 #include "io/material_io.h"
+#include "reference/pixel_inspection.h"
 
 namespace gloss {
 
@@ -60,6 +62,15 @@ struct KeyPress {
   bool repeat = false;
 };
 
+// The pixel inspector's readers (inspector_panel.cpp) and the pixel under the cursor.
+struct InspectorState {
+  std::unique_ptr<PixelInspector> a, b;  // the document (A/B view: its Phong and Blinn sides)
+  std::uint64_t revision = 0;            // document revision they were built for
+  bool ab = false, keep = false;         // the A/B split and exponent rule they were built for
+  std::string error;                     // why they could not be built
+  int hover_x = -1, hover_y = -1;        // render pixel under the cursor this frame, -1: none
+};
+
 struct App {
   App(GLFWwindow* window, Scene scene);
   ~App();
@@ -93,6 +104,7 @@ struct App {
   ImVec2 cursor_position;             // the cursor as of the last event (window pixels)
   ImVec2 press_position[3];           // where each mouse button last went down (window pixels)
   FrameTimes frame_times;
+  InspectorState inspector;
 
   std::string title;          // the window title last set
   double last_frame_s = 0.0;  // start of the previous frame (orbit-light animation step)
@@ -155,5 +167,9 @@ void draw_view_panel(App& app, ImVec2 pos, ImVec2 size);
 void draw_status_bar(App& app, ImVec2 pos, ImVec2 size);
 void draw_help_window(App& app);
 void draw_quality_panel(App& app, ImVec2 pos, ImVec2 size);
+// The lobe view, drawn by the viewport in its place when view.mode is ViewMode::lobe.
+void draw_lobe_view(App& app, ImVec2 pos, ImVec2 size);
+// The pixel inspector window (view.show_inspector).
+void draw_inspector(App& app, ImVec2 viewport_pos, ImVec2 viewport_size);
 
 }  // namespace gloss

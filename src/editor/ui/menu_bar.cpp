@@ -105,6 +105,10 @@ void view_menu(App& app) {
   if (ImGui::MenuItem("A/B Phong vs Blinn-Phong", "4", view.mode == ViewMode::ab)) {
     view.mode = ViewMode::ab;
   }
+  if (ImGui::MenuItem("BRDF lobe of the selected material", "5", view.mode == ViewMode::lobe)) {
+    view.mode = ViewMode::lobe;
+  }
+  ImGui::MenuItem("Pixel inspector", "I", &view.show_inspector);
   ImGui::Separator();
   const bool srgb = app.commands.scene().render.srgb;
   if (ImGui::MenuItem("sRGB display encoding", nullptr, srgb)) {

@@ -24,18 +24,6 @@ float shown_heat_scale(const ViewSettings& view, float max_difference) {
   return view.heat_auto_scale ? std::max(max_difference, 1e-4f) : view.heat_scale;
 }
 
-// The document with every exponent moved to model (document.h's rule) when keep is set.
-Scene with_model(const Scene& scene, ShadingModel model, bool keep) {
-  Scene out = scene;
-  if (keep) {
-    for (Material& m : out.materials) {
-      m.shininess = exponent_for_model(m.shininess, scene.render.model, model);
-    }
-  }
-  out.render.model = model;
-  return out;
-}
-
 }  // namespace
 
 Viewport::Viewport() {
@@ -117,7 +105,12 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
                        height != m_render_height || terms != m_pushed_terms ||
                        ab != (m_pushed_mode == ViewMode::ab) ||
                        (ab && view.keep_highlight_size != m_pushed_keep);
-  if (!changed) return;
+  if (!changed) {
+    // A mode switch that needs no new render (render, total alone, lobe) still counts as shown
+    // in the new mode (converged_and_shown compares it).
+    m_pushed_mode = view.mode;
+    return;
+  }
 
   if (m_pushed_any && revision != m_pushed_revision) {
     // now_s is the start of the frame in which the edit happened.
