@@ -160,19 +160,19 @@ bool ProgressiveRenderer::Impl::step() {
   ChangeClass redo = ChangeClass::none;  // what a cancellation leaves to do
   bool ok = true;
   bool factors_done = false;  // the fused first pass builds the pixel factors too
-  // ... and, when only the total is shown, the frame's total image as well.
+  bool total_done = false;    // ... and, when only the total is shown, the frame's total image
   auto frame = std::make_shared<RenderedFrame>();
   Image* const total = worker_terms ? nullptr : &frame->images.total;
   if (dirty == ChangeClass::full) {
     start_level(options.preview_levels > 0 ? 0 : options.preview_levels);
     redo = ChangeClass::full;
     ok = trace_single_sample(cache, ctx, factors, total);
-    factors_done = true;
+    factors_done = total_done = true;
   } else if (dirty == ChangeClass::light) {
     redo = ChangeClass::light;
     if (cache.samples() == 1 && cache.refined.spp == 0) {  // one pass: light and pixel factors
       ok = relight_single_sample(cache, ctx, factors, total);
-      factors_done = true;
+      factors_done = total_done = true;
     } else {
       ok = recompute_light_factors(cache, ctx);
     }
@@ -183,7 +183,7 @@ bool ProgressiveRenderer::Impl::step() {
     start_level(level + 1);
     redo = ChangeClass::exponent;  // cancelled: the factors must be rebuilt from `previous`
     ok = trace_single_sample(cache, ctx, factors, total);
-    factors_done = true;
+    factors_done = total_done = true;
     if (!ok) {
       cache = std::move(previous);
       level = previous_level;
@@ -208,7 +208,7 @@ bool ProgressiveRenderer::Impl::step() {
     return false;
   }
   dirty = ChangeClass::none;
-  if (!factors_done || total == nullptr) combine_terms(factors, ctx, frame->images, worker_terms);
+  if (!total_done || total == nullptr) combine_terms(factors, ctx, frame->images, worker_terms);
   publish(std::move(frame), ms_between(start, Clock::now()), rays.load(), converged_state());
   return true;
 }
