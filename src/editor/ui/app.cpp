@@ -26,6 +26,13 @@ double FrameTimes::average() const {
   return size > 0 ? sum / size : 0.0;
 }
 
+double FrameTimes::median() const {
+  if (size == 0) return 0.0;
+  std::vector<double> sorted(ms, ms + size);
+  std::nth_element(sorted.begin(), sorted.begin() + size / 2, sorted.end());
+  return sorted[size / 2];
+}
+
 double FrameTimes::largest() const {
   double top = 0.0;
   for (int i = 0; i < size; ++i) top = std::max(top, ms[i]);

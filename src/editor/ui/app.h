@@ -35,6 +35,7 @@ struct FrameTimes {
   int size = 0, next = 0;
   void add(double value);
   double average() const;
+  double median() const;  // the Speed targets are medians: one stall does not move it
   double largest() const;
 };
 

@@ -17,12 +17,13 @@ std::string stats_text(const App& app) {
   const double rays_per_s =
       info.pass_ms > 0.0 ? static_cast<double>(info.rays) / (info.pass_ms * 1e-3) : 0.0;
   std::snprintf(text, sizeof text,
-                "ui_frame_ms avg=%.2f max=%.2f frames=%d | edit_to_first_image_ms=%.1f "
+                "ui_frame_ms avg=%.2f median=%.2f max=%.2f frames=%d | edit_to_first_image_ms=%.1f "
                 "edit_to_full_image_ms=%.1f | pass=%d spp=%d/%d size=%dx%d pass_ms=%.1f "
                 "since_change_ms=%.1f rays_per_s=%.3g",
-                app.frame_times.average(), app.frame_times.largest(), app.frame_times.size,
-                latency.first_image_ms, latency.full_image_ms, info.pass, info.spp, info.target_spp,
-                info.width, info.height, info.pass_ms, info.since_change_ms, rays_per_s);
+                app.frame_times.average(), app.frame_times.median(), app.frame_times.largest(),
+                app.frame_times.size, latency.first_image_ms, latency.full_image_ms, info.pass,
+                info.spp, info.target_spp, info.width, info.height, info.pass_ms,
+                info.since_change_ms, rays_per_s);
   return text;
 }
 
