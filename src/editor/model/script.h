@@ -23,8 +23,16 @@ struct ScreenshotAction {
 };
 struct ViewAction {
   ViewMode mode = ViewMode::render;
-  TermView term = TermView::total;  // for ViewMode::single
+  TermView term = TermView::total;        // for ViewMode::single
+  AbSource ab_source = AbSource::models;  // for ViewMode::ab: `view ab` or `view ab snapshot`
 };
+// ---- Exposure and snapshot comparison (issue 13, items 3 and 4) ----
+// `view clipped on|off`: the clipped-pixel overlay.
+struct ClippedOverlayAction {
+  bool on = false;
+};
+// `snapshot`: keeps the current document as the A side of `view ab snapshot`.
+struct SnapshotAction {};
 struct ExposureAction {
   float stops = 0.0f;
 };
@@ -52,9 +60,10 @@ struct QualityAction {
   std::string path;  // csv only
 };
 
-using ScriptAction = std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction,
-                                  ViewAction, ExposureAction, SelectAction, StatsAction,
-                                  SleepAction, AnimateAction, QuitAction, QualityAction>;
+using ScriptAction =
+    std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction, ViewAction,
+                 ExposureAction, SelectAction, StatsAction, SleepAction, AnimateAction, QuitAction,
+                 QualityAction, ClippedOverlayAction, SnapshotAction>;
 
 struct ScriptLine {
   int line = 0;  // 1-based line number in the file

@@ -1,0 +1,45 @@
+#include "editor/model/ab_compare.h"
+
+#include "editor/model/document.h"
+
+namespace gloss {
+
+namespace {
+
+// The document with every exponent moved to model (document.h's rule) when keep is set.
+Scene with_model(const Scene& scene, ShadingModel model, bool keep) {
+  Scene out = scene;
+  if (keep) {
+    for (Material& m : out.materials) {
+      m.shininess = exponent_for_model(m.shininess, scene.render.model, model);
+    }
+  }
+  out.render.model = model;
+  return out;
+}
+
+}  // namespace
+
+AbScenes ab_scenes(const Scene& document, AbSource source, const Snapshot* snapshot,
+                   bool keep_highlight_size) {
+  if (source == AbSource::snapshot) {
+    return {snapshot != nullptr ? snapshot->scene : document, document};
+  }
+  return {with_model(document, ShadingModel::phong, keep_highlight_size),
+          with_model(document, ShadingModel::blinn_phong, keep_highlight_size)};
+}
+
+std::string ab_label_a(AbSource source, const Snapshot* snapshot) {
+  if (source == AbSource::snapshot) {
+    return "A: " + (snapshot != nullptr ? snapshot->label : std::string("no snapshot"));
+  }
+  return "A: Phong";
+}
+
+std::string ab_label_b(AbSource source, bool keep_highlight_size) {
+  if (source == AbSource::snapshot) return "B: live";
+  return keep_highlight_size ? "B: Blinn-Phong (exponents x4, keep highlight size)"
+                             : "B: Blinn-Phong (same exponents)";
+}
+
+}  // namespace gloss
