@@ -205,7 +205,8 @@ void run_frame(App& app) {
       !app.view.orbit_light) {
     app.commands.seal();
   }
-  app.viewport.sync(app.commands.scene(), app.commands.revision(), app.view, frame_start);
+  app.viewport.sync(app.commands.scene(), app.commands.revision(), app.view,
+                    app.snapshot ? &*app.snapshot : nullptr, frame_start);
   if (app.autosaver) {
     // A failure is announced once when it appears or changes; the status bar keeps it on screen
     // (autosave_notice) until a write succeeds.

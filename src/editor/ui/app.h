@@ -82,6 +82,7 @@ struct App {
   std::string autosave_failure_shown;        // the autosave failure already announced as a notice
   std::optional<Recovery> offered_recovery;  // a crashed session's document awaiting an answer
   std::unique_ptr<ScriptPlayer> script;
+  std::optional<Snapshot> snapshot;    // the A side of the snapshot A/B (ab_compare.h)
   std::vector<NamedMaterial> library;  // materials loaded from a file, applied on demand
   std::string library_source;
   std::vector<PendingExport> exports;
@@ -135,6 +136,8 @@ void remember_recent(App& app, const std::string& path);
 void request_quit(App& app);
 void undo(App& app);
 void redo(App& app);
+// Keeps the current document as the snapshot and shows the snapshot | live A/B view.
+void snapshot_and_compare(App& app);
 
 // shortcuts.cpp: install_input_callbacks before ImGui's GLFW backend (which chains to them),
 // then handle_shortcuts once per frame.

@@ -9,6 +9,7 @@
 
 #include "base/error.h"
 #include "editor/model/export_image.h"
+#include "editor/model/script_runner.h"
 #include "editor/ui/app.h"
 #include "io/model_loader.h"
 #include "io/scene_loader.h"
@@ -272,6 +273,17 @@ void undo(App& app) {
 void redo(App& app) {
   const std::string label = app.commands.redo_label();
   if (app.commands.redo()) app.notices.info("redid " + label, app.now_s());
+}
+
+}  // namespace gloss
+
+namespace gloss {
+
+void snapshot_and_compare(App& app) {
+  app.snapshot = take_snapshot(app.commands, app.snapshot);
+  app.view.mode = ViewMode::ab;
+  app.view.ab_source = AbSource::snapshot;
+  app.notices.info(app.snapshot->label + " taken: A shows it, B the live scene", app.now_s());
 }
 
 }  // namespace gloss

@@ -102,9 +102,19 @@ void view_menu(App& app) {
     }
     ImGui::EndMenu();
   }
-  if (ImGui::MenuItem("A/B Phong vs Blinn-Phong", "4", view.mode == ViewMode::ab)) {
+  if (ImGui::MenuItem("A/B Phong vs Blinn-Phong", "4",
+                      view.mode == ViewMode::ab && view.ab_source == AbSource::models)) {
     view.mode = ViewMode::ab;
+    view.ab_source = AbSource::models;
   }
+  if (ImGui::MenuItem("Snapshot, then A/B snapshot vs live", "Ctrl+B")) snapshot_and_compare(app);
+  if (ImGui::MenuItem("A/B snapshot vs live", nullptr,
+                      view.mode == ViewMode::ab && view.ab_source == AbSource::snapshot,
+                      app.snapshot.has_value())) {
+    view.mode = ViewMode::ab;
+    view.ab_source = AbSource::snapshot;
+  }
+  ImGui::MenuItem("Show clipped pixels", nullptr, &view.show_clipped);
   ImGui::Separator();
   const bool srgb = app.commands.scene().render.srgb;
   if (ImGui::MenuItem("sRGB display encoding", nullptr, srgb)) {

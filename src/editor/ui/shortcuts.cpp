@@ -108,6 +108,7 @@ void handle_shortcuts(App& app) {
                        "");
     }
     if (ctrl && press.key == GLFW_KEY_Q) request_quit(app);
+    if (ctrl && press.key == GLFW_KEY_B) snapshot_and_compare(app);
     if (press.mods == 0 && press.key >= GLFW_KEY_1 && press.key <= GLFW_KEY_4 &&
         !ImGui::IsAnyItemActive()) {
       const ViewMode modes[4] = {ViewMode::render, ViewMode::terms, ViewMode::single, ViewMode::ab};

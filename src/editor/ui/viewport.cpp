@@ -1,6 +1,7 @@
 #include "editor/ui/viewport.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 
@@ -22,18 +23,6 @@ bool needs_terms(const ViewSettings& view) {
 
 float shown_heat_scale(const ViewSettings& view, float max_difference) {
   return view.heat_auto_scale ? std::max(max_difference, 1e-4f) : view.heat_scale;
-}
-
-// The document with every exponent moved to model (document.h's rule) when keep is set.
-Scene with_model(const Scene& scene, ShadingModel model, bool keep) {
-  Scene out = scene;
-  if (keep) {
-    for (Material& m : out.materials) {
-      m.shininess = exponent_for_model(m.shininess, scene.render.model, model);
-    }
-  }
-  out.render.model = model;
-  return out;
 }
 
 }  // namespace
@@ -105,7 +94,7 @@ void Viewport::frame_shown(double now_s) {
 }
 
 void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSettings& view,
-                    double now_s) {
+                    const Snapshot* snapshot, double now_s) {
   if (m_panes[0].size.x < 1.0f || m_panes[0].size.y < 1.0f) return;  // no layout yet
   // The panes were laid out by draw() this frame, in the document's aspect.
   const float scale = m_framebuffer_scale * view.preview_scale;
@@ -113,10 +102,14 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
   const int height = std::clamp(static_cast<int>(m_panes[0].size.y * scale), 1, kMaxImageSide);
   const bool terms = needs_terms(view);
   const bool ab = view.mode == ViewMode::ab;
-  const bool changed = !m_pushed_any || revision != m_pushed_revision || width != m_render_width ||
-                       height != m_render_height || terms != m_pushed_terms ||
-                       ab != (m_pushed_mode == ViewMode::ab) ||
-                       (ab && view.keep_highlight_size != m_pushed_keep);
+  const std::uint64_t snapshot_revision =
+      snapshot != nullptr ? snapshot->revision + 1 : 0;  // 0: none
+  const bool changed =
+      !m_pushed_any || revision != m_pushed_revision || width != m_render_width ||
+      height != m_render_height || terms != m_pushed_terms ||
+      ab != (m_pushed_mode == ViewMode::ab) || (ab && view.keep_highlight_size != m_pushed_keep) ||
+      (ab && view.ab_source != m_pushed_source) ||
+      (ab && view.ab_source == AbSource::snapshot && snapshot_revision != m_pushed_snapshot);
   if (!changed) return;
 
   if (m_pushed_any && revision != m_pushed_revision) {
@@ -138,8 +131,13 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
       m_b = std::make_unique<ProgressiveRenderer>(options);
       m_b->set_on_publish([] { glfwPostEmptyEvent(); });
     }
-    m_a->set_scene(with_model(scene, ShadingModel::phong, view.keep_highlight_size));
-    m_b->set_scene(with_model(scene, ShadingModel::blinn_phong, view.keep_highlight_size));
+    AbScenes pair = ab_scenes(scene, view.ab_source, snapshot, view.keep_highlight_size);
+    pair.a.render.width = pair.b.render.width = width;  // the snapshot has its own size
+    pair.a.render.height = pair.b.render.height = height;
+    m_a->set_scene(pair.a);
+    m_b->set_scene(pair.b);
+    m_label_a = ab_label_a(view.ab_source, snapshot);
+    m_label_b = ab_label_b(view.ab_source, view.keep_highlight_size);
   } else {
     m_b.reset();  // cancels and joins its worker
     m_frame_b.reset();
@@ -152,6 +150,8 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
   m_pushed_terms = terms;
   m_pushed_mode = view.mode;
   m_pushed_keep = view.keep_highlight_size;
+  m_pushed_source = view.ab_source;
+  m_pushed_snapshot = snapshot_revision;
 }
 
 bool Viewport::converged_and_shown(std::uint64_t revision, const ViewSettings& view) const {
@@ -174,7 +174,8 @@ bool Viewport::TargetKey::operator==(const TargetKey& o) const {
   return uploads == o.uploads && width == o.width && height == o.height &&
          pane_count == o.pane_count && pane_x == o.pane_x && pane_y == o.pane_y &&
          pane_w == o.pane_w && pane_h == o.pane_h && mode == o.mode && single == o.single &&
-         exposure == o.exposure && heat_scale == o.heat_scale && srgb == o.srgb;
+         exposure == o.exposure && heat_scale == o.heat_scale && srgb == o.srgb &&
+         show_clipped == o.show_clipped;
 }
 
 void Viewport::draw_panes(const ViewSettings& view, bool srgb) {
@@ -196,7 +197,8 @@ void Viewport::draw_panes(const ViewSettings& view, bool srgb) {
                       view.single,
                       view.exposure,
                       params.heat_scale,
-                      srgb};
+                      srgb,
+                      view.show_clipped};
   if (key == m_target_key && m_target.texture() != 0) return;
   m_target_key = key;
   m_target.resize(fw, fh);
@@ -213,6 +215,7 @@ void Viewport::draw_panes(const ViewSettings& view, bool srgb) {
     const GlTexture* a = &m_total;
     const GlTexture* b = nullptr;
     params.mode = DisplayMode::image;
+    params.clip_overlay = view.show_clipped;
     TermView term = TermView::total;
     if (view.mode == ViewMode::single) term = view.single;
     if (view.mode == ViewMode::terms) {
@@ -267,8 +270,8 @@ void Viewport::draw_labels(const ViewSettings& view, ImDrawList* list) const {
     single = std::string(display_name(view.single)) + " only";
     labels[0] = single.c_str();
   } else if (view.mode == ViewMode::ab) {
-    labels[0] = "A: Phong";
-    labels[1] = view.keep_highlight_size ? "B: Blinn-Phong (exponents x4)" : "B: Blinn-Phong";
+    labels[0] = m_label_a.c_str();
+    labels[1] = m_label_b.c_str();
     labels[2] = "|A - B| heat map";
   }
   for (int i = 0; i < m_pane_count; ++i) {
@@ -322,6 +325,51 @@ void Viewport::draw_legend(const ViewSettings& view, ImDrawList* list, const Pan
   list->AddText(ImVec2(x0, y), text,
                 view.heat_auto_scale ? "scale: automatic (the largest difference)"
                                      : "scale: fixed (View panel)");
+}
+
+}  // namespace gloss
+
+namespace gloss {
+
+ExposureHistogram Viewport::histogram(const ViewSettings& view, bool srgb, bool exact) {
+  const bool live_is_b = view.mode == ViewMode::ab && view.ab_source == AbSource::snapshot;
+  const RenderedFrame* frame = live_is_b ? m_frame_b.get() : m_frame_a.get();
+  if (frame == nullptr) return {};
+  TermView term = view.mode == ViewMode::single ? view.single : TermView::total;
+  if (frame->images.emissive.width == 0) term = TermView::total;  // terms not rendered yet
+  const HistogramKey key{frame, view.exposure, srgb, exact, term};
+  if (key == m_histogram_key) return m_histogram;
+  const TermImages& images = frame->images;
+  const Image* image = &images.total;
+  Image sum;
+  switch (term) {
+    case TermView::emissive_ambient:
+      sum = images.emissive;
+      for (std::size_t i = 0; i < sum.pixels.size(); ++i) sum.pixels[i] += images.ambient.pixels[i];
+      image = &sum;
+      break;
+    case TermView::emissive:
+      image = &images.emissive;
+      break;
+    case TermView::ambient:
+      image = &images.ambient;
+      break;
+    case TermView::diffuse:
+      image = &images.diffuse;
+      break;
+    case TermView::specular:
+      image = &images.specular;
+      break;
+    case TermView::total:
+      break;
+  }
+  // At most about 65k samples: every step-th pixel of every step-th row.
+  const double pixels = static_cast<double>(image->width) * image->height;
+  const int step =
+      exact ? 1 : std::max(1, static_cast<int>(std::ceil(std::sqrt(pixels / 65536.0))));
+  m_histogram = exposure_histogram(*image, view.exposure, srgb, step);
+  m_histogram_key = key;
+  return m_histogram;
 }
 
 }  // namespace gloss
