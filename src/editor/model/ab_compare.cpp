@@ -38,8 +38,7 @@ std::string ab_label_a(AbSource source, const Snapshot* snapshot) {
 
 std::string ab_label_b(AbSource source, bool keep_highlight_size) {
   if (source == AbSource::snapshot) return "B: live";
-  return keep_highlight_size ? "B: Blinn-Phong (exponents x4, keep highlight size)"
-                             : "B: Blinn-Phong (same exponents)";
+  return keep_highlight_size ? "B: Blinn-Phong (exponents x4)" : "B: Blinn-Phong (same exponents)";
 }
 
 }  // namespace gloss

@@ -148,6 +148,32 @@ void update_title(App& app) {
   }
 }
 
+// A thin handle over the border between two panels: dragging it moves the border. vertical:
+// a left-right border (moved along x), else a top-bottom one. Returns the drag this frame.
+float splitter(const char* id, ImVec2 pos, ImVec2 size, bool vertical) {
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1, 1));
+  ImGui::Begin(id, nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+  ImGui::PopStyleVar(2);
+  ImGui::InvisibleButton("##handle", size);
+  float moved = 0.0f;
+  if (ImGui::IsItemHovered() || ImGui::IsItemActive()) {
+    ImGui::SetMouseCursor(vertical ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
+    ImGui::GetWindowDrawList()->AddRectFilled(
+        pos, ImVec2(pos.x + size.x, pos.y + size.y),
+        ImGui::GetColorU32(ImGui::IsItemActive() ? ImGuiCol_SeparatorActive
+                                                 : ImGuiCol_SeparatorHovered));
+  }
+  if (ImGui::IsItemActive())
+    moved = vertical ? ImGui::GetIO().MouseDelta.x : ImGui::GetIO().MouseDelta.y;
+  ImGui::End();
+  return moved;
+}
+
 void draw_layout(App& app) {
   draw_menu_bar(app);
   const ImGuiViewport* main = ImGui::GetMainViewport();
@@ -155,15 +181,33 @@ void draw_layout(App& app) {
   const float status_h = ImGui::GetFrameHeight() + 6.0f;
   const float top = main->Pos.y + menu_h;
   const float height = std::max(main->Size.y - menu_h - status_h, 1.0f);
-  const float side = std::clamp(main->Size.x * 0.23f, 280.0f, 420.0f);
+  const float default_side = std::clamp(main->Size.x * 0.23f, 280.0f, 420.0f);
+  // Each side panel keeps between 220 pixels and 40% of the window.
+  const float most = std::max(220.0f, main->Size.x * 0.4f);
+  if (app.left_width <= 0.0f) app.left_width = default_side;
+  if (app.right_width <= 0.0f) app.right_width = default_side;
+  app.left_width = std::clamp(app.left_width, 220.0f, most);
+  app.right_width = std::clamp(app.right_width, 220.0f, most);
+  app.lights_share = std::clamp(app.lights_share, 0.15f, 0.85f);
+  const float side = app.left_width;
+  const float right_side = app.right_width;
   const float left = main->Pos.x, right = main->Pos.x + main->Size.x;
-  const float lights_h = std::floor(height * 0.5f);
+  const float lights_h = std::floor(height * app.lights_share);
   draw_material_panel(app, ImVec2(left, top), ImVec2(side, height));
-  draw_lights_panel(app, ImVec2(right - side, top), ImVec2(side, lights_h));
-  draw_view_panel(app, ImVec2(right - side, top + lights_h), ImVec2(side, height - lights_h));
+  draw_lights_panel(app, ImVec2(right - right_side, top), ImVec2(right_side, lights_h));
+  draw_view_panel(app, ImVec2(right - right_side, top + lights_h),
+                  ImVec2(right_side, height - lights_h));
   const ImVec2 viewport_pos(left + side, top);
-  const ImVec2 viewport_size(std::max(main->Size.x - 2.0f * side, 1.0f), height);
+  const ImVec2 viewport_size(std::max(main->Size.x - side - right_side, 1.0f), height);
   app.viewport.draw(app, viewport_pos, viewport_size);
+  // The splitters go over the borders, after the panels so that they are on top.
+  app.left_width +=
+      splitter("##split-left", ImVec2(left + side - 3.0f, top), ImVec2(6.0f, height), true);
+  app.right_width -=
+      splitter("##split-right", ImVec2(right - right_side - 3.0f, top), ImVec2(6.0f, height), true);
+  app.lights_share += splitter("##split-lights", ImVec2(right - right_side, top + lights_h - 3.0f),
+                               ImVec2(right_side, 6.0f), false) /
+                      height;
   draw_status_bar(app, ImVec2(left, top + height), ImVec2(main->Size.x, status_h));
   // The Quality window opens over the viewport's right side (its table needs more width than a
   // side panel has); it can be moved, resized and closed.
@@ -233,7 +277,7 @@ void run_frame(App& app) {
   glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-  if (app.capture.requested) capture_window(app);
+  if (app.capture.requested && app.capture.frames_to_skip-- <= 0) capture_window(app);
   glfwSwapBuffers(app.window);
 
   const double frame_end = app.now_s();

@@ -50,6 +50,9 @@ struct WindowCapture {
   bool requested = false;
   std::string path;  // empty: a timestamped name in view.screenshot_dir
   bool from_script = false;
+  // Frames to draw before reading: a request from a menu waits one frame, in which the closed
+  // menu is no longer drawn (the frame of the click still shows it).
+  int frames_to_skip = 0;
 };
 
 // A key press (or auto-repeat) as GLFW reported it. Queued by a callback so that a press and
@@ -70,6 +73,9 @@ struct App {
   int selected_object = 0;
   int selected_light = 0;
   bool link_channels = false;  // material colour editors move R, G, B together
+  // Side panels, dragged by the splitters at their inner edges (screen pixels; 0: the default
+  // share of the window). lights_share: the Lights panel's part of the right column's height.
+  float left_width = 0.0f, right_width = 0.0f, lights_share = 0.5f;
 
   Viewport viewport;
   Swatches swatches;
@@ -145,6 +151,8 @@ void install_input_callbacks(GLFWwindow* window);
 // Between the backend's NewFrame and ImGui::NewFrame: shows this frame's taps as held keys.
 void replay_key_taps(App& app);
 void handle_shortcuts(App& app);
+// Closes open menus, combo lists and other popups, but not a modal question (Esc, captures).
+void close_menus();
 
 // Panels (one file each).
 void draw_menu_bar(App& app);

@@ -152,7 +152,8 @@ void save_materials(App& app, const std::string& path) {
 
 void start_screenshot(App& app, ScreenshotKind kind, const std::string& path, bool from_script) {
   if (kind == ScreenshotKind::window) {
-    app.capture = {true, path, from_script};
+    app.capture = {true, path, from_script, from_script ? 0 : 1};
+    if (!from_script) close_menus();
     return;
   }
   const Scene scene = app.commands.scene();

@@ -66,7 +66,7 @@ void draw_view_mode(App& app) {
   ImGui::RadioButton("terms 2x2 (2)", &mode, static_cast<int>(ViewMode::terms));
   ImGui::RadioButton("one term (3)", &mode, static_cast<int>(ViewMode::single));
   ImGui::SameLine();
-  ImGui::RadioButton("A/B Phong|Blinn (4)", &mode, static_cast<int>(ViewMode::ab));
+  ImGui::RadioButton("A/B (4)", &mode, static_cast<int>(ViewMode::ab));
   view.mode = static_cast<ViewMode>(mode);
   if (view.mode == ViewMode::single) {
     if (ImGui::BeginCombo("term", display_name(view.single))) {
@@ -79,10 +79,7 @@ void draw_view_mode(App& app) {
   }
   if (view.mode == ViewMode::ab) {
     int source = static_cast<int>(view.ab_source);
-    ImGui::TextUnformatted("compare");
-    ImGui::SameLine();
     ImGui::RadioButton("Phong | Blinn-Phong", &source, static_cast<int>(AbSource::models));
-    ImGui::SameLine();
     if (!app.snapshot) ImGui::BeginDisabled();
     ImGui::RadioButton("snapshot | live", &source, static_cast<int>(AbSource::snapshot));
     if (!app.snapshot) ImGui::EndDisabled();
@@ -95,8 +92,11 @@ void draw_view_mode(App& app) {
     }
     if (view.ab_source == AbSource::models) {
       // The Material panel's setting, shown here as a reminder, not a second switch.
-      ImGui::TextDisabled("B exponents: %s (Material: keep highlight size)",
+      ImGui::TextDisabled("B exponents %s: keep highlight size",
                           view.keep_highlight_size ? "x4" : "x1");
+      if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("one setting, switched in the Material panel (Shading model)");
+      }
     }
   }
   if (ImGui::Button("Snapshot (Ctrl+B)")) snapshot_and_compare(app);
@@ -162,7 +162,7 @@ void draw_view_panel(App& app, ImVec2 pos, ImVec2 size) {
     ImGui::End();
     return;
   }
-  ImGui::PushItemWidth(-110.0f);
+  ImGui::PushItemWidth(-130.0f);  // room for "samples per pixel"
   section_title("View");
   draw_view_mode(app);
   section_title("Quality");

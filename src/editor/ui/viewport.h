@@ -139,8 +139,9 @@ class Viewport {
   ExposureHistogram m_histogram;
 
   // Gesture state (viewport_input.cpp).
-  int m_drag_button = -1;  // ImGuiMouseButton being dragged in the viewport, -1 none
-  int m_drag_light = -1;   // light being dragged, -1 none
+  int m_drag_button = -1;         // ImGuiMouseButton being dragged in the viewport, -1 none
+  int m_drag_light = -1;          // light being dragged, -1 none
+  bool m_marker_pressed = false;  // the press hit a light marker (no orbit, no pick)
   int m_drag_pane = 0;
   float m_drag_distance = 0.0f;  // farthest the cursor went from the press, pixels
   ImVec2 m_drag_press{0, 0};     // where the drag's button went down (screen)

@@ -69,8 +69,7 @@ TEST(AbCompare, ModelsCompareThePhongAndBlinnVersionsOfTheDocument) {
   EXPECT_FLOAT_EQ(kept.b.materials[1].shininess, 40.0f);   // 4 x 10
   AbScenes same = ab_scenes(doc, AbSource::models, nullptr, false);
   EXPECT_FLOAT_EQ(same.b.materials[0].shininess, 64.0f);
-  EXPECT_EQ(ab_label_b(AbSource::models, true),
-            "B: Blinn-Phong (exponents x4, keep highlight size)");
+  EXPECT_EQ(ab_label_b(AbSource::models, true), "B: Blinn-Phong (exponents x4)");
 }
 
 TEST(AbCompare, ViewAbSnapshotNeedsASnapshot) {
