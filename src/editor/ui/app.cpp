@@ -276,6 +276,7 @@ void run_frame(App& app) {
   glViewport(0, 0, fb_width, fb_height);
   glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
+  app.viewport.blit(fb_height);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   if (app.capture.requested && app.capture.frames_to_skip-- <= 0) capture_window(app);
   glfwSwapBuffers(app.window);

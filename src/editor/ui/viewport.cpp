@@ -154,6 +154,13 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
   m_pushed_snapshot = snapshot_revision;
 }
 
+void Viewport::blit(int framebuffer_height) const {
+  if (!m_visible || m_target.texture() == 0) return;
+  const int x = static_cast<int>(m_pos.x * m_framebuffer_scale);
+  const int top = static_cast<int>(m_pos.y * m_framebuffer_scale);
+  m_target.blit_to_window(x, framebuffer_height - top - m_target.height());
+}
+
 bool Viewport::converged_and_shown(std::uint64_t revision, const ViewSettings& view) const {
   if (!m_pushed_any || revision != m_pushed_revision || view.mode != m_pushed_mode ||
       needs_terms(view) != m_pushed_terms) {
@@ -201,6 +208,13 @@ void Viewport::draw_panes(const ViewSettings& view, bool srgb) {
                       view.show_clipped};
   if (key == m_target_key && m_target.texture() != 0) return;
   m_target_key = key;
+  // Texels map 1:1 to screen pixels at preview scale 1: nearest sampling is exact and cheaper.
+  const bool one_to_one =
+      m_total.width() == static_cast<int>(m_panes[0].size.x * m_framebuffer_scale) &&
+      m_total.height() == static_cast<int>(m_panes[0].size.y * m_framebuffer_scale);
+  for (GlTexture* t : {&m_total, &m_emissive, &m_ambient, &m_diffuse, &m_specular, &m_b_total}) {
+    t->set_nearest(one_to_one);
+  }
   m_target.resize(fw, fh);
   m_target.bind();
   glClearColor(0.11f, 0.11f, 0.12f, 1.0f);

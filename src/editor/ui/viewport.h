@@ -50,6 +50,9 @@ class Viewport {
             const Snapshot* snapshot, double now_s);
   // Draws the viewport window at pos/size (screen coordinates) with its gestures.
   void draw(App& app, ImVec2 pos, ImVec2 size);
+  // Copies the viewport's image into the window's back buffer (framebuffer_height: the window's
+  // in framebuffer pixels); call after clearing it and before ImGui draws on top.
+  void blit(int framebuffer_height) const;
   // Call after the swap that showed this frame: completes latency measurements.
   void frame_shown(double now_s);
 
@@ -102,6 +105,7 @@ class Viewport {
   // Layout of the last draw (screen coordinates).
   ImVec2 m_pos{0, 0}, m_size{0, 0};
   float m_framebuffer_scale = 1.0f;
+  bool m_visible = false;  // the viewport window was drawn this frame (blit() shows it)
   Pane m_panes[4];
   int m_pane_count = 1;
 

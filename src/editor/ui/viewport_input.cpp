@@ -66,14 +66,15 @@ void Viewport::draw(App& app, ImVec2 pos, ImVec2 size) {
       ImGuiWindowFlags_NoBackground;  // the image covers it
   const bool open = ImGui::Begin("Viewport", nullptr, flags);
   ImGui::PopStyleVar(2);
+  m_visible = false;
   if (!open) {
     ImGui::End();
     return;
   }
   draw_panes(app.view, app.commands.scene().render.srgb);
-  // The target's texture rows run bottom to top: flip v.
-  ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(m_target.texture())), size,
-               ImVec2(0, 1), ImVec2(1, 0));
+  // The target is copied into the back buffer under ImGui's draw lists (blit(), from
+  // run_frame): the window has no background, so it shows through.
+  m_visible = true;
   handle_input(app);
   ImDrawList* list = ImGui::GetWindowDrawList();
   draw_labels(app.view, list);
@@ -145,8 +146,10 @@ void Viewport::draw_light_markers(App& app, ImDrawList* list) const {
       std::snprintf(label, sizeof label, m.on_screen ? "%d" : "%d (off view)", i);
       const ImVec2 size = ImGui::CalcTextSize(label);
       // Keep the label inside the pane, beside the marker.
-      const float lx = std::clamp(centre.x + r + 3.0f, pane.min.x + 2.0f,
-                                  pane.min.x + pane.size.x - size.x - 2.0f);
+      // Right of the marker, or left of it where the pane's right edge is too close.
+      float lx = centre.x + r + 3.0f;
+      if (lx + size.x > pane.min.x + pane.size.x - 2.0f) lx = centre.x - r - 6.0f - size.x;
+      lx = std::max(lx, pane.min.x + 2.0f);
       const float ly = std::clamp(centre.y - r - 6.0f, pane.min.y + 2.0f,
                                   pane.min.y + pane.size.y - size.y - 2.0f);
       list->AddText(ImVec2(lx, ly), IM_COL32(255, 230, 150, 255), label);
