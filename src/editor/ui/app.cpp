@@ -232,6 +232,11 @@ void run_frame(App& app) {
   ImGui::NewFrame();
 
   app.notices.expire(frame_start);
+  // New threads (a renderer for the A/B view, exports) are lowered within a quarter second.
+  if (frame_start - app.background_checked_s > 0.25) {
+    app.background.update();
+    app.background_checked_s = frame_start;
+  }
   app.viewport.upload_frames(frame_start);
   app.swatches.poll();
   app.quality.poll();

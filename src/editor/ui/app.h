@@ -14,6 +14,7 @@
 #include <glad/gl.h>
 
 #include "editor/model/autosave.h"
+#include "editor/model/background_priority.h"
 #include "editor/model/command_layer.h"
 #include "editor/model/quality_measurement.h"
 #include "editor/model/recent_files.h"
@@ -99,6 +100,8 @@ struct App {
   ImVec2 cursor_position;             // the cursor as of the last event (window pixels)
   ImVec2 press_position[3];           // where each mouse button last went down (window pixels)
   FrameTimes frame_times;
+  BackgroundPriority background;  // render and export threads below the UI (created on it)
+  double background_checked_s = -1.0;
 
   std::string title;          // the window title last set
   double last_frame_s = 0.0;  // start of the previous frame (orbit-light animation step)
