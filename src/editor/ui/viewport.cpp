@@ -377,10 +377,12 @@ ExposureHistogram Viewport::histogram(const ViewSettings& view, bool srgb, bool 
     case TermView::total:
       break;
   }
-  // At most about 65k samples: every step-th pixel of every step-th row.
+  // At most about 16k samples (every step-th pixel of every step-th row): the panel's share
+  // then moves by well under a percent, and the histogram costs about 0.2 ms per new frame
+  // instead of 1 ms at 65k (perf during a slider drag: a quarter of the UI thread's time).
   const double pixels = static_cast<double>(image->width) * image->height;
   const int step =
-      exact ? 1 : std::max(1, static_cast<int>(std::ceil(std::sqrt(pixels / 65536.0))));
+      exact ? 1 : std::max(1, static_cast<int>(std::ceil(std::sqrt(pixels / 16384.0))));
   m_histogram = exposure_histogram(*image, view.exposure, srgb, step);
   m_histogram_key = key;
   return m_histogram;

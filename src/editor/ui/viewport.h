@@ -68,7 +68,7 @@ class Viewport {
 
   // The histogram of the live image as shown (the total, or the single term shown; in the
   // snapshot A/B the live B side), recomputed only when that image or the display changed.
-  // Large images are sampled (every step-th pixel and row, at most ~65k pixels) to stay well
+  // Large images are sampled (every step-th pixel and row, at most ~16k pixels) to stay well
   // under a millisecond; exact=true counts every pixel (the `stats` line).
   ExposureHistogram histogram(const ViewSettings& view, bool srgb, bool exact = false);
 
