@@ -15,10 +15,12 @@
 #include <tbb/task_arena.h>
 #include <nlohmann/json.hpp>
 
+#include "analysis/image_metrics.h"
 #include "analysis/ray_baseline.h"
 #include "base/timing.h"
 #include "engine/progressive_renderer.h"
 #include "engine/render_context.h"
+#include "engine/renderer.h"
 #include "engine/shade/pixel_factors.h"
 #include "engine/trace/embree_scene.h"
 #include "engine/trace/sample_cache.h"
@@ -88,11 +90,22 @@ double peak_rss_mb() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
 }
 
-// From a camera change to the first published pass and to convergence, in the engine.
-void measure_engine(const Scene& base, const BenchOptions& options, BenchReport& report) {
+struct EngineTimes {
+  double first_ms = 0, converged_ms = 0;  // medians
+  double ratio = 0;  // median of converged / baseline within pairs (0 without a baseline)
+};
+
+// From a camera change to the first published pass and to convergence, in the engine, with
+// options.converge_spp samples spent as `sampling` says. Given a baseline, each convergence is
+// paired with a timed run of it (as time_paired does).
+EngineTimes measure_engine(const Scene& base, const BenchOptions& options, Sampling sampling,
+                           const std::function<void()>& baseline = nullptr) {
   Scene scene = base;
   scene.render.spp = options.converge_spp;
-  ProgressiveRenderer engine;
+  scene.render.sampling = sampling;
+  ProgressiveOptions total_only;  // the viewport's default view: the total image only
+  total_only.terms = false;
+  ProgressiveRenderer engine(total_only);
   std::mutex mutex;
   std::condition_variable cv;
   std::uint64_t generation = 0;
@@ -105,7 +118,7 @@ void measure_engine(const Scene& base, const BenchOptions& options, BenchReport&
     if (frame->info.converged) converged = frame->info.since_change_ms;
     cv.notify_all();
   });
-  std::vector<double> firsts, converges;
+  std::vector<double> firsts, converges, ratios;
   for (int run = 0; run <= options.runs; ++run) {
     scene.camera = orbit_camera(base.camera, run % 2 == 0 ? 2.0f : -2.0f, 0.0f);
     {
@@ -120,10 +133,36 @@ void measure_engine(const Scene& base, const BenchOptions& options, BenchReport&
       firsts.push_back(first);
       converges.push_back(converged);
     }
+    lock.unlock();
+    if (baseline && run > 0) {
+      const Clock::time_point start = Clock::now();
+      baseline();
+      ratios.push_back(converges.back() / ms_since(start));
+    }
   }
   engine.set_on_publish(nullptr);
-  report.first_preview_ms = median(firsts);
-  report.converge_16spp_ms = median(converges);
+  return {median(firsts), median(converges), ratios.empty() ? 0.0 : median(ratios)};
+}
+
+// Adaptive against uniform sampling at converge_spp, both against a uniform reference_spp
+// render (the fast renderer: the reference of the sampling, not of the arithmetic).
+void measure_aa_quality(const Scene& base, const BenchOptions& options, BenchReport& report) {
+  Scene scene = base;
+  RenderOptions total_only;
+  total_only.terms = false;
+  scene.render.sampling = Sampling::uniform;
+  scene.render.spp = options.reference_spp;
+  const Image reference = render(scene, total_only).total;
+  scene.render.spp = options.converge_spp;
+  report.uniform_rmse = compare_images(render(scene, total_only).total, reference).rmse;
+  scene.render.sampling = Sampling::adaptive;
+  std::vector<std::uint32_t> refined;
+  RenderOptions adaptive = total_only;
+  adaptive.refined = &refined;
+  report.aa_rmse = compare_images(render(scene, adaptive).total, reference).rmse;
+  report.aa_rmse_ratio = report.aa_rmse / report.uniform_rmse;
+  report.aa_refined_share =
+      static_cast<double>(refined.size()) / (static_cast<double>(base.render.width) * base.render.height);
 }
 
 }  // namespace
@@ -210,7 +249,16 @@ BenchReport run_benchmark(const Scene& input, const BenchOptions& options) {
       time_median(options.runs, [&] { full_render(scene, embree, cache, factors, out, false); });
   report.threads_speedup = report.single_thread_ms / all_threads_ms;
 
-  measure_engine(scene, options, report);
+  const EngineTimes uniform = measure_engine(scene, options, Sampling::uniform);
+  report.first_preview_ms = uniform.first_ms;
+  report.converge_16spp_ms = uniform.converged_ms;
+  // Paired with the 1-spp full render, as the retrace ratio is: a shared machine's speed drifts.
+  const EngineTimes adaptive =
+      measure_engine(scene, options, Sampling::adaptive,
+                     [&] { full_render(scene, embree, cache, factors, out, false); });
+  report.aa_ms = adaptive.converged_ms;
+  report.aa_ratio = adaptive.ratio;
+  measure_aa_quality(scene, options, report);
 
   if (has_object_type(scene, ObjectType::teapot)) {
     for (int level : options.tessellation_levels) {
@@ -230,7 +278,7 @@ BenchReport run_benchmark(const Scene& input, const BenchOptions& options) {
       report.tessellation.push_back(point);
     }
   }
-  report.peak_rss_mb = peak_rss_mb();
+  report.bench_peak_rss_mb = peak_rss_mb();
   return report;
 }
 
@@ -238,7 +286,7 @@ std::string format_bench_table(const BenchReport& r) {
   std::string s;
   char line[256];
   auto row = [&](const char* name, double value, const char* unit, const char* note) {
-    std::snprintf(line, sizeof line, "  %-30s %10.3f %-4s %s\n", name, value, unit, note);
+    std::snprintf(line, sizeof line, "  %-30s %10.4f %-4s %s\n", name, value, unit, note);
     s += line;
   };
   std::snprintf(line, sizeof line, "gloss bench: %s at %dx%d, %d threads (medians)\n",
@@ -257,12 +305,19 @@ std::string format_bench_table(const BenchReport& r) {
   row("exponent_ms_alpha1e6", r.exponent_ms_alpha1e6, "ms", "shininess edit to 1e6");
   row("light_move_ms", r.light_move_ms, "ms", "shadow rays + re-shade");
   row("first_preview_ms", r.first_preview_ms, "ms", "camera change to first pass; target <= 10");
-  row("converge_16spp_ms", r.converge_16spp_ms, "ms", "camera change to 16 spp");
+  row("converge_16spp_ms", r.converge_16spp_ms, "ms", "camera change to 16 spp, uniform");
+  row("aa_ms", r.aa_ms, "ms", "camera change to 16 spp, adaptive");
+  row("aa_ratio", r.aa_ratio, "", "over a full 1-spp render, paired runs; target <= 3");
+  row("aa_rmse_ratio", r.aa_rmse_ratio, "", "adaptive RMSE / uniform's (256 spp ref); target <= 1");
+  row("aa_refined_share", r.aa_refined_share, "", "share of pixels adaptive sampling refined");
+  row("aa_rmse", r.aa_rmse, "", "adaptive 16 spp against uniform 256 spp");
+  row("uniform_rmse", r.uniform_rmse, "", "uniform 16 spp against uniform 256 spp");
   row("single_thread_ms", r.single_thread_ms, "ms", "full render on 1 thread");
   row("threads_speedup", r.threads_speedup, "x", "target >= 1.7");
   row("cache_bytes_per_pixel", r.cache_bytes_per_pixel, "B", "per-pixel factors");
   row("sample_cache_bytes_per_sample", r.sample_cache_bytes_per_sample, "B", "per-sample cache");
-  row("peak_rss_mb", r.peak_rss_mb, "MB", "");
+  if (r.peak_rss_mb > 0) row("peak_rss_mb", r.peak_rss_mb, "MB", "plain render, own process");
+  row("bench_peak_rss_mb", r.bench_peak_rss_mb, "MB", "this benchmark's process");
   if (!r.tessellation.empty()) {
     s += "  teapot tessellation: level, triangles, render_ms, build_ms\n";
     for (const TessellationPoint& p : r.tessellation) {
@@ -294,11 +349,18 @@ std::string bench_to_json(const BenchReport& r) {
   j["light_move_ms"] = r.light_move_ms;
   j["first_preview_ms"] = r.first_preview_ms;
   j["converge_16spp_ms"] = r.converge_16spp_ms;
+  j["aa_ms"] = r.aa_ms;
+  j["aa_ratio"] = r.aa_ratio;
+  j["aa_rmse_ratio"] = r.aa_rmse_ratio;
+  j["aa_refined_share"] = r.aa_refined_share;
+  j["aa_rmse"] = r.aa_rmse;
+  j["uniform_rmse"] = r.uniform_rmse;
   j["single_thread_ms"] = r.single_thread_ms;
   j["threads_speedup"] = r.threads_speedup;
   j["cache_bytes_per_pixel"] = r.cache_bytes_per_pixel;
   j["sample_cache_bytes_per_sample"] = r.sample_cache_bytes_per_sample;
   j["peak_rss_mb"] = r.peak_rss_mb;
+  j["bench_peak_rss_mb"] = r.bench_peak_rss_mb;
   nlohmann::json tess = nlohmann::json::array();
   for (const TessellationPoint& p : r.tessellation) {
     tess.push_back({{"level", p.level},

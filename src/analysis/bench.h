@@ -12,7 +12,8 @@ namespace gloss {
 struct BenchOptions {
   int width = 1280, height = 720;  // pixels
   int runs = 7;           // repetitions per figure, the median reported; at least 15 for the ratios
-  int converge_spp = 16;  // target of converge_16spp_ms
+  int converge_spp = 16;  // target of converge_16spp_ms and aa_ms
+  int reference_spp = 256;  // of the image aa_rmse_ratio measures against
   std::vector<int> tessellation_levels{2, 4, 8, 16, 32};  // for scenes with a teapot
 };
 
@@ -33,11 +34,17 @@ struct BenchReport {
   double reshade_terms_ms = 0;  // re-shade writing all four term images too
   double exponent_ms_alpha32 = 0, exponent_ms_alpha1e6 = 0;  // shininess edit re-shade
   double light_move_ms = 0;  // shadow rays + re-shade, primary hits reused
-  double first_preview_ms = 0, converge_16spp_ms = 0;
+  double first_preview_ms = 0, converge_16spp_ms = 0;  // uniform sampling
+  // Adaptive sampling at converge_spp: camera change to the converged image in the engine, that
+  // over retrace_ms, and its RMSE over uniform sampling's, both against a uniform render at
+  // reference_spp; the share of pixels it refined.
+  double aa_ms = 0, aa_ratio = 0, aa_rmse_ratio = 0, aa_refined_share = 0;
+  double aa_rmse = 0, uniform_rmse = 0;
   double single_thread_ms = 0, threads_speedup = 0;
   double cache_bytes_per_pixel = 0;          // per-pixel factors (what a constant edit reads)
   double sample_cache_bytes_per_sample = 0;  // per-sample cache (exponent and light edits)
-  double peak_rss_mb = 0;
+  double peak_rss_mb = 0;        // of a plain render at this size in its own process (the CLI's)
+  double bench_peak_rss_mb = 0;  // of this benchmark's process
   std::vector<TessellationPoint> tessellation;
 };
 

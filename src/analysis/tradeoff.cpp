@@ -26,6 +26,7 @@ enum class Path { fast, reference_double, gouraud_float };
 // One point of the knob space. tessellation 0: the scene has no teapot.
 struct Config {
   int spp = 1;
+  float aa_threshold = -1;  // adaptive sampling's threshold; < 0: uniform sampling
   int tessellation = 0;
   PowMode pow = PowMode::exact;
   Path path = Path::fast;
@@ -33,8 +34,8 @@ struct Config {
   bool shadows = true;
 
   bool operator<(const Config& o) const {
-    return std::tie(spp, tessellation, pow, path, divisor, shadows) <
-           std::tie(o.spp, o.tessellation, o.pow, o.path, o.divisor, o.shadows);
+    return std::tie(spp, aa_threshold, tessellation, pow, path, divisor, shadows) <
+           std::tie(o.spp, o.aa_threshold, o.tessellation, o.pow, o.path, o.divisor, o.shadows);
   }
   bool operator==(const Config& o) const { return !(*this < o) && !(o < *this); }
 };
@@ -154,6 +155,8 @@ class Session {
     s.render.width = std::max(1, (m_width + c.divisor / 2) / c.divisor);
     s.render.height = std::max(1, (m_height + c.divisor / 2) / c.divisor);
     s.render.spp = c.spp;
+    s.render.sampling = c.aa_threshold < 0 ? Sampling::uniform : Sampling::adaptive;
+    s.render.aa_threshold = std::max(0.0f, c.aa_threshold);
     s.render.pow = c.pow;
     s.render.shadows = c.shadows;
     Image image;
@@ -199,6 +202,18 @@ std::vector<Setting> settings_of(Knob knob, const Session& session, const Tradeo
     for (int s : o.spp_levels) {
       add(
           std::to_string(s), [s](Config& c) { c.spp = s; }, s == o.reference_spp);
+    }
+  } else if (knob == Knob::adaptive) {
+    add(
+        "uniform", [](Config&) {}, false);  // the base: what adaptive sampling is weighed against
+    for (float t : o.adaptive_thresholds) {
+      add(
+          std::to_string(o.adaptive_spp) + " t=1/" + std::to_string(std::lround(1.0f / t)),
+          [&o, t](Config& c) {
+            c.spp = o.adaptive_spp;
+            c.aa_threshold = t;
+          },
+          false);
     }
   } else if (knob == Knob::tessellation) {
     if (session.finest() == 0) return out;  // no teapot: skipped (tradeoff_notes says so)
@@ -256,6 +271,7 @@ TradeoffOptions quick_tradeoff_options() {
   o.runs = 3;
   o.reference_spp = 64;
   o.spp_levels = {1, 2, 4, 8, 16};
+  o.adaptive_thresholds = {1.0f / 16, 1.0f / 64};
   return o;
 }
 
@@ -294,6 +310,8 @@ std::vector<std::string> tradeoff_notes(const Scene& scene, const TradeoffOption
           : "shading: gouraud applies to " + std::to_string(meshes) +
                 " mesh object(s), spheres stay per pixel; its time comes from the single-ray "
                 "reference path in float, not the packet renderer");
+  notes.push_back("spp: uniform sampling; adaptive: " + std::to_string(options.adaptive_spp) +
+                  " spp in the pixels the refine rule picks at threshold t, the centre elsewhere");
   notes.push_back(
       "resolution: rendered at 1/d of the width and height, upsampled bilinearly "
       "(upsampling included in the time)");
@@ -306,9 +324,9 @@ std::vector<std::string> tradeoff_notes(const Scene& scene, const TradeoffOption
 }
 
 const std::vector<Knob>& tradeoff_knobs() {
-  static const std::vector<Knob> knobs{Knob::spp,       Knob::tessellation, Knob::pow,
-                                       Knob::precision, Knob::shading,      Knob::resolution,
-                                       Knob::shadows};
+  static const std::vector<Knob> knobs{Knob::spp,     Knob::adaptive,  Knob::tessellation,
+                                       Knob::pow,     Knob::precision, Knob::shading,
+                                       Knob::resolution, Knob::shadows};
   return knobs;
 }
 
@@ -316,6 +334,8 @@ const char* to_string(Knob knob) {
   switch (knob) {
     case Knob::spp:
       return "spp";
+    case Knob::adaptive:
+      return "adaptive";
     case Knob::tessellation:
       return "tessellation";
     case Knob::pow:

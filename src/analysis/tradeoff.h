@@ -17,7 +17,7 @@
 namespace gloss {
 
 // The accuracy knobs, in the order run_tradeoff measures them.
-enum class Knob { spp, tessellation, pow, precision, shading, resolution, shadows };
+enum class Knob { spp, adaptive, tessellation, pow, precision, shading, resolution, shadows };
 
 // Every knob, in measuring order.
 const std::vector<Knob>& tradeoff_knobs();
@@ -31,7 +31,10 @@ struct TradeoffOptions {
   int runs = 5;               // timed renders per row; the median is reported
   int reference_spp = 256;    // samples per pixel of the reference
   int base_spp = 4;           // samples per pixel of every row whose knob is not spp
-  std::vector<int> spp_levels{1, 2, 4, 8, 16, 32, 64};    // spp knob, fast float renderer
+  std::vector<int> spp_levels{1, 2, 4, 8, 16, 32, 64};    // spp knob, uniform sampling
+  int adaptive_spp = 16;                                   // adaptive knob: its spp and
+  std::vector<float> adaptive_thresholds{1.0f / 16, 1.0f / 32, 1.0f / 64, 1.0f / 128,
+                                         1.0f / 256};  // refine thresholds
   std::vector<int> tessellation_levels{2, 4, 8, 16, 32};  // teapot segments per patch side
   std::vector<int> resolution_divisors{8, 4, 2, 1};       // preview at 1/d, upsampled
   std::vector<Knob> knobs;                                // the knobs to measure; empty: all
@@ -44,12 +47,14 @@ void tradeoff_image_size(const Scene& scene, const TradeoffOptions& options, int
                          int& height);
 
 // Settings for a quick look from the editor's Quality panel: 256 pixels wide, 3 runs, a 64-spp
-// reference, spp up to 16. A few seconds on the shipped scenes.
+// reference, spp up to 16, adaptive at thresholds 1/16 and 1/64. A few seconds on the shipped
+// scenes.
 TradeoffOptions quick_tradeoff_options();
 
 struct TradeoffRow {
   Knob knob = Knob::spp;
-  std::string setting;  // spp: "1".."64"; tessellation: "2".."32"; pow: "exact", "fast";
+  std::string setting;  // spp: "1".."64"; adaptive: "uniform" (the base), "16 t=1/64" (spp and
+                        // refine threshold); tessellation: "2".."32"; pow: "exact", "fast";
                         // precision: "float", "double"; shading: "per-pixel", "gouraud";
                         // resolution: "1/8".."1"; shadows: "on", "off"
   double time_ms = 0;   // median wall time of one render: BVH build, trace, shade (resolution:

@@ -1,6 +1,7 @@
-// gloss-cli render SCENE.json [-o OUT.png] [--pfm OUT.pfm] [--terms DIR] [--width N] [--height N]
+// gloss-cli render SCENE.json|SHOT.png [-o OUT.png] [--pfm OUT.pfm] [--terms DIR] [--width N]
+// [--height N]
 //                  [--spp N] [--model phong|blinn-phong] [--shadows on|off] [--srgb]
-//                  [--precision float|double]
+//                  [--sampling adaptive|uniform] [--aa-threshold T] [--precision float|double]
 // Options override the scene's render block; the result is validated again before rendering.
 #include <chrono>
 #include <cstdio>
@@ -13,6 +14,7 @@
 
 #include <unistd.h>
 
+#include "base/assets.h"
 #include "base/error.h"
 #include "base/printable_text.h"
 #include "base/text_distance.h"
@@ -20,6 +22,7 @@
 #include "cli/commands.h"
 #include "engine/renderer.h"
 #include "io/image_io.h"
+#include "io/scene_in_png.h"
 #include "io/scene_loader.h"
 #include "reference/reference_renderer.h"
 
@@ -33,12 +36,14 @@ struct RenderArgs {
   std::string scene;
   std::string png, pfm, terms_dir;
   long long width = 0, height = 0, spp = 0;
-  std::string model, shadows;
+  std::string model, shadows, sampling;
+  double aa_threshold = 0;
   std::string precision = "float";  // float: the fast renderer; double: the reference path
   bool srgb = false;
   CLI::Option *png_option = nullptr, *pfm_option = nullptr, *terms_option = nullptr;
   CLI::Option *width_option = nullptr, *height_option = nullptr, *spp_option = nullptr;
   CLI::Option *model_option = nullptr, *shadows_option = nullptr;
+  CLI::Option *sampling_option = nullptr, *aa_threshold_option = nullptr;
 };
 
 // A size option's value, refused before it reaches the scene (and before any allocation).
@@ -73,6 +78,16 @@ void apply_overrides(const RenderArgs& args, Scene& scene) {
     }
     render.shadows = args.shadows == "on";
   }
+  if (*args.sampling_option && !parse_sampling(args.sampling, render.sampling)) {
+    throw InputError(args.scene, "expected 'adaptive' or 'uniform', got '" + args.sampling + "'",
+                     0, 0, "--sampling");
+  }
+  if (*args.aa_threshold_option) {
+    if (!(args.aa_threshold >= 0.0 && args.aa_threshold <= 1.0)) {
+      throw InputError(args.scene, "must be a number from 0 to 1", 0, 0, "--aa-threshold");
+    }
+    render.aa_threshold = static_cast<float>(args.aa_threshold);
+  }
   if (args.srgb) render.srgb = true;
   if (args.precision != "float" && args.precision != "double") {
     throw InputError(args.scene, "expected 'float' or 'double', got '" + args.precision + "'", 0, 0,
@@ -102,7 +117,8 @@ std::string settings_summary(const RenderSettings& r, const std::string& precisi
          " spp, " + to_string(r.model) + ", shadows " + (r.shadows ? "on" : "off") +
          ", energy_normalize " + (r.energy_normalize ? "on" : "off") + ", srgb " +
          (r.srgb ? "on" : "off") + ", pow " + (r.pow == PowMode::exact ? "exact" : "fast") +
-         ", seed " + std::to_string(r.seed) + ", precision " + precision;
+         ", seed " + std::to_string(r.seed) + ", precision " + precision +
+         (r.spp > 1 ? std::string(", sampling ") + to_string(r.sampling) : std::string());
 }
 
 // Writes every requested file; if one fails, the ones already written by this run are removed
@@ -111,7 +127,7 @@ class OutputWriter {
  public:
   OutputWriter(const Scene& scene, const std::string& precision) : m_srgb(scene.render.srgb) {
     m_text = {{"Software", std::string("gloss ") + gloss_version()},
-              {"gloss:scene", scene_to_json_text(scene)},
+              {kSceneChunkKeyword, embedded_scene_text(scene)},
               {"gloss:settings", settings_summary(scene.render, precision)}};
   }
   ~OutputWriter() {
@@ -145,7 +161,9 @@ void run_render(RenderArgs args) {
   apply_overrides(args, scene);
 
   if (!*args.png_option && !*args.pfm_option && !*args.terms_option) {
-    args.png = fs::path(args.scene).stem().string() + ".png";  // in the current folder
+    // In the current folder; a PNG given as the scene is not overwritten by its own re-render.
+    const bool from_png = has_png_signature(args.scene);
+    args.png = fs::path(args.scene).stem().string() + (from_png ? "-rerender.png" : ".png");
   }
   if (!args.png.empty()) check_writable_folder(fs::path(args.png).parent_path(), args.png);
   if (!args.pfm.empty()) check_writable_folder(fs::path(args.pfm).parent_path(), args.pfm);
@@ -159,9 +177,26 @@ void run_render(RenderArgs args) {
   RenderOptions options;
   options.terms = !args.terms_dir.empty();
   const auto start = std::chrono::steady_clock::now();
-  const TermImages images = args.precision == "double"
-                                ? render_reference<double>(scene, ReferenceOptions{})
-                                : render(scene, options);
+  TermImages images;
+  std::vector<std::uint32_t> refined;  // adaptive sampling's refined pixels
+  const bool adaptive = scene.render.spp > 1 && scene.render.sampling == Sampling::adaptive;
+  if (args.precision == "double") {
+    // Adaptive sampling: the fast renderer's placement, then every sample in double.
+    std::vector<std::uint8_t> mask;
+    ReferenceOptions reference;
+    if (adaptive) {
+      options.terms = false;
+      options.refined = &refined;
+      render(scene, options);
+      mask.assign(static_cast<std::size_t>(scene.render.width) * scene.render.height, 0);
+      for (const std::uint32_t p : refined) mask[p] = 1;
+      reference.refined = &mask;
+    }
+    images = render_reference<double>(scene, reference);
+  } else {
+    options.refined = &refined;
+    images = render(scene, options);
+  }
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
@@ -179,7 +214,15 @@ void run_render(RenderArgs args) {
   char time_text[64];
   std::snprintf(time_text, sizeof time_text, "%.1f ms", ms);
   std::cout << "rendered " << args.scene << " (" << settings_summary(scene.render, args.precision)
-            << ") in " << time_text << "\n";
+            << ") in " << time_text;
+  if (adaptive) {
+    char share[64];
+    std::snprintf(share, sizeof share, "; refined %.1f%% of the pixels",
+                  100.0 * static_cast<double>(refined.size()) /
+                      (static_cast<double>(scene.render.width) * scene.render.height));
+    std::cout << share;
+  }
+  std::cout << "\n";
   for (const std::string& path : writer.commit()) std::cout << "wrote " << path << "\n";
   for (const std::string& warning : warnings)
     std::cerr << "warning: " << printable_text(warning) << "\n";
@@ -190,10 +233,14 @@ void run_render(RenderArgs args) {
 void add_render_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("render", "Render a scene file to PNG / PFM images");
   auto args = std::make_shared<RenderArgs>();
-  sub->add_option("scene", args->scene, "Scene file (JSON, docs/scene-format.md)")->required();
+  sub->add_option("scene", args->scene,
+                  "Scene file (JSON, " + doc_path("scene-format.md") +
+                      "), or a PNG written by gloss (its embedded scene)")
+      ->required();
   args->png_option = sub->add_option(
       "-o,--output", args->png,
-      "PNG output (8-bit, clamped); default <scene stem>.png when no output is given");
+      "PNG output (8-bit, clamped); default <scene stem>.png (<stem>-rerender.png for a PNG "
+      "scene) when no output is given");
   args->pfm_option = sub->add_option("--pfm", args->pfm, "PFM output (linear float, unclamped)");
   args->terms_option = sub->add_option(
       "--terms", args->terms_dir,
@@ -203,6 +250,12 @@ void add_render_command(CLI::App& app) {
   args->spp_option = sub->add_option("--spp", args->spp, "Samples per pixel");
   args->model_option = sub->add_option("--model", args->model, "phong or blinn-phong");
   args->shadows_option = sub->add_option("--shadows", args->shadows, "on or off");
+  args->sampling_option = sub->add_option(
+      "--sampling", args->sampling,
+      "spp > 1: adaptive (default: samples where the centre image has edges) or uniform");
+  args->aa_threshold_option = sub->add_option(
+      "--aa-threshold", args->aa_threshold,
+      "adaptive: refine where neighbouring centres differ by more (0..1, default 1/64)");
   sub->add_flag("--srgb", args->srgb, "sRGB-encode the PNGs (default: clamp only)");
   sub->add_option(
       "--precision", args->precision,

@@ -6,10 +6,12 @@
 #include <mutex>
 #include <thread>
 
+#include "engine/adaptive_refinement.h"
 #include "engine/render_context.h"
 #include "engine/render_plan.h"
 #include "engine/shade/pixel_factors.h"
 #include "engine/trace/embree_scene.h"
+#include "engine/trace/refined_samples.h"
 #include "engine/trace/sample_cache.h"
 #include "engine/trace/single_sample_pass.h"
 #include "scene/scene_diff.h"
@@ -71,10 +73,20 @@ struct ProgressiveRenderer::Impl {
   // Publishes frame, its images made from the current factors.
   void publish(std::shared_ptr<RenderedFrame> frame, double pass_ms, long long rays,
                bool converged);
+  // spp > 1 spent adaptively: the full-resolution cache holds centres plus refined samples.
+  bool adaptive() const {
+    return scene->render.spp > 1 && scene->render.sampling == Sampling::adaptive;
+  }
+  // Samples per pixel the cache stands for (adaptive: per refined pixel, once refined).
+  int cached_spp() const {
+    return cache.refined.spp > 0 ? cache.refined.spp : cache.samples();
+  }
   bool converged_state() const {
     return dirty == ChangeClass::none && level == options.preview_levels &&
-           cache.samples() >= scene->render.spp;
+           cached_spp() >= scene->render.spp;
   }
+  // Traces the refined samples the centre image asks for; false when cancelled.
+  bool refine();
 };
 
 void ProgressiveRenderer::Impl::run() {
@@ -135,7 +147,7 @@ void ProgressiveRenderer::Impl::start_level(int new_level) {
   const RenderSettings& r = scene->render;
   const int shift = options.preview_levels - level;  // 3, 2, 1 -> 1/8, 1/4, 1/2
   const int w = std::max(1, r.width >> shift), h = std::max(1, r.height >> shift);
-  const int target = level == options.preview_levels ? r.spp : 1;
+  const int target = level == options.preview_levels && !adaptive() ? r.spp : 1;
   reset_sample_cache(cache, *scene, w, h, target);  // keeps the memory of the last image
 }
 
@@ -158,7 +170,7 @@ bool ProgressiveRenderer::Impl::step() {
     factors_done = true;
   } else if (dirty == ChangeClass::light) {
     redo = ChangeClass::light;
-    if (cache.samples() == 1) {  // one pass: light factors and pixel factors
+    if (cache.samples() == 1 && cache.refined.spp == 0) {  // one pass: light and pixel factors
       ok = relight_single_sample(cache, ctx, factors, total);
       factors_done = true;
     } else {
@@ -176,6 +188,10 @@ bool ProgressiveRenderer::Impl::step() {
       cache = std::move(previous);
       level = previous_level;
     }
+  } else if (dirty == ChangeClass::none && adaptive()) {
+    redo = ChangeClass::exponent;  // cancelled: the factors are rebuilt from the centres
+    ok = refine() && refine_pixel_factors(cache, ctx, factors);
+    factors_done = true;
   } else if (dirty == ChangeClass::none) {
     // Double the samples each pass: 1, 2, 4, 8 ... up to the target.
     const int have = cache.samples();
@@ -197,6 +213,19 @@ bool ProgressiveRenderer::Impl::step() {
   return true;
 }
 
+bool ProgressiveRenderer::Impl::refine() {
+  // The total the centre samples make, what the rule looks at: the frame published last.
+  std::shared_ptr<const RenderedFrame> centres;
+  {
+    std::lock_guard<std::mutex> lock(publish_mutex);
+    centres = published;
+  }
+  std::vector<std::uint32_t> pixels =
+      choose_refined_pixels(cache, centres->images.total, scene->render.aa_threshold, 0,
+                            cache.height);
+  return trace_refined_samples(cache, ctx, std::move(pixels), scene->render.spp);
+}
+
 void ProgressiveRenderer::Impl::publish(std::shared_ptr<RenderedFrame> frame, double pass_ms,
                                         long long rays, bool converged) {
   FrameInfo& info = frame->info;
@@ -204,7 +233,8 @@ void ProgressiveRenderer::Impl::publish(std::shared_ptr<RenderedFrame> frame, do
   info.pass = pass++;
   info.width = cache.width;
   info.height = cache.height;
-  info.spp = cache.samples();
+  info.spp = cached_spp();
+  frame->refined = cache.refined.pixels;
   info.target_spp = scene->render.spp;
   info.pass_ms = pass_ms;
   info.since_change_ms = ms_between(worker_changed_at, Clock::now());
@@ -217,8 +247,9 @@ void ProgressiveRenderer::Impl::publish(std::shared_ptr<RenderedFrame> frame, do
     published = std::move(frame);
     callback = on_publish;
   }
-  published_cv.notify_all();
+  // The callback first: a caller woken by wait_converged then sees what the callback did.
   if (callback) callback();
+  published_cv.notify_all();
 }
 
 ProgressiveRenderer::ProgressiveRenderer(ProgressiveOptions options)

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include "base/image.h"
 #include "engine/change_class.h"
@@ -28,6 +29,9 @@ struct FrameInfo {
 struct RenderedFrame {
   FrameInfo info;
   TermImages images;  // total always; the four terms when ProgressiveOptions::terms is set
+  // Adaptive sampling: the pixels given spp stratified samples (y * width + x, ascending); the
+  // others hold their centre sample. render() with this placement gives the same images.
+  std::vector<std::uint32_t> refined;
 };
 
 struct ProgressiveOptions {

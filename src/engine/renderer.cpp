@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cstring>
 
+#include "engine/adaptive_refinement.h"
 #include "engine/render_context.h"
 #include "engine/shade/pixel_factors.h"
 #include "engine/trace/embree_scene.h"
+#include "engine/trace/refined_samples.h"
 #include "engine/trace/sample_cache.h"
 #include "engine/trace/single_sample_pass.h"
 #include "scene/memory_estimate.h"
@@ -14,9 +16,11 @@
 namespace gloss {
 
 namespace {
-void copy_rows(const Image& band, int row0, Image& image) {
-  std::memcpy(&image.pixels[static_cast<std::size_t>(row0) * image.width], band.pixels.data(),
-              band.pixels.size() * sizeof(glm::vec3));
+// Copies `rows` rows of band from its row `from` to image rows from row0.
+void copy_rows(const Image& band, int from, int rows, int row0, Image& image) {
+  std::memcpy(&image.pixels[static_cast<std::size_t>(row0) * image.width],
+              &band.pixels[static_cast<std::size_t>(from) * band.width],
+              static_cast<std::size_t>(rows) * band.width * sizeof(glm::vec3));
 }
 }  // namespace
 
@@ -38,24 +42,51 @@ TermImages render(const Scene& scene, const RenderOptions& options) {
   if (options.terms) {
     out.emissive = out.ambient = out.diffuse = out.specular = Image(w, h);
   }
+  const bool adaptive = spp > 1 && scene.render.sampling == Sampling::adaptive;
+  if (options.refined != nullptr) options.refined->clear();
   SampleCache cache;
   PixelFactors factors;
   TermImages band;
   for (int row0 = 0; row0 < h; row0 += band_rows) {
-    cache = make_sample_cache(scene, w, h, spp, row0, std::min(band_rows, h - row0));
-    if (spp == 1) {  // the same bits, one pass (with the total, unless terms are wanted)
+    const int rows = std::min(band_rows, h - row0);
+    // Adaptive bands carry a row of their neighbours' centres on each side, so the rule sees
+    // what it sees in a whole image and the placement does not depend on the banding.
+    const int halo0 = adaptive ? std::max(0, row0 - 1) : row0;
+    const int halo1 = adaptive ? std::min(h, row0 + rows + 1) : row0 + rows;
+    cache = make_sample_cache(scene, w, h, adaptive ? 1 : spp, halo0, halo1 - halo0);
+    if (adaptive) {
+      trace_single_sample(cache, ctx, factors, &band.total);
+      const auto region0 = static_cast<std::uint32_t>(halo0 * w);  // image index of region 0
+      std::vector<std::uint32_t> pixels;
+      if (options.placement != nullptr) {
+        const auto first = std::lower_bound(options.placement->begin(), options.placement->end(),
+                                            static_cast<std::uint32_t>(row0 * w));
+        const auto last = std::lower_bound(first, options.placement->end(),
+                                           static_cast<std::uint32_t>((row0 + rows) * w));
+        for (auto p = first; p != last; ++p) pixels.push_back(*p - region0);
+      } else {
+        pixels = choose_refined_pixels(cache, band.total, scene.render.aa_threshold, row0 - halo0,
+                                       row0 - halo0 + rows);
+      }
+      trace_refined_samples(cache, ctx, std::move(pixels), spp);
+      build_pixel_factors(cache, ctx, factors);
+      if (options.refined != nullptr) {
+        for (const std::uint32_t p : cache.refined.pixels) options.refined->push_back(p + region0);
+      }
+    } else if (spp == 1) {  // the same bits, one pass (with the total, unless terms are wanted)
       trace_single_sample(cache, ctx, factors, options.terms ? nullptr : &band.total);
     } else {
       add_samples(cache, ctx, spp);
       build_pixel_factors(cache, ctx, factors);
     }
     if (spp != 1 || options.terms) combine_terms(factors, ctx, band, options.terms);
-    copy_rows(band.total, row0, out.total);
+    const int from = row0 - halo0;
+    copy_rows(band.total, from, rows, row0, out.total);
     if (options.terms) {
-      copy_rows(band.emissive, row0, out.emissive);
-      copy_rows(band.ambient, row0, out.ambient);
-      copy_rows(band.diffuse, row0, out.diffuse);
-      copy_rows(band.specular, row0, out.specular);
+      copy_rows(band.emissive, from, rows, row0, out.emissive);
+      copy_rows(band.ambient, from, rows, row0, out.ambient);
+      copy_rows(band.diffuse, from, rows, row0, out.diffuse);
+      copy_rows(band.specular, from, rows, row0, out.specular);
     }
   }
   return out;

@@ -1,5 +1,6 @@
 #include "io/scene_loader.h"
 
+#include <cctype>
 #include <filesystem>
 #include <utility>
 
@@ -11,6 +12,7 @@
 #include "io/json_location.h"
 #include "io/material_json.h"
 #include "io/name_escape.h"
+#include "io/scene_in_png.h"
 #include "io/scene_json_reader.h"
 #include "io/scene_object_reader.h"
 #include "scene/fields.h"
@@ -88,11 +90,30 @@ void resolve_materials(const std::string& file, const MaterialMap& materials,
   }
 }
 
+// A materials file (material_io.h: only a non-empty "materials" block) opened as a scene would
+// fail on its missing "objects"; this says what the file is and where it belongs instead.
+constexpr const char* kLoadMaterialsHint =
+    "is a materials file, not a scene: load it with File > Load materials in the editor";
+
+void refuse_materials_file(const nlohmann::json& root, const std::string& path) {
+  if (root.is_object() && root.size() == 1 && root.contains("materials") &&
+      root["materials"].is_object() && !root["materials"].empty()) {
+    throw InputError(path, std::string("this ") + kLoadMaterialsHint);
+  }
+}
+
+bool has_mtl_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".mtl";
+}
+
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& path,
                   std::vector<std::string>* warnings) {
   const nlohmann::json root = parse_json_text(text, path);
+  refuse_materials_file(root, path);
   const JsonObjectReader top(
       root, path, "",
       allowed_keys(scene_fields(), {"camera", "lights", "materials", "objects", "render"}));
@@ -125,6 +146,10 @@ Scene parse_scene(const std::string& text, const std::string& path,
 }
 
 Scene load_scene(const std::string& path, std::vector<std::string>* warnings) {
+  if (has_png_signature(path)) return load_scene_from_png(path, warnings);
+  if (has_mtl_extension(path)) {
+    throw InputError(path, std::string("this MTL file ") + kLoadMaterialsHint);
+  }
   return parse_scene(read_text_file(path), path, warnings);
 }
 

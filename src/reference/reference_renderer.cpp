@@ -13,6 +13,7 @@
 #include "engine/parallel_loops.h"
 #include "engine/trace/embree_scene.h"
 #include "engine/trace/self_shadow.h"
+#include "reference/pixel_inspection.h"
 #include "reference/reference_hit.h"
 #include "scene/camera.h"
 #include "scene/validation.h"
@@ -98,13 +99,15 @@ bool occluded(const Job<T>& job, int object, const ReferenceHit<T>& h,
 
 // The unshadowed diffuse and specular weights of one light at one point (shading.h), the
 // specular one including c^alpha: diffuse = kd Ld dw, specular = ks Ls sw (times normalisation).
+// Returns the factors they came from (the pixel inspector shows them).
 template <class T>
-void light_weights(const Job<T>& job, const Vec3<T>& p, const Vec3<T>& n, const Vec3<T>& v,
-                   const PointLight& light, T alpha, T& dw, T& sw) {
+LightFactors<T> light_weights(const Job<T>& job, const Vec3<T>& p, const Vec3<T>& n,
+                              const Vec3<T>& v, const PointLight& light, T alpha, T& dw, T& sw) {
   const LightFactors<T> f =
       light_factors<T>(p, n, v, Vec3<T>(light.position), Vec3<T>(light.attenuation), false, T(1));
   dw = f.diffuse_weight;
   sw = f.spec_weight * specular_power<T>(model_cosine(f, job.scene->render.model), alpha, job.pow);
+  return f;
 }
 
 // Gouraud weights at a mesh hit: the corners' unshadowed weights interpolated with the
@@ -132,11 +135,34 @@ void gouraud_weights(const Job<T>& job, const Mesh& mesh, std::uint32_t prim,
   sw = std::max(sw, T(0));
 }
 
-// One sample: trace, recompute the hit in T, shade every light, add to sum.
+// The pixel inspector's record of one light, filled beside the sums (record mode only): the
+// factors of the contract that the sums do not keep. The shadow test is made whatever ndl is,
+// as the contract defines vis; it changes nothing when ndl <= 0.
 template <class T>
-void shade_sample(const Job<T>& job, int x, int y, int s, PixelSums<T>& sum, SampleKey& key) {
+void record_light(const Job<T>& job, int object, const ReferenceHit<T>& h, const PointLight& light,
+                  T alpha, LightBreakdown& out) {
+  const Vec3<T> to_light = Vec3<T>(light.position) - h.p;
+  const T d = glm::length(to_light);
+  out.distance = double(d);
+  out.ndl = d > T(0) ? double(glm::dot(h.n, to_light) / d) : 0.0;
+  out.attenuation = double(attenuation(Vec3<T>(light.attenuation), d));
+  T dw = 0, sw = 0;
+  const LightFactors<T> f = light_weights(job, h.p, h.n, h.v, light, alpha, dw, sw);
+  const T c = model_cosine(f, job.scene->render.model);
+  out.cosine = double(c);
+  out.cosine_power = double(specular_power<T>(c, alpha, job.pow));
+  const bool blocked =
+      job.scene->render.shadows && d > T(0) && occluded(job, object, h, light.position);
+  out.visibility = blocked ? 0.0 : 1.0;
+}
+
+// One sample: trace, recompute the hit in T, shade every light, add to sum. record (the pixel
+// inspector, one sample): also keeps what each light's factors were.
+template <class T>
+void shade_sample(const Job<T>& job, int x, int y, int s, int count, PixelSums<T>& sum,
+                  SampleKey& key, PixelBreakdown* record = nullptr) {
   const Scene& scene = *job.scene;
-  const SampleOffset o = sample_offset(scene.render.seed, x, y, s, job.spp);
+  const SampleOffset o = sample_offset(scene.render.seed, x, y, s, count);
   const Vec3<T> dir =
       camera_direction<T>(job.camera, T(x) + T(o.dx), T(y) + T(o.dy), job.width, job.height);
   RTCRayHit rh;
@@ -173,6 +199,14 @@ void shade_sample(const Job<T>& job, int x, int y, int s, PixelSums<T>& sum, Sam
   key.flat = is_mesh && !object.mesh->smooth();
   key.p = glm::vec3(h.p);
   key.ng = glm::vec3(h.ng);
+  if (record != nullptr) {
+    record->hit = true;
+    record->object = key.object;
+    record->position = glm::dvec3(h.p);
+    record->normal = glm::dvec3(h.n);
+    record->view = glm::dvec3(h.v);
+    record->lights.assign(scene.lights.size(), LightBreakdown{});
+  }
 
   const Material& m = scene.materials[static_cast<std::size_t>(object.material)];
   const T alpha = T(m.shininess);
@@ -180,8 +214,14 @@ void shade_sample(const Job<T>& job, int x, int y, int s, PixelSums<T>& sum, Sam
       scene.render.energy_normalize ? energy_normalization<T>(scene.render.model, alpha) : T(1);
   sum.emissive += Vec3<T>(m.emission);
   sum.ambient += Vec3<T>(m.ambient) * job.ambient_light;
+  if (record != nullptr) {
+    record->material = object.material;
+    record->alpha = double(alpha);
+    record->energy_factor = double(norm);
+  }
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const PointLight& light = scene.lights[i];
+    if (record != nullptr) record_light(job, key.object, h, light, alpha, record->lights[i]);
     T dw = 0, sw = 0;
     bool lit_side;
     if (job.gouraud && is_mesh) {
@@ -199,7 +239,27 @@ void shade_sample(const Job<T>& job, int x, int y, int s, PixelSums<T>& sum, Sam
     }
     sum.diffuse += Vec3<T>(m.diffuse) * Vec3<T>(light.diffuse) * dw;
     sum.specular += Vec3<T>(m.specular) * Vec3<T>(light.specular) * (sw * norm);
+    if (record != nullptr) {  // the same products, kept apart (the sums above stay as they were)
+      record->lights[i].diffuse = glm::dvec3(Vec3<T>(m.diffuse) * Vec3<T>(light.diffuse) * dw);
+      record->lights[i].specular =
+          glm::dvec3(Vec3<T>(m.specular) * Vec3<T>(light.specular) * (sw * norm));
+    }
   }
+}
+
+template <class T>
+Job<T> make_job(const Scene& scene, RTCScene rtc, int spp, PowMode pow) {
+  Job<T> job;
+  job.scene = &scene;
+  job.rtc = rtc;
+  job.width = scene.render.width;
+  job.height = scene.render.height;
+  job.spp = spp;
+  job.pow = pow;
+  job.camera = make_camera_basis<T>(scene.camera, job.width, job.height);
+  job.ambient_light = Vec3<T>(scene.ambient);
+  for (const PointLight& light : scene.lights) job.ambient_light += Vec3<T>(light.ambient);
+  return job;
 }
 
 // 1 for pixels whose own samples are mixed or that differ from one of their 8 neighbours.
@@ -231,17 +291,9 @@ TermImages render_reference(const Scene& scene, const ReferenceOptions& options)
     throw std::invalid_argument("render_reference: spp out of range");
   }
   const EmbreeScene embree(scene);
-  Job<T> job;
-  job.scene = &scene;
-  job.rtc = embree.handle();
-  job.width = scene.render.width;
-  job.height = scene.render.height;
-  job.spp = options.spp > 0 ? options.spp : scene.render.spp;
-  job.pow = options.pow.value_or(scene.render.pow);
+  Job<T> job = make_job<T>(scene, embree.handle(), options.spp > 0 ? options.spp : scene.render.spp,
+                           options.pow.value_or(scene.render.pow));
   job.gouraud = options.gouraud;
-  job.camera = make_camera_basis<T>(scene.camera, job.width, job.height);
-  job.ambient_light = Vec3<T>(scene.ambient);
-  for (const PointLight& light : scene.lights) job.ambient_light += Vec3<T>(light.ambient);
 
   const int w = job.width, h = job.height;
   const std::size_t pixels = static_cast<std::size_t>(w) * h;
@@ -249,21 +301,25 @@ TermImages render_reference(const Scene& scene, const ReferenceOptions& options)
   out.total = out.emissive = out.ambient = out.diffuse = out.specular = Image(w, h);
   std::vector<SampleKey> first(options.edges != nullptr ? pixels : 0);
   std::vector<std::uint8_t> mixed(first.size(), 0);
-  const T inv_spp = T(1) / T(job.spp);
+  if (options.refined != nullptr && options.refined->size() != pixels) {
+    throw std::invalid_argument("render_reference: refined mask of the wrong size");
+  }
   const Vec3<T> background(scene.background);
 
   auto rows = [&](const tbb::blocked_range<int>& range) {
     for (int y = range.begin(); y != range.end(); ++y) {
       if (options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed)) return;
       for (int x = 0; x < w; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * w + x;
+        const int count = options.refined != nullptr && (*options.refined)[i] == 0 ? 1 : job.spp;
+        const T inv_spp = T(1) / T(count);
         PixelSums<T> sum;
         SampleKey key0, key;
         bool is_mixed = false;
-        for (int s = 0; s < job.spp; ++s) {
-          shade_sample(job, x, y, s, sum, s == 0 ? key0 : key);
+        for (int s = 0; s < count; ++s) {
+          shade_sample(job, x, y, s, count, sum, s == 0 ? key0 : key);
           if (s > 0 && !is_mixed) is_mixed = discontinuous(key0, key);
         }
-        const std::size_t i = static_cast<std::size_t>(y) * w + x;
         const Vec3<T> e = sum.emissive * inv_spp, a = sum.ambient * inv_spp,
                       d = sum.diffuse * inv_spp, sp = sum.specular * inv_spp;
         out.emissive.pixels[i] = glm::vec3(e);
@@ -293,5 +349,56 @@ TermImages render_reference(const Scene& scene, const ReferenceOptions& options)
 
 template TermImages render_reference<float>(const Scene&, const ReferenceOptions&);
 template TermImages render_reference<double>(const Scene&, const ReferenceOptions&);
+
+// The pixel inspector: one sample (the pixel centre) through shade_sample in double, recording.
+struct PixelInspector::State {
+  Scene scene;
+  EmbreeScene embree;
+  explicit State(const Scene& s) : scene(s), embree(scene) {}
+};
+
+PixelInspector::PixelInspector(const Scene& scene) {
+  validate_scene(scene);
+  m = std::make_unique<State>(scene);
+}
+
+PixelInspector::~PixelInspector() = default;
+
+PixelBreakdown PixelInspector::inspect(int x, int y) const {
+  const Scene& scene = m->scene;
+  if (x < 0 || y < 0 || x >= scene.render.width || y >= scene.render.height) {
+    throw std::out_of_range("pixel " + std::to_string(x) + " " + std::to_string(y) +
+                            " is outside the " + std::to_string(scene.render.width) + "x" +
+                            std::to_string(scene.render.height) + " render");
+  }
+  const Job<double> job = make_job<double>(scene, m->embree.handle(), 1, PowMode::exact);
+  PixelBreakdown out;
+  out.x = x;
+  out.y = y;
+  out.width = job.width;
+  out.height = job.height;
+  out.model = scene.render.model;
+  PixelSums<double> sum;
+  SampleKey key;
+  shade_sample(job, x, y, 0, 1, sum, key, &out);
+  // As render_reference forms its pixel at one sample per pixel (inv_spp = 1).
+  out.emissive = sum.emissive;
+  out.ambient = sum.ambient;
+  out.diffuse = sum.diffuse;
+  out.specular = sum.specular;
+  out.total = form_total(sum.emissive, sum.ambient, sum.diffuse, sum.specular,
+                         glm::dvec3(scene.background) * double(sum.misses));
+  if (out.hit) {
+    out.object_name = scene.objects[static_cast<std::size_t>(out.object)].name;
+    if (out.material >= 0 && static_cast<std::size_t>(out.material) < scene.material_names.size()) {
+      out.material_name = scene.material_names[static_cast<std::size_t>(out.material)];
+    }
+  }
+  return out;
+}
+
+PixelBreakdown inspect_pixel(const Scene& scene, int x, int y) {
+  return PixelInspector(scene).inspect(x, y);
+}
 
 }  // namespace gloss

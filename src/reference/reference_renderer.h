@@ -33,6 +33,9 @@ struct ReferenceOptions {
   // the pixels where a hit or a shadow test can flip between precisions (spec: counted and
   // reported, not hidden).
   std::vector<std::uint8_t>* edges = nullptr;
+  // Adaptive sampling's placement (engine RenderOptions::refined): when set (width * height
+  // entries), pixels marked 1 take spp stratified samples and the others one at the centre.
+  const std::vector<std::uint8_t>* refined = nullptr;
 };
 
 // Renders scene.render's size, model, shadows, energy normalisation and seed, with the fast

@@ -105,6 +105,16 @@ const FieldTable<RenderSettings>& render_fields() {
     t.push_back(choice_field<&RenderSettings::pow>("pow", "pow", {"exact", "fast"})
                     .invalidates(ChangeClass::exponent)
                     .explain("c^alpha exactly, or by a fast approximation (a speed knob)"));
+    t.push_back(choice_field<&RenderSettings::sampling>("sampling", "sampling",
+                                                        {"adaptive", "uniform"})
+                    .explain("spp > 1: stratified samples where the centre image has edges "
+                             "(adaptive) or in every pixel (uniform)"));
+    t.push_back(scalar_field<&RenderSettings::aa_threshold>(FieldKind::number, "aa_threshold",
+                                                            "refine threshold")
+                    .range(0.0, 1.0)
+                    .ui(0.001, 0.25, true)
+                    .explain("adaptive: refine where neighbouring centre pixels differ by more, "
+                             "per channel of the clamped total"));
     return t;
   }();
   return table;

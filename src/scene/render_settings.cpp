@@ -35,4 +35,12 @@ bool parse_pow_mode(const std::string& name, PowMode& mode) {
   return parse_choice("pow", name, mode);
 }
 
+const char* to_string(Sampling sampling) {
+  return choice_names("sampling").at(static_cast<std::size_t>(sampling));
+}
+
+bool parse_sampling(const std::string& name, Sampling& sampling) {
+  return parse_choice("sampling", name, sampling);
+}
+
 }  // namespace gloss

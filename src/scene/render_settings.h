@@ -20,6 +20,14 @@ enum class PowMode { exact, fast };
 const char* to_string(PowMode mode);
 bool parse_pow_mode(const std::string& name, PowMode& mode);
 
+// How the samples of spp > 1 are spent: every pixel gets spp stratified samples (uniform), or
+// the pixel centre first and spp stratified samples only where the centre image needs them
+// (adaptive; the rule is in engine/adaptive_refinement.h and docs/spec/shading.md).
+enum class Sampling { adaptive, uniform };
+
+const char* to_string(Sampling sampling);
+bool parse_sampling(const std::string& name, Sampling& sampling);
+
 struct RenderSettings {
   int width = 640;   // pixels
   int height = 480;  // pixels
@@ -30,6 +38,10 @@ struct RenderSettings {
   bool srgb = false;              // PNG display encoding: false = clamp only (classic look)
   std::uint32_t seed = 0;         // jitter seed for spp > 1; same seed, same image
   PowMode pow = PowMode::exact;   // accuracy knob
+  Sampling sampling = Sampling::adaptive;  // for spp > 1
+  // Adaptive sampling refines a pixel whose clamped total differs from a neighbour's by more
+  // than this, per channel (linear, 0..1); a speed knob: lower refines more pixels.
+  float aa_threshold = 1.0f / 64.0f;
 };
 
 // Largest image side and pixel count accepted; larger requests are refused before allocating.

@@ -31,6 +31,7 @@ TradeoffOptions small_options() {
   o.reference_spp = 16;
   o.base_spp = 16;
   o.spp_levels = {1, 4, 16};
+  o.adaptive_thresholds = {1.0f / 16, 1.0f / 64};
   o.tessellation_levels = {2, 4, 8};
   o.resolution_divisors = {4, 2, 1};
   return o;
@@ -52,6 +53,14 @@ class Tradeoff : public ::testing::Test {
 };
 std::vector<TradeoffRow>* Tradeoff::rows = nullptr;
 
+TEST_F(Tradeoff, AdaptiveSamplingBeatsTheCentreSampleAndItsBaseRowIsTheBase) {
+  // 16 samples where the centre image has edges: nearer the reference than the centres alone.
+  EXPECT_LT(row("adaptive", "16 t=1/16").error.rmse, row("spp", "1").error.rmse);
+  EXPECT_LE(row("adaptive", "16 t=1/64").error.rmse, row("adaptive", "16 t=1/16").error.rmse);
+  EXPECT_TRUE(row("adaptive", "uniform").base_setting);
+  EXPECT_FALSE(row("adaptive", "16 t=1/64").base_setting);
+}
+
 TEST_F(Tradeoff, EveryKnobIsPresentWithItsSettingsInOrder) {
   std::map<std::string, std::vector<std::string>> got;
   std::vector<std::string> order;
@@ -59,9 +68,10 @@ TEST_F(Tradeoff, EveryKnobIsPresentWithItsSettingsInOrder) {
     if (got[to_string(r.knob)].empty()) order.push_back(to_string(r.knob));
     got[to_string(r.knob)].push_back(r.setting);
   }
-  EXPECT_EQ(order, (std::vector<std::string>{"spp", "tessellation", "pow", "precision", "shading",
-                                             "resolution", "shadows"}));
+  EXPECT_EQ(order, (std::vector<std::string>{"spp", "adaptive", "tessellation", "pow", "precision",
+                                             "shading", "resolution", "shadows"}));
   EXPECT_EQ(got["spp"], (std::vector<std::string>{"1", "4", "16"}));
+  EXPECT_EQ(got["adaptive"], (std::vector<std::string>{"uniform", "16 t=1/16", "16 t=1/64"}));
   EXPECT_EQ(got["tessellation"], (std::vector<std::string>{"2", "4", "8"}));
   EXPECT_EQ(got["pow"], (std::vector<std::string>{"exact", "fast"}));
   EXPECT_EQ(got["precision"], (std::vector<std::string>{"float", "double"}));
@@ -100,8 +110,9 @@ TEST_F(Tradeoff, BaseRowsAreTheReferenceSettingsButFloatAndTheBaseSpp) {
     if (r.base_setting) base.push_back(std::string(to_string(r.knob)) + "=" + r.setting);
   }
   EXPECT_EQ(base,
-            (std::vector<std::string>{"spp=16", "tessellation=8", "pow=exact", "precision=float",
-                                      "shading=per-pixel", "resolution=1", "shadows=on"}));
+            (std::vector<std::string>{"spp=16", "adaptive=uniform", "tessellation=8", "pow=exact",
+                                      "precision=float", "shading=per-pixel", "resolution=1",
+                                      "shadows=on"}));
 }
 
 // Each knob turned away from the reference costs accuracy: clearly more error than its

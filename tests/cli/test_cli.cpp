@@ -232,5 +232,58 @@ TEST_F(Cli, OutputInAReadOnlyFolderExitsOneAndLeavesNothing) {
   }
 }
 
+// A PNG that gloss-cli wrote carries its scene (docs/spec/scene-and-cli.md, "Reopening a PNG"):
+// rendered again it gives the same pixels, overrides included; a relative OBJ path still resolves
+// with the PNG in another folder.
+TEST_F(Cli, RenderingAPngItWroteGivesIdenticalPixels) {
+  const std::string obj_dir = std::string(GLOSS_TEST_DATA_DIR) + "/obj/";
+  std::filesystem::copy_file(obj_dir + "cube.obj", inputs.file("cube.obj"));
+  std::filesystem::copy_file(obj_dir + "cube.mtl", inputs.file("cube.mtl"));
+  write("mesh.json", R"({
+    "camera": {"eye": [2, 2, 4], "target": [0, 0, 0], "fov_y": 40},
+    "lights": [{"position": [2, 3, 4]}],
+    "materials": {"m": {"preset": "silver"}},
+    "objects": [{"type": "sphere", "center": [1, 0, 0], "radius": 0.5, "material": "m"},
+                {"type": "mesh", "file": "cube.obj", "scale": 0.5}]})");
+  for (const char* name : {"tiny.json", "mesh.json"}) {
+    SCOPED_TRACE(name);
+    const CliRun first =
+        run("render " + scene(name) + " -o first.png --width 32 --height 20 --spp 3 --model " +
+            "blinn-phong --shadows off");
+    ASSERT_EQ(first.status, 0) << first.err;
+    const CliRun again = run("render first.png -o again.png");
+    ASSERT_EQ(again.status, 0) << again.err;
+    const Png8 a = read_png(outputs.file("first.png"));
+    const Png8 b = read_png(outputs.file("again.png"));
+    EXPECT_EQ(b.width, 32);
+    EXPECT_EQ(b.height, 20);
+    EXPECT_TRUE(a.rgb == b.rgb);
+    std::filesystem::remove(outputs.file("first.png"));
+    std::filesystem::remove(outputs.file("again.png"));
+  }
+}
+
+TEST_F(Cli, APngSceneWithoutOutputOptionsIsNotOverwritten) {
+  ASSERT_EQ(run("render " + scene() + " -o shot.png").status, 0);
+  const CliRun r = run("render shot.png");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(outputs.entries(), (std::vector<std::string>{"shot-rerender.png", "shot.png"}));
+}
+
+TEST_F(Cli, APngWithoutASceneExitsTwoSayingSo) {
+  Image image(4, 2);
+  write_png(inputs.file("plain.png"), image, false, {{"Software", "another program"}});
+  expect_failure(run("render " + scene("plain.png") + " -o out.png"), 2,
+                 "plain.png: this PNG carries no scene (no 'gloss:scene' text); only PNGs "
+                 "written by gloss or gloss-cli reopen as scenes");
+}
+
+TEST_F(Cli, AMaterialsFileAsTheSceneSaysToLoadItAsMaterials) {
+  write("library.json", R"({"materials": {"red": {"diffuse": [0.6, 0.1, 0.1]}}})");
+  expect_failure(run("render " + scene("library.json") + " -o out.png"), 2,
+                 "library.json: this is a materials file, not a scene: load it with File > Load "
+                 "materials in the editor");
+}
+
 }  // namespace
 }  // namespace gloss

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <mutex>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -26,8 +27,11 @@ double max_abs_diff(const Image& a, const Image& b) {
   return worst;
 }
 
+// A fresh render with the frame's sample placement (adaptive sampling's refined pixels).
 void expect_matches_fresh_render(const RenderedFrame& frame, const Scene& scene) {
-  const TermImages fresh = render(scene);
+  RenderOptions options;
+  options.placement = &frame.refined;
+  const TermImages fresh = render(scene, options);
   EXPECT_LE(max_abs_diff(frame.images.total, fresh.total), 1e-6);
   EXPECT_LE(max_abs_diff(frame.images.emissive, fresh.emissive), 1e-6);
   EXPECT_LE(max_abs_diff(frame.images.ambient, fresh.ambient), 1e-6);
@@ -41,16 +45,18 @@ std::shared_ptr<const RenderedFrame> converge(ProgressiveRenderer& engine, const
   return engine.latest();
 }
 
-TEST(ProgressiveRenderer, PassesGoCoarseToFineAndConvergeToTheOneShotImage) {
-  ProgressiveRenderer engine;
+// The passes of one image (width, spp of each published frame) for a sampling mode.
+void expect_passes(Sampling sampling, const std::vector<int>& widths, const std::vector<int>& spps) {
   std::vector<FrameInfo> seen;
   std::mutex seen_mutex;
+  ProgressiveRenderer engine;  // destroyed first: its worker's callback uses the two above
   engine.set_on_publish([&] {
     std::lock_guard<std::mutex> lock(seen_mutex);
     seen.push_back(engine.latest()->info);
   });
   Scene scene = test::sphere_on_floor_scene();
   scene.render.spp = 16;
+  scene.render.sampling = sampling;
   const auto frame = converge(engine, scene);
   ASSERT_NE(frame, nullptr);
   EXPECT_TRUE(frame->info.converged);
@@ -58,15 +64,22 @@ TEST(ProgressiveRenderer, PassesGoCoarseToFineAndConvergeToTheOneShotImage) {
   expect_matches_fresh_render(*frame, scene);
   engine.set_on_publish(nullptr);
   std::lock_guard<std::mutex> lock(seen_mutex);
-  // 1/8, 1/4, 1/2, then 1, 2, 4, 8, 16 spp at full size.
-  ASSERT_EQ(seen.size(), 8u);
-  const int widths[] = {10, 20, 40, 80, 80, 80, 80, 80};
-  const int spps[] = {1, 1, 1, 1, 2, 4, 8, 16};
+  ASSERT_EQ(seen.size(), widths.size());
   for (std::size_t i = 0; i < seen.size(); ++i) {
     EXPECT_EQ(seen[i].width, widths[i]) << i;
     EXPECT_EQ(seen[i].spp, spps[i]) << i;
     EXPECT_EQ(seen[i].pass, static_cast<int>(i));
   }
+}
+
+TEST(ProgressiveRenderer, UniformPassesGoCoarseToFineAndConvergeToTheOneShotImage) {
+  // 1/8, 1/4, 1/2, then 1, 2, 4, 8, 16 spp at full size.
+  expect_passes(Sampling::uniform, {10, 20, 40, 80, 80, 80, 80, 80}, {1, 1, 1, 1, 2, 4, 8, 16});
+}
+
+TEST(ProgressiveRenderer, AdaptivePassesRefineTheCentreImageOnceAndConvergeToTheOneShotImage) {
+  // 1/8, 1/4, 1/2, the centres at full size, then the refined pixels' 16 samples.
+  expect_passes(Sampling::adaptive, {10, 20, 40, 80, 80}, {1, 1, 1, 1, 16});
 }
 
 TEST(ProgressiveRenderer, MaterialConstantEditReshadesWithoutRaysAndMatchesFreshRender) {

@@ -4,22 +4,6 @@
 
 namespace gloss {
 
-namespace {
-
-// The document with every exponent moved to model (document.h's rule) when keep is set.
-Scene with_model(const Scene& scene, ShadingModel model, bool keep) {
-  Scene out = scene;
-  if (keep) {
-    for (Material& m : out.materials) {
-      m.shininess = exponent_for_model(m.shininess, scene.render.model, model);
-    }
-  }
-  out.render.model = model;
-  return out;
-}
-
-}  // namespace
-
 AbScenes ab_scenes(const Scene& document, AbSource source, const Snapshot* snapshot,
                    bool keep_highlight_size) {
   if (source == AbSource::snapshot) {

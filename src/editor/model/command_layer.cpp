@@ -43,6 +43,7 @@ bool CommandLayer::undo() {
   Step step = std::move(m_undo.back());
   m_undo.pop_back();
   std::swap(step.other, m_scene);
+  if (step.opens) std::swap(step.other_saved, m_saved_state);
   m_redo.push_back(std::move(step));
   ++m_revision;
   return true;
@@ -54,6 +55,7 @@ bool CommandLayer::redo() {
   Step step = std::move(m_redo.back());
   m_redo.pop_back();
   std::swap(step.other, m_scene);
+  if (step.opens) std::swap(step.other_saved, m_saved_state);
   m_undo.push_back(std::move(step));
   ++m_revision;
   return true;
@@ -73,10 +75,30 @@ void CommandLayer::reset(Scene scene, bool saved) {
 
 namespace gloss {
 
+bool CommandLayer::open_document(std::shared_ptr<const Scene> scene, const std::string& label) {
+  const std::uint64_t saved_before = m_saved_state;
+  if (!execute(ReplaceScene{std::move(scene), label})) {
+    mark_saved();
+    return false;
+  }
+  Step& step = m_undo.back();
+  step.opens = true;
+  step.other_saved = saved_before;
+  m_open = false;
+  mark_saved();
+  return true;
+}
+
 void CommandLayer::set_path(const std::string& path) {
   move_document(m_scene, path);
-  for (Step& step : m_undo) move_document(step.other, path);
-  for (Step& step : m_redo) move_document(step.other, path);
+  // From the newest step back to the step that opened this document (exclusive): undo steps
+  // hold the document before them, redo steps the document after them.
+  for (auto it = m_undo.rbegin(); it != m_undo.rend() && !it->opens; ++it) {
+    move_document(it->other, path);
+  }
+  for (auto it = m_redo.rbegin(); it != m_redo.rend() && !it->opens; ++it) {
+    move_document(it->other, path);
+  }
   ++m_revision;
 }
 

@@ -5,6 +5,7 @@
 // the scene on the other side of the edit; meshes are shared, so copies are small).
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -33,13 +34,21 @@ class CommandLayer {
   bool undo();
   bool redo();
 
+  // Opens another document (File > Open) as one undo step and marks it saved. The document it
+  // replaces keeps its own saved/unsaved state: undoing the open gives it back exactly as it was
+  // (an untouched file stays unmodified, an edited one stays modified) and redoing it gives back
+  // the opened one with its state. Returns false, recording nothing, when scene equals the
+  // document; the document is then marked saved. Throws CommandError as execute does.
+  bool open_document(std::shared_ptr<const Scene> scene, const std::string& label);
+
   // Replaces the document and forgets the history. saved: the document is what its file holds
   // (false for a recovered session, which differs from its file).
   void reset(Scene scene, bool saved);
 
   // Records that the document now lives at path (save as): the path is the document's identity,
-  // not an edit, so every undo step takes it too (document.h's move_document) and no step is
-  // recorded.
+  // not an edit, so every undo step of this document takes it too (document.h's move_document)
+  // and no step is recorded. Steps beyond an open_document step hold another document and keep
+  // their path.
   void set_path(const std::string& path);
 
   // Changes with every change of the document (edit, undo, redo, reset); never repeats.
@@ -60,6 +69,10 @@ class CommandLayer {
     std::string key;
     Scene other;          // the document on the other side of this step
     std::uint64_t state;  // identifies the document after the step (see current_state)
+    bool opens = false;   // open_document: 'other' is a different document
+    // For an opening step, the saved state of the document on the other side; undo and redo
+    // swap it with m_saved_state.
+    std::uint64_t other_saved = 0;
   };
   std::uint64_t current_state() const { return m_undo.empty() ? 0 : m_undo.back().state; }
 

@@ -32,6 +32,17 @@ float exponent_for_model(float exponent, ShadingModel from, ShadingModel to) {
                                          : phong_exponent_for_blinn(exponent);
 }
 
+Scene with_model(const Scene& scene, ShadingModel model, bool keep) {
+  Scene out = scene;
+  if (keep) {
+    for (Material& m : out.materials) {
+      m.shininess = exponent_for_model(m.shininess, scene.render.model, model);
+    }
+  }
+  out.render.model = model;
+  return out;
+}
+
 bool same_scene(const Scene& a, const Scene& b) {
   return !diff_scenes(a, b).any;
 }

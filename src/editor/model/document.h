@@ -16,6 +16,9 @@ float blinn_exponent_for_phong(float phong_exponent);
 float phong_exponent_for_blinn(float blinn_exponent);
 // The exponent that keeps a highlight's size when a material moves from model 'from' to 'to'.
 float exponent_for_model(float exponent, ShadingModel from, ShadingModel to);
+// The document shown in model: every exponent moved there by exponent_for_model when keep is set
+// (the A/B view's two sides, the lobe view's and the pixel inspector's other model).
+Scene with_model(const Scene& scene, ShadingModel model, bool keep);
 
 // True when nothing differs (scene/scene_diff.h, the one comparison).
 bool same_scene(const Scene& a, const Scene& b);

@@ -11,7 +11,7 @@
 
 #include "base/error.h"
 #include "engine/renderer.h"
-#include "io/scene_loader.h"
+#include "io/scene_in_png.h"
 
 namespace gloss {
 
@@ -116,7 +116,7 @@ TextChunks export_text(const Scene& scene, const ViewSettings& view, ScreenshotK
                 view.mode == ViewMode::single ? to_string(view.single) : "total");
   return {{"Software", "gloss editor"},
           {"gloss:settings", settings},
-          {"gloss:scene", scene_to_json_text(scene)}};
+          {kSceneChunkKeyword, embedded_scene_text(scene)}};
 }
 
 Image render_export(const Scene& scene, const ViewSettings& view, ScreenshotKind kind) {

@@ -216,7 +216,10 @@ std::optional<float> preview_scale_for_row(const TradeoffRow& row) {
 }
 
 bool row_in_use(const TradeoffRow& row, const Scene& scene, float preview_scale) {
-  if (row.knob == Knob::spp) return scene.render.spp == std::atoi(row.setting.c_str());
+  if (row.knob == Knob::spp) {  // rows of uniform sampling (1 spp: the centre either way)
+    const int spp = std::atoi(row.setting.c_str());
+    return scene.render.spp == spp && (spp == 1 || scene.render.sampling == Sampling::uniform);
+  }
   if (row.knob == Knob::shadows) return scene.render.shadows == (row.setting == "on");
   if (row.knob == Knob::pow) return to_string(scene.render.pow) == row.setting;
   if (const std::optional<float> scale = preview_scale_for_row(row)) {

@@ -34,4 +34,32 @@ void save_recent_files(const RecentFiles& recent, const std::filesystem::path& f
   write_text_atomically(file.string(), text);
 }
 
+const char* recent_file_name(RecentKind kind) {
+  switch (kind) {
+    case RecentKind::scene:
+      return "recent.txt";
+    case RecentKind::model:
+      return "recent-models.txt";
+    case RecentKind::materials:
+      return "recent-materials.txt";
+  }
+  return "recent.txt";
+}
+
+RecentFiles& RecentLists::of(RecentKind kind) {
+  return kind == RecentKind::model ? models : kind == RecentKind::materials ? materials : scenes;
+}
+
+const RecentFiles& RecentLists::of(RecentKind kind) const {
+  return const_cast<RecentLists*>(this)->of(kind);
+}
+
+RecentLists load_recent_lists(const std::filesystem::path& folder) {
+  RecentLists lists;
+  for (RecentKind kind : {RecentKind::scene, RecentKind::model, RecentKind::materials}) {
+    lists.of(kind) = load_recent_files(folder / recent_file_name(kind));
+  }
+  return lists;
+}
+
 }  // namespace gloss

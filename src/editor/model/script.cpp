@@ -176,6 +176,23 @@ bool parse_view_extra(Tokens& t, const std::string& mode, ScriptAction& out) {
   return false;
 }
 
+// `view lobe ELEVATION_DEG` and `inspect X Y` (the lobe view and the pixel inspector).
+ScriptAction parse_lobe_elevation(Tokens& t, ViewAction v) {
+  const float degrees = t.number("light elevation in degrees");
+  if (!(degrees >= 0.0f && degrees <= 90.0f)) {
+    throw std::runtime_error("the light elevation must be 0..90 degrees");
+  }
+  v.lobe_elevation_deg = degrees;
+  return v;
+}
+
+ScriptAction parse_inspect(Tokens& t) {
+  InspectAction a;
+  a.x = t.index("pixel x");
+  a.y = t.index("pixel y");
+  return a;
+}
+
 ScriptAction parse_line(Tokens& t) {
   const std::string& verb = t.words[0];
   if (verb == "preset") {
@@ -241,11 +258,14 @@ ScriptAction parse_line(Tokens& t) {
       if (!parse_term_view(term, v.term)) throw std::runtime_error("unknown term '" + term + "'");
     } else if (!parse_view_mode(mode, v.mode) || v.mode == ViewMode::single) {
       throw std::runtime_error(
-          "view must be render, terms, ab, 'ab snapshot', 'term NAME' or 'clipped on|off', got '" +
+          "view must be render, terms, ab, lobe, 'term NAME', 'ab snapshot' or 'clipped on|off', "
+          "got '" +
           mode + "'");
     }
+    if (v.mode == ViewMode::lobe && !t.done()) return parse_lobe_elevation(t, v);
     return v;
   }
+  if (verb == "inspect") return parse_inspect(t);
   if (verb == "exposure") return ExposureAction{t.number("stops")};
   if (verb == "select") return SelectAction{t.index("object index")};
   if (verb == "stats") return StatsAction{};

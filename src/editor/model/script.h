@@ -25,6 +25,7 @@ struct ViewAction {
   ViewMode mode = ViewMode::render;
   TermView term = TermView::total;        // for ViewMode::single
   AbSource ab_source = AbSource::models;  // for ViewMode::ab: `view ab` or `view ab snapshot`
+  float lobe_elevation_deg = -1.0f;  // for ViewMode::lobe: 0..90, or -1 to keep the current one
 };
 // ---- Exposure and snapshot comparison (issue 13, items 3 and 4) ----
 // `view clipped on|off`: the clipped-pixel overlay.
@@ -60,10 +61,16 @@ struct QualityAction {
   std::string path;  // csv only
 };
 
+// Prints what the contract computed at the centre of pixel (x, y) of the document's render size
+// (editor/model/pixel_report.h) and pins the editor's pixel inspector there.
+struct InspectAction {
+  int x = 0, y = 0;
+};
+
 using ScriptAction =
     std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction, ViewAction,
                  ExposureAction, SelectAction, StatsAction, SleepAction, AnimateAction, QuitAction,
-                 QualityAction, ClippedOverlayAction, SnapshotAction>;
+                 QualityAction, InspectAction, ClippedOverlayAction, SnapshotAction>;
 
 struct ScriptLine {
   int line = 0;  // 1-based line number in the file

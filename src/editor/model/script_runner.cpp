@@ -4,6 +4,8 @@
 #include <cstdlib>
 
 #include "base/overloaded.h"
+#include "editor/model/pixel_report.h"
+#include "reference/pixel_inspection.h"
 
 namespace gloss {
 
@@ -12,6 +14,25 @@ namespace {
 LineResult bad_line(const std::string& where, const std::string& message) {
   std::fprintf(stderr, "error: %s%s\n", where.c_str(), message.c_str());
   return LineResult::stop(2);
+}
+
+// `inspect X Y`: the same for both hosts, a reading of the document (the reference path) printed
+// on stdout; the editor's inspector is pinned there.
+LineResult inspect(ScriptHost& host, const InspectAction& a, const std::string& where) {
+  const Scene& scene = host.layer().scene();
+  if (a.x >= scene.render.width || a.y >= scene.render.height) {
+    return bad_line(where, "pixel " + std::to_string(a.x) + " " + std::to_string(a.y) +
+                               " is outside the " + std::to_string(scene.render.width) + "x" +
+                               std::to_string(scene.render.height) + " render");
+  }
+  std::fputs(pixel_report(inspect_pixel(scene, a.x, a.y)).c_str(), stdout);
+  std::fflush(stdout);
+  ViewSettings& view = host.view();
+  view.show_inspector = true;
+  view.inspect_pinned = true;
+  view.inspect_x = a.x;
+  view.inspect_y = a.y;
+  return LineResult::go_on();
 }
 
 }  // namespace
@@ -51,6 +72,9 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
               if (a.mode == ViewMode::ab) host.view().ab_source = a.ab_source;
               host.view().mode = a.mode;
               if (a.mode == ViewMode::single) host.view().single = a.term;
+              if (a.lobe_elevation_deg >= 0.0f) {
+                host.view().lobe_elevation_deg = a.lobe_elevation_deg;
+              }
               return LineResult::go_on();
             },
             [&](const ExposureAction& a) {
@@ -83,6 +107,7 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
             [&](const StatsAction&) { return host.stats(); },
             [&](const SleepAction& a) { return host.sleep(a); },
             [&](const QualityAction& a) { return host.quality(a, where); },
+            [&](const InspectAction& a) { return inspect(host, a, where); },
         },
         line.action);
   } catch (const CommandError& e) {

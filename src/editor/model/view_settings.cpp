@@ -27,12 +27,15 @@ const char* to_string(ViewMode mode) {
       return "single";
     case ViewMode::ab:
       return "ab";
+    case ViewMode::lobe:
+      return "lobe";
   }
   return "?";
 }
 
 bool parse_view_mode(const std::string& name, ViewMode& mode) {
-  const ViewMode all[] = {ViewMode::render, ViewMode::terms, ViewMode::single, ViewMode::ab};
+  const ViewMode all[] = {ViewMode::render, ViewMode::terms, ViewMode::single, ViewMode::ab,
+                          ViewMode::lobe};
   return parse_name(name, all, mode);
 }
 
@@ -80,6 +83,10 @@ bool parse_screenshot_kind(const std::string& name, ScreenshotKind& kind) {
   const ScreenshotKind all[] = {ScreenshotKind::viewport, ScreenshotKind::terms,
                                 ScreenshotKind::window};
   return parse_name(name, all, kind);
+}
+
+bool lobe_energy_normalize(LobeEnergy energy, bool document_setting) {
+  return energy == LobeEnergy::scene ? document_setting : energy == LobeEnergy::on;
 }
 
 }  // namespace gloss

@@ -8,8 +8,9 @@
 namespace gloss {
 
 // render: the total image; terms: emissive+ambient, diffuse, specular and total in a 2x2 sheet;
-// single: one term alone; ab: Phong against Blinn-Phong with a difference heat map.
-enum class ViewMode { render, terms, single, ab };
+// single: one term alone; ab: Phong against Blinn-Phong with a difference heat map; lobe: the
+// selected material's reflected radiance in the plane of incidence (analysis/brdf_lobe.h).
+enum class ViewMode { render, terms, single, ab, lobe };
 const char* to_string(ViewMode mode);
 bool parse_view_mode(const std::string& name, ViewMode& mode);
 
@@ -27,6 +28,10 @@ enum class ScreenshotKind { viewport, terms, window };
 const char* to_string(ScreenshotKind kind);
 bool parse_screenshot_kind(const std::string& name, ScreenshotKind& kind);
 
+// Energy normalisation of the lobe view's curves: as the document's render.energy_normalize, or
+// forced on or off for the view alone (the document is not changed).
+enum class LobeEnergy { scene, on, off };
+
 struct ViewSettings {
   ViewMode mode = ViewMode::render;
   TermView single = TermView::specular;   // shown by ViewMode::single
@@ -43,6 +48,18 @@ struct ViewSettings {
   float orbit_speed = 45.0f;  // degrees per second
   ScreenshotKind screenshot_kind = ScreenshotKind::viewport;  // what Ctrl+S saves
   std::string screenshot_dir = ".";  // where Ctrl+S writes its timestamped files
+
+  // The lobe view (ViewMode::lobe).
+  float lobe_elevation_deg = 45.0f;  // light above the surface, degrees, 0..90
+  LobeEnergy lobe_energy = LobeEnergy::scene;
+
+  // The pixel inspector: a pixel of the document's render size, read at its centre.
+  bool show_inspector = false;
+  bool inspect_pinned = false;  // false: the inspector follows the cursor over the viewport
+  int inspect_x = 0, inspect_y = 0;
 };
+
+// Whether the lobe view normalises: document_setting is render.energy_normalize.
+bool lobe_energy_normalize(LobeEnergy energy, bool document_setting);
 
 }  // namespace gloss

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
@@ -42,7 +43,7 @@ double FrameTimes::largest() const {
 App::App(GLFWwindow* glfw_window, Scene scene) : window(glfw_window), commands(std::move(scene)) {
   glfwSetWindowUserPointer(window, this);  // the key queue's callback finds the App here
   config_folder = config_dir();
-  recent = load_recent_files(config_folder / "recent.txt");
+  recent = load_recent_lists(config_folder);
   std::error_code ec;
   view.screenshot_dir = std::filesystem::current_path(ec).string();
   swatches.start();
@@ -137,6 +138,41 @@ void draw_quit_modal(App& app) {
   ImGui::EndPopup();
 }
 
+// Opening another scene with unsaved changes: save / discard / cancel (UnsavedGuard's rules).
+void draw_open_modal(App& app) {
+  if (!app.unsaved.asking()) return;
+  const char* id = "Open another scene";
+  if (!ImGui::IsPopupOpen(id)) ImGui::OpenPopup(id);
+  if (!ImGui::BeginPopupModal(id, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  const std::string& path = app.commands.scene().path;
+  ImGui::TextUnformatted("The scene has changes that are not saved.");
+  ImGui::Text("Open %s anyway?",
+              std::filesystem::path(app.unsaved.waiting_path()).filename().string().c_str());
+  if (path.empty()) ImGui::TextDisabled("(untitled: use Save scene as... first to keep them)");
+  std::optional<UnsavedAnswer> answer;
+  if (!path.empty() && ImGui::Button("Save, then open", ImVec2(150, 0))) {
+    answer = UnsavedAnswer::save;
+  }
+  if (!path.empty()) ImGui::SameLine();
+  if (ImGui::Button("Discard changes", ImVec2(150, 0))) answer = UnsavedAnswer::discard;
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel", ImVec2(150, 0)) ||
+      ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+    answer = UnsavedAnswer::cancel;
+  }
+  if (answer) {
+    ImGui::CloseCurrentPopup();
+    const UnsavedGuard::Outcome outcome = app.unsaved.answer(*answer);
+    try {
+      if (outcome.save_first) save_scene_as(app, path);
+      if (outcome.open) open_scene(app, outcome.path);
+    } catch (const std::exception& e) {
+      app.notices.error(e.what(), app.now_s());
+    }
+  }
+  ImGui::EndPopup();
+}
+
 void update_title(App& app) {
   const std::string& path = app.commands.scene().path;
   std::string title = "gloss - " + (path.empty() ? std::string("untitled")
@@ -200,6 +236,7 @@ void draw_layout(App& app) {
   const ImVec2 viewport_pos(left + side, top);
   const ImVec2 viewport_size(std::max(main->Size.x - side - right_side, 1.0f), height);
   app.viewport.draw(app, viewport_pos, viewport_size);
+  draw_inspector(app, viewport_pos, viewport_size);
   // The splitters go over the borders, after the panels so that they are on top.
   app.left_width +=
       splitter("##split-left", ImVec2(left + side - 3.0f, top), ImVec2(6.0f, height), true);
@@ -216,10 +253,13 @@ void draw_layout(App& app) {
                      ImVec2(quality_w, height));
   app.notices.draw(viewport_pos.x + viewport_size.x, top + height);
   std::string chosen;
-  if (app.browser.draw(app.recent, chosen)) browser_action(app, chosen);
+  if (app.browser.draw(app.recent.of(recent_kind(app.browser.purpose)), chosen)) {
+    browser_action(app, chosen);
+  }
   draw_help_window(app);
   draw_recovery_modal(app);
   draw_quit_modal(app);
+  draw_open_modal(app);
 }
 
 }  // namespace

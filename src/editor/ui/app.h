@@ -3,6 +3,7 @@
 // viewport and panels' state, and what runs in the background (exports, autosave, a script).
 // main.cpp creates one App after the GL context exists and calls run_frame until it quits.
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <future>
 #include <memory>
@@ -18,12 +19,14 @@
 #include "editor/model/command_layer.h"
 #include "editor/model/quality_measurement.h"
 #include "editor/model/recent_files.h"
+#include "editor/model/unsaved_guard.h"
 #include "editor/model/view_settings.h"
 #include "editor/ui/file_browser.h"
 #include "editor/ui/notices.h"
 #include "editor/ui/swatches.h"
 #include "editor/ui/viewport.h"
 #include "io/material_io.h"
+#include "reference/pixel_inspection.h"
 
 namespace gloss {
 
@@ -64,6 +67,17 @@ struct KeyPress {
   bool repeat = false;
 };
 
+// The pixel inspector's readers (inspector_panel.cpp) and the pixel under the cursor.
+struct InspectorState {
+  std::unique_ptr<PixelInspector> a, b;  // the document (A/B view: its Phong and Blinn sides)
+  std::uint64_t revision = 0;            // document revision they were built for
+  bool ab = false, keep = false;         // the A/B split and exponent rule they were built for
+  AbSource source = AbSource::models;    // what the A/B compared (ab_compare.h)
+  std::uint64_t snapshot = 0;            // the snapshot's revision + 1 they were built for, 0 none
+  std::string error;                     // why they could not be built
+  int hover_x = -1, hover_y = -1;        // render pixel under the cursor this frame, -1: none
+};
+
 struct App {
   App(GLFWwindow* window, Scene scene);
   ~App();
@@ -83,7 +97,8 @@ struct App {
   QualityMeasurement quality;  // the Quality window's speed/accuracy measurement
   FileBrowser browser;
   Notices notices;
-  RecentFiles recent;
+  RecentLists recent;    // scenes, models and material files, each its own list
+  UnsavedGuard unsaved;  // the save / discard / cancel question before opening a scene
   std::filesystem::path config_folder;
   std::optional<Autosaver> autosaver;
   std::string autosave_failure_shown;        // the autosave failure already announced as a notice
@@ -102,6 +117,7 @@ struct App {
   FrameTimes frame_times;
   BackgroundPriority background;  // render and export threads below the UI (created on it)
   double background_checked_s = -1.0;
+  InspectorState inspector;
 
   std::string title;          // the window title last set
   double last_frame_s = 0.0;  // start of the previous frame (orbit-light animation step)
@@ -129,6 +145,9 @@ bool execute(App& app, const Command& command);
 // app_actions.cpp: file and export actions. Each throws InputError / RuntimeFailure with a
 // message for the UI; on failure the document is unchanged.
 void open_scene(App& app, const std::string& path);
+// Opens path, first asking save / discard / cancel when the document has unsaved changes (the
+// question is a modal; scripts never ask). Throws as open_scene when it opens at once.
+void request_open_scene(App& app, const std::string& path);
 void add_model(App& app, const std::string& path);
 void save_scene_as(App& app, const std::string& path);
 void load_materials(App& app, const std::string& path);
@@ -141,7 +160,7 @@ void poll_exports(App& app);
 void capture_window(App& app);
 // Runs the file browser's chosen action, keeping the browser open with the error on failure.
 void browser_action(App& app, const std::string& path);
-void remember_recent(App& app, const std::string& path);
+void remember_recent(App& app, RecentKind kind, const std::string& path);
 void request_quit(App& app);
 void undo(App& app);
 void redo(App& app);
@@ -165,5 +184,9 @@ void draw_view_panel(App& app, ImVec2 pos, ImVec2 size);
 void draw_status_bar(App& app, ImVec2 pos, ImVec2 size);
 void draw_help_window(App& app);
 void draw_quality_panel(App& app, ImVec2 pos, ImVec2 size);
+// The lobe view, drawn by the viewport in its place when view.mode is ViewMode::lobe.
+void draw_lobe_view(App& app, ImVec2 pos, ImVec2 size);
+// The pixel inspector window (view.show_inspector).
+void draw_inspector(App& app, ImVec2 viewport_pos, ImVec2 viewport_size);
 
 }  // namespace gloss

@@ -33,10 +33,10 @@ std::string unique_material_name(const Scene& scene, const std::string& wanted) 
 
 }  // namespace
 
-void remember_recent(App& app, const std::string& path) {
-  app.recent.add(path);
+void remember_recent(App& app, RecentKind kind, const std::string& path) {
+  app.recent.of(kind).add(path);
   try {
-    save_recent_files(app.recent, app.config_folder / "recent.txt");
+    save_recent_files(app.recent.of(kind), app.config_folder / recent_file_name(kind));
   } catch (const std::exception& e) {
     app.notices.error(std::string("cannot save the recent files: ") + e.what(), app.now_s());
   }
@@ -46,15 +46,18 @@ void open_scene(App& app, const std::string& requested) {
   const std::string path = requested;  // may refer into the recent list, which changes below
   std::vector<std::string> warnings;
   auto scene = std::make_shared<Scene>(load_scene(path, &warnings));
-  app.commands.execute(
-      ReplaceScene{scene, "open " + std::filesystem::path(path).filename().string()});
-  app.commands.seal();
-  app.commands.mark_saved();
+  // Undoing the open gives back the earlier document with its own saved/unsaved state.
+  app.commands.open_document(scene, "open " + std::filesystem::path(path).filename().string());
   app.selected_object = 0;
   app.selected_light = 0;
-  remember_recent(app, path);
+  remember_recent(app, RecentKind::scene, path);
   for (const std::string& w : warnings) app.notices.info("warning: " + w, app.now_s());
   app.notices.info("opened " + path, app.now_s());
+}
+
+void request_open_scene(App& app, const std::string& path) {
+  // Scripts answer no questions; they replace the document as they say.
+  if (app.unsaved.request_open(path, app.commands.dirty() && !app.script)) open_scene(app, path);
 }
 
 void add_model(App& app, const std::string& path) {
@@ -106,6 +109,7 @@ void add_model(App& app, const std::string& path) {
       ReplaceScene{scene, "add " + std::filesystem::path(path).filename().string()});
   app.commands.seal();
   app.selected_object = first_new;
+  remember_recent(app, RecentKind::model, path);
   for (const std::string& w : model.warnings) app.notices.info("warning: " + w, app.now_s());
   app.notices.info("added " + std::to_string(model.parts.size()) + " object(s) from " + path,
                    app.now_s());
@@ -118,7 +122,7 @@ void save_scene_as(App& app, const std::string& requested) {
   save_scene(scene, path);
   app.commands.set_path(path);
   app.commands.mark_saved();
-  remember_recent(app, path);
+  remember_recent(app, RecentKind::scene, path);
   app.notices.info("saved scene " + path, app.now_s());
 }
 
@@ -128,6 +132,7 @@ void load_materials(App& app, const std::string& path) {
   if (materials.empty()) throw InputError(path, "the file holds no materials");
   app.library = std::move(materials);
   app.library_source = std::filesystem::path(path).filename().string();
+  remember_recent(app, RecentKind::materials, path);
   app.notices.info("loaded " + std::to_string(app.library.size()) + " material(s) from " + path +
                        "; apply them in the Material panel",
                    app.now_s());
@@ -235,7 +240,7 @@ void browser_action(App& app, const std::string& path) {
   try {
     switch (app.browser.purpose) {
       case BrowsePurpose::open_scene:
-        open_scene(app, path);
+        request_open_scene(app, path);
         break;
       case BrowsePurpose::add_model:
         add_model(app, path);

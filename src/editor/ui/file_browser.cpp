@@ -34,6 +34,7 @@ bool is_save(BrowsePurpose purpose) {
 std::vector<std::string> extensions(BrowsePurpose purpose) {
   switch (purpose) {
     case BrowsePurpose::open_scene:
+      return {".json", ".png"};  // a PNG gloss wrote carries its scene
     case BrowsePurpose::save_scene:
       return {".json"};
     case BrowsePurpose::add_model:
@@ -43,6 +44,20 @@ std::vector<std::string> extensions(BrowsePurpose purpose) {
       return {".json", ".mtl"};
   }
   return {};
+}
+
+RecentKind recent_kind(BrowsePurpose purpose) {
+  switch (purpose) {
+    case BrowsePurpose::add_model:
+      return RecentKind::model;
+    case BrowsePurpose::load_materials:
+    case BrowsePurpose::save_materials:
+      return RecentKind::materials;
+    case BrowsePurpose::open_scene:
+    case BrowsePurpose::save_scene:
+      break;
+  }
+  return RecentKind::scene;
 }
 
 namespace {

@@ -11,6 +11,8 @@
 namespace gloss {
 
 enum class BrowsePurpose { open_scene, add_model, load_materials, save_scene, save_materials };
+// The recent list the panel offers for purpose (scenes for scenes, models for Add model, ...).
+RecentKind recent_kind(BrowsePurpose purpose);
 const char* title(BrowsePurpose purpose);
 bool is_save(BrowsePurpose purpose);
 // Extensions listed (lowercase, with the dot); the first is added to a typed save name without one.

@@ -1,6 +1,7 @@
 // The help window (F1): shortcuts, mouse gestures and where the editor keeps its files.
 #include <imgui.h>
 
+#include "base/assets.h"
 #include "editor/ui/app.h"
 
 namespace gloss {
@@ -28,7 +29,8 @@ void draw_help_window(App& app) {
   }
   ImGui::TextWrapped(
       "gloss edits Phong materials live: the viewport shows the CPU ray tracer's image, "
-      "refined pass by pass. Every edit can be undone. docs/editor.md has the full guide.");
+      "refined pass by pass. Every edit can be undone. The full guide: %s",
+      doc_path("editor.md").c_str());
   if (ImGui::BeginTable("##keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
     ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, 240.0f);
     ImGui::TableSetupColumn("action");

@@ -53,13 +53,18 @@ int main(int argc, char** argv) {
   using namespace gloss;
   // ---- Setup: options, document, script -----------------------------------------------------
   Options options;
+  // The guide's full path: the installed share/doc/gloss, or the source tree's docs/ in a build.
+  const std::string guide = doc_path("editor.md");
   CLI::App cli{
-      "gloss: live Phong material editor. Opens SCENE.json (default: the shipped "
-      "spheres scene) in a window; press F1 inside for shortcuts. Without a display it "
-      "renders the scene to a PNG in the current folder. Guide: docs/editor.md."};
-  cli.add_option("scene", options.scene_path, "scene file (JSON, docs/scene-format.md)");
+      "gloss: live Phong material editor. Opens SCENE.json, or a PNG gloss wrote (its "
+      "embedded scene), in a window (default: the shipped spheres scene); press F1 inside for "
+      "shortcuts. Without a display it renders the scene to a PNG in the current folder. "
+      "Guide: " +
+      guide};
+  cli.add_option("scene", options.scene_path,
+                 "scene file (JSON, " + doc_path("scene-format.md") + ") or a PNG gloss wrote");
   cli.add_option("--script", options.script_path,
-                 "replay commands from FILE, one per line (docs/editor.md lists them)");
+                 "replay commands from FILE, one per line (" + guide + " lists them)");
   cli.add_flag("--no-recovery", options.no_recovery,
                "neither offer nor write the crash-recovery file");
   cli.add_option("--recovery-file", options.recovery_path,

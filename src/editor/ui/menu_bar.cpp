@@ -18,14 +18,14 @@ void file_menu(App& app) {
   if (ImGui::MenuItem("Open scene...", "Ctrl+O")) {
     app.browser.show(BrowsePurpose::open_scene, scene_folder(app), "");
   }
-  if (ImGui::BeginMenu("Open recent", !app.recent.paths.empty())) {
+  if (ImGui::BeginMenu("Open recent", !app.recent.scenes.paths.empty())) {
     std::string chosen;  // opening reorders the list: act after the loop
-    for (const std::string& path : app.recent.paths) {
+    for (const std::string& path : app.recent.scenes.paths) {
       if (ImGui::MenuItem(path.c_str())) chosen = path;
     }
     if (!chosen.empty()) {
       try {
-        open_scene(app, chosen);
+        request_open_scene(app, chosen);
       } catch (const std::exception& e) {
         app.notices.error(e.what(), app.now_s());
       }
@@ -107,6 +107,10 @@ void view_menu(App& app) {
     view.mode = ViewMode::ab;
     view.ab_source = AbSource::models;
   }
+  if (ImGui::MenuItem("BRDF lobe of the selected material", "5", view.mode == ViewMode::lobe)) {
+    view.mode = ViewMode::lobe;
+  }
+  ImGui::MenuItem("Pixel inspector", "I", &view.show_inspector);
   if (ImGui::MenuItem("Snapshot, then A/B snapshot vs live", "Ctrl+B")) snapshot_and_compare(app);
   if (ImGui::MenuItem("A/B snapshot vs live", nullptr,
                       view.mode == ViewMode::ab && view.ab_source == AbSource::snapshot,

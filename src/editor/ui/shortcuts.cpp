@@ -122,10 +122,14 @@ void handle_shortcuts(App& app) {
     }
     if (ctrl && press.key == GLFW_KEY_Q) request_quit(app);
     if (ctrl && press.key == GLFW_KEY_B) snapshot_and_compare(app);
-    if (press.mods == 0 && press.key >= GLFW_KEY_1 && press.key <= GLFW_KEY_4 &&
+    if (press.mods == 0 && press.key >= GLFW_KEY_1 && press.key <= GLFW_KEY_5 &&
         !ImGui::IsAnyItemActive()) {
-      const ViewMode modes[4] = {ViewMode::render, ViewMode::terms, ViewMode::single, ViewMode::ab};
+      const ViewMode modes[5] = {ViewMode::render, ViewMode::terms, ViewMode::single, ViewMode::ab,
+                                 ViewMode::lobe};
       app.view.mode = modes[press.key - GLFW_KEY_1];
+    }
+    if (press.mods == 0 && press.key == GLFW_KEY_I && !ImGui::IsAnyItemActive()) {
+      app.view.show_inspector = !app.view.show_inspector;
     }
     if (press.key == GLFW_KEY_ESCAPE) {
       app.show_help = false;

@@ -67,6 +67,10 @@ void draw_view_mode(App& app) {
   ImGui::RadioButton("one term (3)", &mode, static_cast<int>(ViewMode::single));
   ImGui::SameLine();
   ImGui::RadioButton("A/B (4)", &mode, static_cast<int>(ViewMode::ab));
+  ImGui::RadioButton("BRDF lobe (5)", &mode, static_cast<int>(ViewMode::lobe));
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("the selected material's lobe as a polar plot");
+  ImGui::SameLine();
+  ImGui::Checkbox("pixel inspector (I)", &view.show_inspector);
   view.mode = static_cast<ViewMode>(mode);
   if (view.mode == ViewMode::single) {
     if (ImGui::BeginCombo("term", display_name(view.single))) {

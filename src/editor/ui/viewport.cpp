@@ -110,7 +110,12 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
       ab != (m_pushed_mode == ViewMode::ab) || (ab && view.keep_highlight_size != m_pushed_keep) ||
       (ab && view.ab_source != m_pushed_source) ||
       (ab && view.ab_source == AbSource::snapshot && snapshot_revision != m_pushed_snapshot);
-  if (!changed) return;
+  if (!changed) {
+    // A mode switch that needs no new render (render, total alone, lobe) still counts as shown
+    // in the new mode (converged_and_shown compares it).
+    m_pushed_mode = view.mode;
+    return;
+  }
 
   if (m_pushed_any && revision != m_pushed_revision) {
     // now_s is the start of the frame in which the edit happened.

@@ -77,6 +77,11 @@ class Viewport {
   void handle_input(App& app);
   void draw_light_markers(App& app, ImDrawList* list) const;
   int pane_at(ImVec2 screen) const;
+  // The pixel of the document's render size (width x height) under screen point p in an image
+  // pane (not the A/B legend); false outside them.
+  bool render_pixel_at(ImVec2 p, ViewMode mode, int width, int height, int& x, int& y) const;
+  void draw_inspected_pixel(const App& app, ImDrawList* list) const;
+  void pin_inspected_pixel(App& app, ImVec2 p) const;
 
   void draw_panes(const ViewSettings& view, bool srgb);  // srgb: the document's encoding
   void draw_labels(const ViewSettings& view, ImDrawList* list) const;

@@ -32,6 +32,72 @@ int Viewport::pane_at(ImVec2 screen) const {
   return 0;
 }
 
+bool Viewport::render_pixel_at(ImVec2 p, ViewMode mode, int width, int height, int& x,
+                               int& y) const {
+  for (int i = 0; i < m_pane_count; ++i) {
+    const Pane& pane = m_panes[i];
+    if (!inside(pane, p) || (mode == ViewMode::ab && i == 3)) continue;
+    // Every pane has the document's aspect, so a pane maps onto the whole render.
+    x = std::clamp(static_cast<int>((p.x - pane.min.x) / pane.size.x * width), 0, width - 1);
+    y = std::clamp(static_cast<int>((p.y - pane.min.y) / pane.size.y * height), 0, height - 1);
+    return true;
+  }
+  return false;
+}
+
+// Screen size of one render pixel in pane i and the marker's half width around it.
+namespace {
+float marker_radius(const Pane& pane, int width) {
+  return std::max(4.0f, 0.5f * pane.size.x / static_cast<float>(width) + 3.0f);
+}
+ImVec2 pixel_centre(const Pane& pane, int x, int y, int width, int height) {
+  return ImVec2(pane.min.x + (static_cast<float>(x) + 0.5f) * pane.size.x / width,
+                pane.min.y + (static_cast<float>(y) + 0.5f) * pane.size.y / height);
+}
+}  // namespace
+
+// A click with the inspector open pins the pixel under it; a click on the pinned pixel's marker
+// unpins it.
+void Viewport::pin_inspected_pixel(App& app, ImVec2 p) const {
+  ViewSettings& view = app.view;
+  const RenderSettings& render = app.commands.scene().render;
+  int x = 0, y = 0;
+  if (!view.show_inspector || !render_pixel_at(p, view.mode, render.width, render.height, x, y)) {
+    return;
+  }
+  if (view.inspect_pinned) {
+    const Pane& pane = m_panes[pane_at(p)];
+    const ImVec2 c =
+        pixel_centre(pane, view.inspect_x, view.inspect_y, render.width, render.height);
+    const float r = marker_radius(pane, render.width) + 1.0f;
+    if (std::abs(p.x - c.x) <= r && std::abs(p.y - c.y) <= r) {
+      view.inspect_pinned = false;
+      return;
+    }
+  }
+  view.inspect_pinned = true;
+  view.inspect_x = x;
+  view.inspect_y = y;
+}
+
+// The pinned pixel's place in every image pane: a small square around it.
+void Viewport::draw_inspected_pixel(const App& app, ImDrawList* list) const {
+  const ViewSettings& view = app.view;
+  if (!view.show_inspector || !view.inspect_pinned) return;
+  const RenderSettings& render = app.commands.scene().render;
+  for (int i = 0; i < m_pane_count; ++i) {
+    if (view.mode == ViewMode::ab && i == 3) continue;
+    const Pane& pane = m_panes[i];
+    const ImVec2 c =
+        pixel_centre(pane, view.inspect_x, view.inspect_y, render.width, render.height);
+    const float r = marker_radius(pane, render.width);
+    list->AddRect(ImVec2(c.x - r - 1.0f, c.y - r - 1.0f), ImVec2(c.x + r + 1.0f, c.y + r + 1.0f),
+                  IM_COL32(0, 0, 0, 255), 0.0f, 0, 3.0f);
+    list->AddRect(ImVec2(c.x - r, c.y - r), ImVec2(c.x + r, c.y + r), IM_COL32(255, 60, 200, 255),
+                  0.0f, 0, 1.5f);
+  }
+}
+
 void Viewport::draw(App& app, ImVec2 pos, ImVec2 size) {
   m_pos = pos;
   m_size = size;
@@ -67,7 +133,13 @@ void Viewport::draw(App& app, ImVec2 pos, ImVec2 size) {
   const bool open = ImGui::Begin("Viewport", nullptr, flags);
   ImGui::PopStyleVar(2);
   m_visible = false;
+  app.inspector.hover_x = app.inspector.hover_y = -1;
   if (!open) {
+    ImGui::End();
+    return;
+  }
+  if (app.view.mode == ViewMode::lobe) {  // the renderer keeps the render pane's size meanwhile
+    draw_lobe_view(app, pos, size);
     ImGui::End();
     return;
   }
@@ -80,6 +152,7 @@ void Viewport::draw(App& app, ImVec2 pos, ImVec2 size) {
   draw_labels(app.view, list);
   if (app.view.mode == ViewMode::ab) draw_legend(app.view, list, m_panes[3]);
   draw_light_markers(app, list);
+  draw_inspected_pixel(app, list);
   if (!m_frame_a) {
     const char* text = "rendering the first frame ...";
     const ImVec2 t = ImGui::CalcTextSize(text);
@@ -222,9 +295,19 @@ void Viewport::handle_input(App& app) {
     }
   }
 
+  const RenderSettings& render = scene.render;
+  if (ImGui::IsItemHovered() || ImGui::IsItemActive()) {
+    int x = 0, y = 0;
+    if (render_pixel_at(io.MousePos, app.view.mode, render.width, render.height, x, y)) {
+      app.inspector.hover_x = x;
+      app.inspector.hover_y = y;
+    }
+  }
+
   if (ImGui::IsItemDeactivated()) {
     if (m_drag_button == ImGuiMouseButton_Left && m_drag_light < 0 && !m_marker_pressed &&
         m_drag_distance <= kClickSlop && !(app.view.mode == ViewMode::ab && m_drag_pane == 3)) {
+      pin_inspected_pixel(app, io.MousePos);
       const Pane& pane = m_panes[m_drag_pane];
       const int hit =
           pick_object(scene, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),

@@ -68,6 +68,23 @@ void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermIm
                       if (!single && !terms) pixels_loop(F{}, F{}, b, e);
                     });
   fence.join();
+  // Adaptive sampling's refined pixels: their weight and background share are their own.
+  for (std::size_t k = 0; k < factors.refined_pixel.size(); ++k) {
+    const std::size_t i = factors.refined_pixel[k];
+    glm::vec3 term[4] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
+    const std::int32_t m = factors.material[i];
+    if (m >= 0) {
+      recombination.terms(m, factors.refined_weight[k], factors.diffuse.data() + i,
+                          factors.specular.data() + i, pixels, term);
+    }
+    out.total.pixels[i] = recombination.total(term, factors.refined_background[k]);
+    if (terms) {
+      out.emissive.pixels[i] = term[0];
+      out.ambient.pixels[i] = term[1];
+      out.diffuse.pixels[i] = term[2];
+      out.specular.pixels[i] = term[3];
+    }
+  }
   for (std::size_t e = 0; e < factors.extra_pixel.size(); ++e) {
     glm::vec3 term[4];
     recombination.terms(factors.extra_material[e], factors.extra_weight[e],

@@ -1,5 +1,7 @@
 #include "engine/shade/pixel_factors.h"
 
+#include "engine/shade/pixel_groups.h"
+
 #include <algorithm>
 
 #include <tbb/parallel_for.h>
@@ -11,23 +13,39 @@
 
 namespace gloss {
 
-namespace {
-// Running sums of one material inside one pixel.
-struct Group {
-  std::int32_t material;
-  int count;
-};
+void FactorExtras::append_to(PixelFactors& out) const {
+  out.extra_pixel.insert(out.extra_pixel.end(), pixel.begin(), pixel.end());
+  out.extra_material.insert(out.extra_material.end(), material.begin(), material.end());
+  out.extra_weight.insert(out.extra_weight.end(), weight.begin(), weight.end());
+  out.extra_diffuse.insert(out.extra_diffuse.end(), diffuse.begin(), diffuse.end());
+  out.extra_specular.insert(out.extra_specular.end(), specular.begin(), specular.end());
+}
 
-struct BandExtras {
-  std::vector<std::uint32_t> pixel;
-  std::vector<std::int32_t> material;
-  std::vector<float> weight, diffuse, specular;
-};
-
-}  // namespace
+void PixelGroups::write(std::size_t idx, float inv_n, PixelFactors& out, float& weight,
+                        float& background, FactorExtras& extras) const {
+  const std::size_t pixels = out.material.size();
+  const bool none = m_groups.empty();
+  background = static_cast<float>(m_misses) * inv_n;
+  out.material[idx] = none ? -1 : m_groups[0].material;
+  weight = none ? 0.0f : static_cast<float>(m_groups[0].count) * inv_n;
+  for (std::size_t li = 0; li < m_lights; ++li) {
+    out.diffuse[li * pixels + idx] = none ? 0.0f : m_sums[2 * li] * inv_n;
+    out.specular[li * pixels + idx] = none ? 0.0f : m_sums[2 * li + 1] * inv_n;
+  }
+  for (std::size_t g = 1; g < m_groups.size(); ++g) {
+    extras.pixel.push_back(static_cast<std::uint32_t>(idx));
+    extras.material.push_back(m_groups[g].material);
+    extras.weight.push_back(static_cast<float>(m_groups[g].count) * inv_n);
+    for (std::size_t li = 0; li < m_lights; ++li) {
+      extras.diffuse.push_back(m_sums[g * 2 * m_lights + 2 * li] * inv_n);
+      extras.specular.push_back(m_sums[g * 2 * m_lights + 2 * li + 1] * inv_n);
+    }
+  }
+}
 
 std::size_t PixelFactors::bytes() const {
   return material.size() * sizeof(std::int32_t) + (weight.size() + background.size()) * 4 +
+         refined_pixel.size() * 12 +
          (diffuse.size() + specular.size()) * 4 + extra_pixel.size() * 8 +
          (extra_weight.size() + extra_diffuse.size() + extra_specular.size()) * 4;
 }
@@ -48,6 +66,9 @@ void size_pixel_factors(PixelFactors& out, int width, int height, int samples, s
   out.extra_weight.clear();
   out.extra_diffuse.clear();
   out.extra_specular.clear();
+  out.refined_pixel.clear();
+  out.refined_weight.clear();
+  out.refined_background.clear();
 }
 
 std::vector<std::int32_t> object_materials(const Scene& scene) {
@@ -101,7 +122,7 @@ bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pix
   const int n = cache.samples();
   size_pixel_factors(out, cache.width, cache.height, n, lights);
   const int rows = band_rows(cache.width);
-  std::vector<BandExtras> extras(static_cast<std::size_t>((cache.height + rows - 1) / rows));
+  std::vector<FactorExtras> extras(static_cast<std::size_t>((cache.height + rows - 1) / rows));
   const float inv_n = n > 0 ? 1.0f / static_cast<float>(n) : 0.0f;
   const ShadingModel model = scene.render.model;
   const PowMode pow_mode = scene.render.pow;
@@ -121,27 +142,26 @@ bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pix
     }
   };
 
-  if (n == 1) {
-    return parallel_rows(cache.width, cache.height, ctx.cancel, [&](int y0, int y1) {
+  if (n == 1) {  // adaptive sampling: the centres as one sample, then the refined pixels
+    const bool done = parallel_rows(cache.width, cache.height, ctx.cancel, [&](int y0, int y1) {
       for (int y = y0; y < y1; ++y) {
         for (int x = 0; x < cache.width; x += kRun) {
           single(static_cast<std::size_t>(y) * cache.width + x, std::min(kRun, cache.width - x));
         }
       }
     });
+    return done && refine_pixel_factors(cache, ctx, out);
   }
   const bool done = parallel_rows(cache.width, cache.height, ctx.cancel, [&](int y0, int y1) {
-    const int x0 = 0, x1 = cache.width;
-    BandExtras& band_extras = extras[static_cast<std::size_t>(y0 / rows)];
-    band_extras = BandExtras{};
-    std::vector<Group> groups;
-    std::vector<float> sums;  // [group * 2 * lights + 2 * light + {0: diffuse, 1: specular}]
+    FactorExtras& band_extras = extras[static_cast<std::size_t>(y0 / rows)];
+    band_extras = FactorExtras{};
+    PixelGroups groups(lights);
     // Per run of pixels: each sample's material and weighted c^alpha (lanes helpers).
-    std::vector<std::int32_t> run_material(n > 1 ? static_cast<std::size_t>(n) * kRun : 0);
+    std::vector<std::int32_t> run_material(static_cast<std::size_t>(n) * kRun);
     std::vector<float> run_specular(run_material.size() * lights);
     for (int y = y0; y < y1; ++y) {
-      for (int xs = x0; xs < x1; xs += kRun) {
-        const int m = std::min(kRun, x1 - xs);
+      for (int xs = 0; xs < cache.width; xs += kRun) {
+        const int m = std::min(kRun, cache.width - xs);
         const std::size_t idx0 = static_cast<std::size_t>(y) * cache.width + xs;
         for (int s = 0; s < n; ++s) {
           const SamplePlane& plane = cache.planes[static_cast<std::size_t>(s)];
@@ -161,56 +181,22 @@ bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pix
         for (int i = 0; i < m; ++i) {
           const std::size_t idx = idx0 + i;
           groups.clear();
-          sums.clear();
-          int misses = 0;
           for (int s = 0; s < n; ++s) {
-            const std::int32_t material = run_material[static_cast<std::size_t>(s) * kRun + i];
-            if (material < 0) {
-              ++misses;
-              continue;
-            }
-            std::size_t g = 0;
-            while (g < groups.size() && groups[g].material != material) ++g;
-            if (g == groups.size()) {
-              groups.push_back({material, 0});
-              sums.resize(sums.size() + 2 * lights, 0.0f);
-            }
-            ++groups[g].count;
-            float* acc = sums.data() + g * 2 * lights;
+            float* acc = groups.add(run_material[static_cast<std::size_t>(s) * kRun + i]);
+            if (acc == nullptr) continue;
             const SamplePlane& plane = cache.planes[static_cast<std::size_t>(s)];
             for (std::size_t li = 0; li < lights; ++li) {
               acc[2 * li] += plane.lights[li].diffuse_weight[idx];
               acc[2 * li + 1] += run_specular[(s * lights + li) * kRun + i];
             }
           }
-          out.background[idx] = static_cast<float>(misses) * inv_n;
-          out.material[idx] = groups.empty() ? -1 : groups[0].material;
-          out.weight[idx] = groups.empty() ? 0.0f : static_cast<float>(groups[0].count) * inv_n;
-          for (std::size_t li = 0; li < lights; ++li) {
-            out.diffuse[li * pixels + idx] = groups.empty() ? 0.0f : sums[2 * li] * inv_n;
-            out.specular[li * pixels + idx] = groups.empty() ? 0.0f : sums[2 * li + 1] * inv_n;
-          }
-          for (std::size_t g = 1; g < groups.size(); ++g) {
-            band_extras.pixel.push_back(static_cast<std::uint32_t>(idx));
-            band_extras.material.push_back(groups[g].material);
-            band_extras.weight.push_back(static_cast<float>(groups[g].count) * inv_n);
-            for (std::size_t li = 0; li < lights; ++li) {
-              band_extras.diffuse.push_back(sums[g * 2 * lights + 2 * li] * inv_n);
-              band_extras.specular.push_back(sums[g * 2 * lights + 2 * li + 1] * inv_n);
-            }
-          }
+          groups.write(idx, inv_n, out, out.weight[idx], out.background[idx], band_extras);
         }
       }
     }
   });
   if (!done) return false;
-  for (const BandExtras& t : extras) {  // band order: deterministic whatever the thread count
-    out.extra_pixel.insert(out.extra_pixel.end(), t.pixel.begin(), t.pixel.end());
-    out.extra_material.insert(out.extra_material.end(), t.material.begin(), t.material.end());
-    out.extra_weight.insert(out.extra_weight.end(), t.weight.begin(), t.weight.end());
-    out.extra_diffuse.insert(out.extra_diffuse.end(), t.diffuse.begin(), t.diffuse.end());
-    out.extra_specular.insert(out.extra_specular.end(), t.specular.begin(), t.specular.end());
-  }
+  for (const FactorExtras& t : extras) t.append_to(out);
   return true;
 }
 

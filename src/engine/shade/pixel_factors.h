@@ -34,6 +34,11 @@ struct PixelFactors {
   std::vector<std::int32_t> extra_material;
   std::vector<float> extra_weight;
   std::vector<float> extra_diffuse, extra_specular;  // [extra * lights + light]
+  // Adaptive sampling (samples == 1 for the centres): the refined pixels, ascending, with their
+  // first material's weight and their background share; their factor means are in the dense
+  // arrays like any pixel's.
+  std::vector<std::uint32_t> refined_pixel;
+  std::vector<float> refined_weight, refined_background;
 
   std::size_t bytes() const;
 };
@@ -41,6 +46,11 @@ struct PixelFactors {
 // Sums the cache's planes into per-pixel factors with the scene's exponents, model and pow mode.
 // false when cancelled (the factors are then incomplete).
 bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, PixelFactors& out);
+
+// Adaptive sampling: turns out, the factors of the cache's centre samples (one sample per
+// pixel), into those of centres plus refined samples, summing only the refined pixels (none
+// when the cache has no refined samples). false when cancelled (out is then incomplete).
+bool refine_pixel_factors(const SampleCache& cache, const RenderContext& ctx, PixelFactors& out);
 
 // Sizes out for a width x height region summed from `samples` samples, with no extras yet.
 void size_pixel_factors(PixelFactors& out, int width, int height, int samples, std::size_t lights);

@@ -1,12 +1,11 @@
 #include "engine/trace/sample_cache.h"
 
+#include "engine/trace/refined_samples.h"
 #include "engine/trace/sample_packet.h"
 #include "shading/sampling.h"
 
 namespace gloss {
 
-namespace {
-// Sizes a plane for pixels and lights; buffers keep their capacity (no page faults on reuse).
 void size_plane(SamplePlane& plane, std::size_t pixels, std::size_t lights) {
   plane.object.resize(pixels);
   plane.prim.resize(pixels);
@@ -16,14 +15,17 @@ void size_plane(SamplePlane& plane, std::size_t pixels, std::size_t lights) {
   plane.lights.resize(lights);
   for (LightFactorPlane& l : plane.lights) l.resize(pixels);
 }
+
+namespace {
+std::size_t plane_bytes(const SamplePlane& p) {
+  return p.object.size() * (sizeof(std::int32_t) + sizeof(std::uint32_t) + 3 * sizeof(float)) +
+         p.object.size() * p.lights.size() * 4 * sizeof(float);
+}
 }  // namespace
 
 std::size_t SampleCache::bytes() const {
-  std::size_t total = 0;
-  for (const SamplePlane& p : planes) {
-    total += p.object.size() * (sizeof(std::int32_t) + sizeof(std::uint32_t) + 3 * sizeof(float));
-    total += p.object.size() * p.lights.size() * 4 * sizeof(float);
-  }
+  std::size_t total = plane_bytes(refined.plane) + refined.pixels.size() * sizeof(std::uint32_t);
+  for (const SamplePlane& p : planes) total += plane_bytes(p);
   return total;
 }
 
@@ -38,6 +40,8 @@ void reset_sample_cache(SampleCache& cache, const Scene& scene, int width, int h
                         int target_spp, int row0, int rows) {
   for (SamplePlane& plane : cache.planes) cache.spare.push_back(std::move(plane));
   cache.planes.clear();
+  cache.refined.spp = 0;
+  cache.refined.pixels.clear();
   cache.width = width;
   cache.image_height = height;
   cache.row0 = row0;
@@ -91,7 +95,7 @@ void size_planes(SampleCache& cache, std::size_t lights) {
 bool recompute_light_factors(SampleCache& cache, const RenderContext& ctx) {
   size_planes(cache, ctx.plan.lights.size());
   const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
-  return for_each_packet(cache, ctx, [&](SamplePacket& packet) {
+  const bool planes_done = for_each_packet(cache, ctx, [&](SamplePacket& packet) {
     long long rays = 0;
     for (int s = 0; s < cache.samples(); ++s) {
       SamplePlane& plane = cache.planes[static_cast<std::size_t>(s)];
@@ -101,6 +105,7 @@ bool recompute_light_factors(SampleCache& cache, const RenderContext& ctx) {
     }
     return rays;
   });
+  return planes_done && recompute_refined_light_factors(cache, ctx);
 }
 
 }  // namespace gloss

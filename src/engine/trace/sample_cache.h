@@ -36,6 +36,17 @@ struct SamplePlane {
   std::vector<LightFactorPlane> lights;      // [planned light]
 };
 
+// Adaptive sampling's extra samples (adaptive_refinement.h): `spp` stratified samples of each
+// refined pixel, at the positions uniform sampling with spp samples would use. Entry k * spp + s
+// of the plane is sample s of pixels[k]; the plane is one row of entries.
+struct RefinedSamples {
+  int spp = 0;                        // 0: not traced (no adaptive pass)
+  std::vector<std::uint32_t> pixels;  // region pixel indices (y * width + x), ascending
+  SamplePlane plane;
+
+  std::size_t entries() const { return pixels.size() * static_cast<std::size_t>(spp); }
+};
+
 struct SampleCache {
   int width = 0, height = 0;  // of the region cached: full width, rows [row0, row0 + height)
   int image_height = 0;       // of the whole image (the camera's aspect)
@@ -46,6 +57,8 @@ struct SampleCache {
   CameraBasis<double> camera_d;  // double: the directions hit points are rebuilt with
   std::vector<SamplePlane> planes;
   std::vector<SamplePlane> spare;  // planes of an earlier image, reused to avoid page faults
+  // Adaptive sampling: planes holds the pixel centres (target_spp 1) and refined the rest.
+  RefinedSamples refined;
 
   int samples() const { return static_cast<int>(planes.size()); }
   std::size_t pixel_count() const { return static_cast<std::size_t>(width) * height; }
@@ -58,13 +71,17 @@ struct SampleCache {
 SampleCache make_sample_cache(const Scene& scene, int width, int height, int target_spp,
                               int row0 = 0, int rows = -1);
 
-// Restarts the cache for a new image (camera, size or pattern) keeping its memory.
+// Restarts the cache for a new image (camera, size or pattern) keeping its memory; drops the
+// refined samples.
 void reset_sample_cache(SampleCache& cache, const Scene& scene, int width, int height,
                         int target_spp, int row0 = 0, int rows = -1);
 
 // Traces planes [samples(), samples() + count) and computes their light factors. On
 // cancellation the new planes are dropped and false is returned; the cache stays consistent.
 bool add_samples(SampleCache& cache, const RenderContext& ctx, int count);
+
+// Sizes plane for `pixels` samples and `lights` planned lights; buffers keep their capacity.
+void size_plane(SamplePlane& plane, std::size_t pixels, std::size_t lights);
 
 // Appends count planes sized for the cache and `lights` planned lights (memory of spare planes
 // reused), and drops the planes from index first on (to the spares): the bracket of a pass that
@@ -76,8 +93,8 @@ void drop_planes(SampleCache& cache, int first);
 // are recomputed for another plan).
 void size_planes(SampleCache& cache, std::size_t lights);
 
-// Recomputes the light factors (shadow rays included) of every plane for the context's scene
-// and plan, reusing the primary hits. false when cancelled (the factors are then stale).
+// Recomputes the light factors (shadow rays included) of every plane and of the refined
+// samples for the context's scene and plan, reusing the primary hits. false when cancelled (the factors are then stale).
 bool recompute_light_factors(SampleCache& cache, const RenderContext& ctx);
 
 }  // namespace gloss

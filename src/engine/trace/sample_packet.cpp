@@ -44,6 +44,11 @@ void packet_directions(SamplePacket& packet, const SampleCache& cache, const Sam
       py[i] = static_cast<double>(row) + static_cast<double>(o.dy);
     }
   }
+  packet_directions_at(packet, cache, px, py);
+}
+
+void packet_directions_at(SamplePacket& packet, const SampleCache& cache, const double* px,
+                          const double* py) {
   // camera_direction<double> with its normalisation done by normalize_lanes.
   const CameraBasis<double>& basis = cache.camera_d;
   const double to_x = 2.0 / cache.width, to_y = 2.0 / cache.image_height;

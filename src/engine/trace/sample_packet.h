@@ -72,6 +72,11 @@ struct LightLanes {
 void packet_directions(SamplePacket& packet, const SampleCache& cache, const SamplePattern& pattern,
                        int stratum);
 
+// Directions through image points (px[i], py[i]) (pixels, image rows, not region rows); every
+// lane must hold a point inside the image, masked-off lanes too.
+void packet_directions_at(SamplePacket& packet, const SampleCache& cache, const double* px,
+                          const double* py);
+
 // Traces the primary rays and fills the hit lanes; returns the rays traced.
 long long trace_primary(SamplePacket& packet, const SampleCache& cache, const RenderContext& ctx);
 

@@ -59,16 +59,16 @@ TEST_F(QualityE2E, MeasureWritesRowsForEveryKnobOfATeapotScene) {
   if (r.status == -1) GTEST_SKIP() << "no xvfb-run";
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("quality: "), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("7 of 7 knobs"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("8 of 8 knobs"), std::string::npos) << r.out;
   const std::vector<std::string> csv = lines_of(read_text(m_dir / "q.csv"));
   ASSERT_GE(csv.size(), 2u);
   EXPECT_EQ(csv[0], kHeader);
-  const std::set<std::string> expected{"spp",     "tessellation", "pow",    "precision",
-                                       "shading", "resolution",   "shadows"};
+  const std::set<std::string> expected{"spp",       "adaptive", "tessellation", "pow",
+                                       "precision", "shading",  "resolution",   "shadows"};
   EXPECT_EQ(knobs_in(csv), expected);
-  // The quick settings: spp 1, 2, 4, 8, 16; tessellation 2..32; resolution 1/8..1; two each
-  // for the other four knobs.
-  EXPECT_EQ(csv.size(), 1u + 5 + 5 + 2 + 2 + 2 + 4 + 2);
+  // The quick settings: spp 1, 2, 4, 8, 16; adaptive: the base and two thresholds;
+  // tessellation 2..32; resolution 1/8..1; two each for the other four knobs.
+  EXPECT_EQ(csv.size(), 1u + 5 + 3 + 5 + 2 + 2 + 2 + 4 + 2);
   const Png8 shot = read_png((m_dir / "window.png").string());
   EXPECT_EQ(shot.width, 1280);
 }
@@ -87,7 +87,7 @@ TEST_F(QualityE2E, SpheresSceneSkipsTessellation) {
   const std::vector<std::string> csv = lines_of(read_text(m_dir / "out/q.csv"));
   ASSERT_GE(csv.size(), 2u);
   EXPECT_EQ(csv[0], kHeader);
-  const std::set<std::string> expected{"spp",     "pow",        "precision",
+  const std::set<std::string> expected{"spp",     "adaptive",   "pow",    "precision",
                                        "shading", "resolution", "shadows"};
   EXPECT_EQ(knobs_in(csv), expected);
 }
@@ -99,7 +99,7 @@ TEST_F(QualityE2E, MeasureWorksWithoutADisplay) {
   const std::vector<std::string> csv = lines_of(read_text(m_dir / "q.csv"));
   ASSERT_GE(csv.size(), 2u);
   EXPECT_EQ(csv[0], kHeader);
-  EXPECT_EQ(knobs_in(csv).size(), 6u);
+  EXPECT_EQ(knobs_in(csv).size(), 7u);
 }
 
 TEST_F(QualityE2E, QuitWhileMeasuringEndsPromptly) {

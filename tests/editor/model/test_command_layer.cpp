@@ -1,5 +1,7 @@
 // The command layer's bookkeeping: gestures merge into one step, failed and no-op commands record
 // nothing, the saved state is tracked through undo and redo, revisions never repeat.
+#include <memory>
+
 #include <gtest/gtest.h>
 
 #include "editor/model/command_layer.h"
@@ -170,6 +172,70 @@ TEST(CommandLayer, HistoryIsBounded) {
     layer.execute(test::set_render("shadows", i % 2 == 0 ? false : true));
   }
   EXPECT_EQ(layer.undo_count(), CommandLayer::kMaxSteps);
+}
+
+// The earlier document before File > Open: the shipped file, untouched (saved), at its path.
+Scene shipped_scene() {
+  Scene scene = test::two_sphere_scene();
+  scene.path = "/usr/share/gloss/assets/scenes/spheres.json";
+  return scene;
+}
+
+std::shared_ptr<const Scene> other_scene() {
+  auto scene = std::make_shared<Scene>(test::two_sphere_scene());
+  scene->path = "/home/user/other.json";
+  scene->materials[0].shininess = 12.0f;
+  return scene;
+}
+
+// Undoing "open scene" used to leave the untouched earlier scene marked modified, so "Save and
+// quit" would have written it over the shipped file.
+TEST(CommandLayer, UndoingAnOpenGivesBackTheUntouchedDocumentUnmodified) {
+  CommandLayer layer(shipped_scene());
+  EXPECT_TRUE(layer.open_document(other_scene(), "open other.json"));
+  EXPECT_FALSE(layer.dirty());
+  EXPECT_EQ(layer.undo_label(), "open other.json");
+  ASSERT_TRUE(layer.undo());
+  EXPECT_EQ(layer.scene().path, "/usr/share/gloss/assets/scenes/spheres.json");
+  EXPECT_EQ(layer.scene().materials[0].shininess, 64.0f);
+  EXPECT_FALSE(layer.dirty());
+  ASSERT_TRUE(layer.redo());
+  EXPECT_EQ(layer.scene().path, "/home/user/other.json");
+  EXPECT_FALSE(layer.dirty());
+}
+
+TEST(CommandLayer, UndoingAnOpenGivesBackAnEditedDocumentModified) {
+  CommandLayer layer(shipped_scene());
+  layer.execute(test::set_shininess(1, 30.0f));
+  ASSERT_TRUE(layer.dirty());
+  layer.open_document(other_scene(), "open other.json");
+  layer.execute(test::set_render("shadows", false));  // an edit of the opened document
+  EXPECT_TRUE(layer.dirty());
+  layer.undo();
+  EXPECT_FALSE(layer.dirty());  // the opened document as its file holds it
+  layer.undo();
+  EXPECT_TRUE(layer.dirty());  // the earlier document with its unsaved edit
+  EXPECT_EQ(layer.scene().materials[1].shininess, 30.0f);
+  layer.undo();
+  EXPECT_FALSE(layer.dirty());  // the earlier document as its file holds it
+  layer.redo();
+  layer.redo();
+  EXPECT_FALSE(layer.dirty());
+  layer.redo();
+  EXPECT_TRUE(layer.dirty());
+}
+
+TEST(CommandLayer, SaveAsAfterAnOpenLeavesTheEarlierDocumentsPath) {
+  CommandLayer layer(shipped_scene());
+  layer.open_document(other_scene(), "open other.json");
+  layer.execute(test::set_render("shadows", false));
+  layer.set_path("/home/user/copy.json");
+  layer.mark_saved();
+  layer.undo();
+  EXPECT_EQ(layer.scene().path, "/home/user/copy.json");
+  layer.undo();
+  EXPECT_EQ(layer.scene().path, "/usr/share/gloss/assets/scenes/spheres.json");
+  EXPECT_FALSE(layer.dirty());
 }
 
 TEST(ExponentRule, BlinnIsFourTimesPhongClampedToTheSliderRange) {

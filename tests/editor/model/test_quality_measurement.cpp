@@ -33,6 +33,8 @@ TradeoffOptions tiny_options() {
   o.reference_spp = 4;
   o.base_spp = 1;
   o.spp_levels = {1, 2};
+  o.adaptive_spp = 4;
+  o.adaptive_thresholds = {1.0f / 16};
   o.tessellation_levels = {2, 4};
   o.resolution_divisors = {2, 1};
   return o;
@@ -57,10 +59,10 @@ TEST(QualityMeasurement, RowsArriveInKnobOrderWithOneBaseRowPerKnob) {
   }
   ASSERT_EQ(q.state(), QualityMeasurement::State::done) << q.error();
   // Two spheres, no teapot: every knob but tessellation.
-  const std::vector<Knob> expected{Knob::spp,     Knob::pow,        Knob::precision,
+  const std::vector<Knob> expected{Knob::spp,     Knob::adaptive,   Knob::pow,    Knob::precision,
                                    Knob::shading, Knob::resolution, Knob::shadows};
   EXPECT_EQ(q.knobs(), expected);
-  EXPECT_EQ(q.knobs_done(), 6);
+  EXPECT_EQ(q.knobs_done(), 7);
   for (std::size_t i = 1; i < q.rows().size(); ++i) {
     EXPECT_LE(knob_position(q.rows()[i - 1].knob), knob_position(q.rows()[i].knob));
   }
@@ -113,7 +115,7 @@ TEST(QualityMeasurement, CancelStopsEarlyAndJoinsTheWorker) {
   const double seconds = std::chrono::duration<double>(Clock::now() - asked).count();
   EXPECT_EQ(q.state(), QualityMeasurement::State::cancelled);
   EXPECT_FALSE(q.worker_alive());
-  EXPECT_LT(q.knobs_done(), 6);
+  EXPECT_LT(q.knobs_done(), 7);
   EXPECT_LT(seconds, 5.0);
 }
 

@@ -1,0 +1,66 @@
+#pragma once
+// The samples of one pixel summed by the material they hit (pixel_factors.h): the first
+// material goes to the dense arrays, further ones (silhouettes) to a pass's extras. Shared by
+// uniform sampling's planes and adaptive sampling's refined pixels.
+#include <cstdint>
+#include <vector>
+
+#include "engine/shade/pixel_factors.h"
+
+namespace gloss {
+
+// The extras of one parallel chunk, appended to the factors in chunk order (deterministic
+// whatever the thread count).
+struct FactorExtras {
+  std::vector<std::uint32_t> pixel;
+  std::vector<std::int32_t> material;
+  std::vector<float> weight, diffuse, specular;
+
+  void append_to(PixelFactors& out) const;
+};
+
+class PixelGroups {
+ public:
+  explicit PixelGroups(std::size_t lights) : m_lights(lights) {}
+
+  void clear() {
+    m_groups.clear();
+    m_sums.clear();
+    m_misses = 0;
+  }
+
+  // Counts one sample on `material` (< 0: a miss). Returns the sums it adds its factors to,
+  // [2 * light] diffuse and [2 * light + 1] specular, or null for a miss.
+  float* add(std::int32_t material) {
+    if (material < 0) {
+      ++m_misses;
+      return nullptr;
+    }
+    std::size_t g = 0;
+    while (g < m_groups.size() && m_groups[g].material != material) ++g;
+    if (g == m_groups.size()) {
+      m_groups.push_back({material, 0});
+      m_sums.resize(m_sums.size() + 2 * m_lights, 0.0f);
+    }
+    ++m_groups[g].count;
+    return m_sums.data() + g * 2 * m_lights;
+  }
+
+  // Writes pixel idx's means over its samples (inv_n = 1 / their count): the first material to
+  // out's dense arrays, its weight and the background share to `weight` and `background`, the
+  // other materials to extras.
+  void write(std::size_t idx, float inv_n, PixelFactors& out, float& weight, float& background,
+             FactorExtras& extras) const;
+
+ private:
+  struct Group {
+    std::int32_t material;
+    int count;
+  };
+  std::size_t m_lights;
+  std::vector<Group> m_groups;
+  std::vector<float> m_sums;  // [group * 2 * lights + 2 * light + {0: diffuse, 1: specular}]
+  int m_misses = 0;
+};
+
+}  // namespace gloss

@@ -1,0 +1,104 @@
+#include "engine/trace/refined_samples.h"
+
+#include <algorithm>
+
+#include "engine/parallel_loops.h"
+#include "engine/trace/sample_packet.h"
+#include "shading/sampling.h"
+
+namespace gloss {
+
+namespace {
+// Packets per parallel chunk: 64 x 16 entries, enough work to amortise a task.
+constexpr int kPacketsPerChunk = 64;
+
+// A packet over entries [e0, e1) of the refined plane: lanes are entries, the plane one row
+// (y0 = 0), so the lane stores of sample_packet.h write entry e0 + i.
+SamplePacket entry_packet(std::size_t e0, std::size_t e1) {
+  return SamplePacket(static_cast<int>(e0), 0, static_cast<int>(e1), 1);
+}
+
+// Directions of the packet's entries: sample (entry mod spp) of pixel pixels[entry / spp].
+void entry_directions(SamplePacket& packet, const SampleCache& cache, const SamplePattern& pattern) {
+  const RefinedSamples& refined = cache.refined;
+  // Lane pixels and strata by increments (no division per lane); masked-off lanes repeat the
+  // last entry, a finite direction nobody reads.
+  alignas(64) int lane_x[kLanes], lane_row[kLanes], lane_stratum[kLanes];
+  std::size_t k = static_cast<std::size_t>(packet.x0 / refined.spp);
+  int s = packet.x0 % refined.spp;
+  for (int i = 0; i < kLanes; ++i) {
+    const std::uint32_t pixel = refined.pixels[k];
+    lane_x[i] = static_cast<int>(pixel % static_cast<std::uint32_t>(cache.width));
+    lane_row[i] = static_cast<int>(pixel / static_cast<std::uint32_t>(cache.width)) + cache.row0;
+    lane_stratum[i] = sample_stratum(pattern, s);
+    if (packet.x0 + i + 1 < packet.x1 && ++s == refined.spp) {
+      s = 0;
+      ++k;
+    }
+  }
+  alignas(64) double px[kLanes], py[kLanes];
+  for (int i = 0; i < kLanes; ++i) {  // integer hashing, as packet_directions
+    const SampleOffset o = sample_offset(pattern, lane_stratum[i], lane_x[i], lane_row[i]);
+    px[i] = static_cast<double>(lane_x[i]) + static_cast<double>(o.dx);
+    py[i] = static_cast<double>(lane_row[i]) + static_cast<double>(o.dy);
+  }
+  packet_directions_at(packet, cache, px, py);
+}
+
+// Runs f(packet) -> rays over the refined entries' packets on oneTBB workers; adds the rays to
+// ctx.rays. false when cancelled.
+template <class F>
+bool for_each_entry_packet(const SampleCache& cache, const RenderContext& ctx, F&& f) {
+  const std::size_t entries = cache.refined.entries();
+  const std::size_t per_chunk = static_cast<std::size_t>(kPacketsPerChunk) * kLanes;
+  const int chunks = static_cast<int>((entries + per_chunk - 1) / per_chunk);
+  return parallel_chunks(chunks, ctx.cancel, [&](int chunk) {
+    long long rays = 0;
+    const std::size_t end = std::min(entries, (static_cast<std::size_t>(chunk) + 1) * per_chunk);
+    for (std::size_t e = static_cast<std::size_t>(chunk) * per_chunk; e < end; e += kLanes) {
+      SamplePacket packet = entry_packet(e, std::min(e + kLanes, end));
+      rays += f(packet);
+    }
+    finish_streaming_stores();
+    if (ctx.rays != nullptr) ctx.rays->fetch_add(rays, std::memory_order_relaxed);
+  });
+}
+
+void no_consumer(std::size_t, const LightLanes&) {}
+}  // namespace
+
+bool trace_refined_samples(SampleCache& cache, const RenderContext& ctx,
+                           std::vector<std::uint32_t> pixels, int spp) {
+  RefinedSamples& refined = cache.refined;
+  refined.spp = spp;
+  refined.pixels = std::move(pixels);
+  size_plane(refined.plane, refined.entries(), ctx.plan.lights.size());
+  const SamplePattern pattern = make_sample_pattern(cache.seed, spp);
+  const int width = static_cast<int>(refined.entries());
+  const bool done = for_each_entry_packet(cache, ctx, [&](SamplePacket& packet) {
+    entry_directions(packet, cache, pattern);
+    const long long rays = trace_primary(packet, cache, ctx);
+    store_hits(packet, width, refined.plane);
+    return rays + shade_sample(packet, cache, ctx, refined.plane, no_consumer);
+  });
+  if (!done) {
+    refined.spp = 0;
+    refined.pixels.clear();
+  }
+  return done;
+}
+
+bool recompute_refined_light_factors(SampleCache& cache, const RenderContext& ctx) {
+  RefinedSamples& refined = cache.refined;
+  if (refined.spp == 0) return true;
+  size_plane(refined.plane, refined.entries(), ctx.plan.lights.size());
+  const SamplePattern pattern = make_sample_pattern(cache.seed, refined.spp);
+  const int width = static_cast<int>(refined.entries());
+  return for_each_entry_packet(cache, ctx, [&](SamplePacket& packet) {
+    entry_directions(packet, cache, pattern);
+    load_hits(packet, width, refined.plane);
+    return shade_sample(packet, cache, ctx, refined.plane, no_consumer);
+  });
+}
+
+}  // namespace gloss

@@ -1,0 +1,144 @@
+// Adaptive sampling: the refinement rule on images made by hand, refined pixels equal to uniform
+// sampling's, the others to the centre sample, a placement independent of the renderer's bands.
+#include "engine/adaptive_refinement.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "engine/renderer.h"
+#include "engine/trace/single_sample_pass.h"
+#include "scene/memory_estimate.h"
+#include "support/scene_fixtures.h"
+
+namespace gloss {
+namespace {
+
+// A w x h centre cache of one object everywhere, no lights, and a grey total.
+struct HandImage {
+  SampleCache cache;
+  Image total;
+  HandImage(int w, int h, std::size_t lights) : total(w, h, glm::vec3(0.5f)) {
+    cache.width = w;
+    cache.height = h;
+    cache.image_height = h;
+    cache.planes.emplace_back();
+    size_plane(cache.planes[0], cache.pixel_count(), lights);
+    for (std::size_t i = 0; i < cache.pixel_count(); ++i) {
+      cache.planes[0].object[i] = 0;
+      for (LightFactorPlane& l : cache.planes[0].lights) l.spec_weight[i] = 1.0f;
+    }
+  }
+  std::size_t at(int x, int y) const { return static_cast<std::size_t>(y) * cache.width + x; }
+  // The refined pixels off the image border (the border is always refined).
+  std::vector<std::uint32_t> refined(float threshold) const {
+    std::vector<std::uint32_t> out;
+    for (const std::uint32_t p : choose_refined_pixels(cache, total, threshold, 0, cache.height)) {
+      const int x = static_cast<int>(p) % cache.width, y = static_cast<int>(p) / cache.width;
+      if (x > 0 && y > 0 && x < cache.width - 1 && y < cache.height - 1) out.push_back(p);
+    }
+    return out;
+  }
+};
+
+std::vector<std::uint32_t> pixel_list(std::initializer_list<std::pair<int, int>> xy, int w) {
+  std::vector<std::uint32_t> out;
+  for (const auto& p : xy) out.push_back(static_cast<std::uint32_t>(p.second * w + p.first));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+TEST(AdaptiveRefinement, TheImageBorderIsAlwaysRefined) {
+  const HandImage img(4, 3, 0);  // uniform: nothing inside differs
+  EXPECT_EQ(choose_refined_pixels(img.cache, img.total, 1.0f, 0, 3),
+            pixel_list({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {0, 1}, {3, 1}, {0, 2}, {1, 2}, {2, 2},
+                        {3, 2}},
+                       4));
+  EXPECT_TRUE(img.refined(1.0f).empty());
+}
+
+TEST(AdaptiveRefinement, AnotherObjectRefinesItsWholeNeighbourhood) {
+  HandImage img(7, 6, 0);
+  img.cache.planes[0].object[img.at(3, 2)] = -1;  // one background pixel
+  // Rows 1-3, columns 2-4: the pixel and its 8 neighbours, each seeing a different object.
+  EXPECT_EQ(img.refined(0.1f), pixel_list({{2, 1}, {3, 1}, {4, 1}, {2, 2}, {3, 2}, {4, 2},
+                                           {2, 3}, {3, 3}, {4, 3}},
+                                          7));
+}
+
+TEST(AdaptiveRefinement, AColourStepRefinesBothSidesOnlyAboveTheThreshold) {
+  HandImage img(6, 4, 0);
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 3; x < 6; ++x) img.total.pixels[img.at(x, y)] = glm::vec3(0.5f, 0.8f, 0.5f);
+  }
+  EXPECT_EQ(img.refined(0.29f), pixel_list({{2, 1}, {3, 1}, {2, 2}, {3, 2}}, 6));
+  EXPECT_TRUE(img.refined(0.31f).empty());
+  // Linear values, unclamped: 1 and 1.5 differ although a display shows both as white.
+  img.total.pixels.assign(img.total.pixels.size(), glm::vec3(1.0f));
+  img.total.pixels[img.at(2, 2)] = glm::vec3(1.5f);
+  EXPECT_EQ(img.refined(0.49f).size(), 6u);  // its 3 x 3 block less the border row 3
+  EXPECT_TRUE(img.refined(0.51f).empty());
+}
+
+TEST(AdaptiveRefinement, AShadowEdgeRefinesEvenWhereTheColourHidesIt) {
+  HandImage img(5, 3, 2);
+  img.cache.planes[0].lights[1].spec_weight[img.at(3, 1)] = 0.0f;  // light 1 blocked at (3, 1)
+  EXPECT_EQ(img.refined(1.0f), pixel_list({{2, 1}, {3, 1}}, 5));
+}
+
+double max_abs_diff(const glm::vec3& a, const glm::vec3& b) {
+  const glm::vec3 d = glm::abs(a - b);
+  return std::max(d.x, std::max(d.y, d.z));
+}
+
+TEST(AdaptiveRefinement, RefinedPixelsEqualUniformSamplingAndTheRestTheCentre) {
+  Scene scene = test::sphere_on_floor_scene();
+  scene.render.spp = 16;
+  std::vector<std::uint32_t> refined;
+  RenderOptions options;
+  options.refined = &refined;
+  const TermImages adaptive = render(scene, options);
+  scene.render.sampling = Sampling::uniform;
+  const TermImages uniform = render(scene);
+  scene.render.spp = 1;
+  const TermImages centre = render(scene);
+  // The sphere's silhouette and shadow are refined; most of the floor and background are not.
+  const std::size_t pixels = adaptive.total.pixels.size();
+  EXPECT_GT(refined.size(), pixels / 50);
+  EXPECT_LT(refined.size(), pixels / 2);
+  std::vector<bool> is_refined(pixels, false);
+  for (const std::uint32_t p : refined) is_refined[p] = true;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const Image& expected = is_refined[i] ? uniform.total : centre.total;
+    ASSERT_LE(max_abs_diff(adaptive.total.pixels[i], expected.pixels[i]), 1e-6) << i;
+    ASSERT_LE(max_abs_diff(adaptive.specular.pixels[i],
+                           (is_refined[i] ? uniform.specular : centre.specular).pixels[i]),
+              1e-6)
+        << i;
+  }
+}
+
+TEST(AdaptiveRefinement, PlacementDoesNotDependOnTheRenderersBands) {
+  // 4096 spp over 160 columns: gloss-cli's renderer goes in bands of 11 rows.
+  Scene scene = test::sphere_on_floor_scene();
+  scene.render.width = 160;
+  scene.render.height = 30;
+  scene.render.spp = 4096;
+  ASSERT_LT(sample_band_rows(160, 30, 4096, 1), 30);
+  std::vector<std::uint32_t> banded;
+  RenderOptions options;
+  options.refined = &banded;
+  render(scene, options);
+  // The rule over the whole centre image at once.
+  const EmbreeScene embree(scene);
+  const RenderContext ctx = make_render_context(scene, embree);
+  SampleCache cache = make_sample_cache(scene, 160, 30, 1);
+  PixelFactors factors;
+  Image total;
+  ASSERT_TRUE(trace_single_sample(cache, ctx, factors, &total));
+  EXPECT_EQ(banded, choose_refined_pixels(cache, total, scene.render.aa_threshold, 0, 30));
+}
+
+}  // namespace
+}  // namespace gloss
