@@ -66,8 +66,13 @@ void Viewport::upload_frames(double now_s) {
       new_b = true;
     }
   }
-  if ((new_a || new_b) && m_frame_a && m_frame_b) {
-    m_max_difference = gloss::max_difference(m_frame_a->images.total, m_frame_b->images.total);
+  // What the textures hold: the newest frames with a total image. A frame without one (the
+  // engine's adaptive refinement passes publish an empty total when the terms are off, as of
+  // the adaptive-AA merge) leaves the texture, and these, as they were.
+  if (new_a && m_frame_a->images.total.width > 0) m_image_a = m_frame_a;
+  if (new_b && m_frame_b->images.total.width > 0) m_image_b = m_frame_b;
+  if ((new_a || new_b) && m_image_a && m_image_b) {
+    m_max_difference = gloss::max_difference(m_image_a->images.total, m_image_b->images.total);
   }
   if (new_a && m_latency.edit_s >= 0.0 && m_frame_a->info.generation > m_latency.generation) {
     if (!m_latency.first_shown) {
@@ -146,6 +151,7 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
   } else {
     m_b.reset();  // cancels and joins its worker
     m_frame_b.reset();
+    m_image_b.reset();
     m_a->set_scene(scene);
   }
   m_pushed_any = true;
@@ -352,7 +358,7 @@ namespace gloss {
 
 ExposureHistogram Viewport::histogram(const ViewSettings& view, bool srgb, bool exact) {
   const bool live_is_b = view.mode == ViewMode::ab && view.ab_source == AbSource::snapshot;
-  const RenderedFrame* frame = live_is_b ? m_frame_b.get() : m_frame_a.get();
+  const RenderedFrame* frame = live_is_b ? m_image_b.get() : m_image_a.get();
   if (frame == nullptr) return {};
   TermView term = view.mode == ViewMode::single ? view.single : TermView::total;
   if (frame->images.emissive.width == 0) term = TermView::total;  // terms not rendered yet

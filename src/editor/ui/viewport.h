@@ -91,6 +91,7 @@ class Viewport {
   std::unique_ptr<ProgressiveRenderer> m_a;
   std::unique_ptr<ProgressiveRenderer> m_b;  // Blinn-Phong side of the A/B view, when shown
   std::shared_ptr<const RenderedFrame> m_frame_a, m_frame_b;
+  std::shared_ptr<const RenderedFrame> m_image_a, m_image_b;  // the newest with a total image
 
   GlTexture m_total, m_emissive, m_ambient, m_diffuse, m_specular, m_b_total;
   RenderTarget m_target;
