@@ -194,9 +194,13 @@ bool ProgressiveRenderer::Impl::step() {
     redo = ChangeClass::exponent;  // cancelled: the factors must be rebuilt from `previous`
     ok = trace_single_sample(cache, ctx, factors, total);
     factors_done = total_done = true;
-    if (!ok) {
+    if (ok) {
+      reclaim_planes(cache, std::move(previous));
+    } else {
+      SampleCache traced = std::move(cache);
       cache = std::move(previous);
       level = previous_level;
+      reclaim_planes(cache, std::move(traced));
     }
   } else if (dirty == ChangeClass::none && adaptive()) {
     redo = ChangeClass::exponent;  // cancelled: the factors are rebuilt from the centres

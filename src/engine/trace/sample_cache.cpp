@@ -53,10 +53,19 @@ void reset_sample_cache(SampleCache& cache, const Scene& scene, int width, int h
 }
 
 void append_planes(SampleCache& cache, std::size_t lights, int count) {
+  const std::size_t pixels = cache.pixel_count();
   for (int s = 0; s < count; ++s) {
     if (!cache.spare.empty()) {
-      cache.planes.push_back(std::move(cache.spare.back()));
-      cache.spare.pop_back();
+      // The smallest spare that holds the image (no new pages, no copy), else the largest.
+      auto best = cache.spare.begin();
+      for (auto it = cache.spare.begin(); it != cache.spare.end(); ++it) {
+        const std::size_t have = it->object.capacity(), best_have = best->object.capacity();
+        if (have >= pixels ? (best_have < pixels || have < best_have) : have > best_have) {
+          best = it;
+        }
+      }
+      cache.planes.push_back(std::move(*best));
+      cache.spare.erase(best);
     } else {
       cache.planes.emplace_back();
     }
@@ -86,6 +95,17 @@ bool add_samples(SampleCache& cache, const RenderContext& ctx, int count) {
   });
   if (!done) drop_planes(cache, first);
   return done;
+}
+
+void reclaim_planes(SampleCache& into, SampleCache&& from) {
+  for (SamplePlane& plane : from.planes) into.spare.push_back(std::move(plane));
+  for (SamplePlane& plane : from.spare) into.spare.push_back(std::move(plane));
+  from.planes.clear();
+  from.spare.clear();
+  if (into.refined.spp == 0 &&
+      from.refined.plane.object.capacity() > into.refined.plane.object.capacity()) {
+    into.refined.plane = std::move(from.refined.plane);
+  }
 }
 
 void size_planes(SampleCache& cache, std::size_t lights) {
