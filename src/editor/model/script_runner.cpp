@@ -83,6 +83,7 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
                           [&](const SleepAction& a) { return host.sleep(a); },
                           [&](const QualityAction& a) { return host.quality(a, where); },
                           [&](const InspectAction& a) { return inspect(host, a, where); },
+                          [&](const MemoryAction&) { return host.memory(); },
                       },
                       line.action);
   } catch (const CommandError& e) {

@@ -41,6 +41,7 @@ class ScriptHost {
   virtual LineResult stats() = 0;
   virtual LineResult sleep(const SleepAction& action) = 0;
   virtual LineResult quality(const QualityAction& action, const std::string& where) = 0;
+  virtual LineResult memory() = 0;
 };
 
 // Runs one line of script on host. A failing line prints "error: FILE:LINE: ..." on stderr and
