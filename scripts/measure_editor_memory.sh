@@ -3,16 +3,20 @@
 # "Memory"). Runs build/src/editor/ui/gloss under xvfb-run with a generated script of edits
 # (material, shininess, light, camera, presets, view modes, spp), samples VmRSS/VmHWM from
 # /proc/PID/status every 0.5 s, and prints the settled and peak figures in MB.
-#   scripts/measure_editor_memory.sh [BUILD_DIR] [LABEL]   (env passes through: GLIBC_TUNABLES...)
+#   scripts/measure_editor_memory.sh [BUILD_DIR] [LABEL] [memory|plain]
+# plain: leave out the `memory` script lines (for editors built before they existed). The
+# environment passes through (GLIBC_TUNABLES ...).
 set -euo pipefail
 build=${1:-build}
 label=${2:-run}
+memory_line=memory
+[ "${3:-memory}" = plain ] && memory_line="# memory"
 out=$(mktemp -d)
 script=$out/edits.txt
 {
   echo "wait"
   echo "sleep 2"
-  echo "memory"
+  echo "$memory_line"
   for i in $(seq 0 39); do
     g=$(awk -v i="$i" 'BEGIN { printf "%.3f", 0.2 + 0.015 * i }')
     echo "set 0 diffuse $g 0.4 0.2"
@@ -35,7 +39,7 @@ script=$out/edits.txt
   echo "view render"
   echo "wait"
   echo "sleep 3"
-  echo "memory"
+  echo "$memory_line"
   echo "quit"
 } >"$script"
 GLOSS_ASSETS=${GLOSS_ASSETS:-$PWD/assets} xvfb-run -a -s "-screen 0 1600x900x24" \
