@@ -6,7 +6,6 @@
 #include "base/error.h"
 #include "editor/model/command_layer.h"
 #include "editor/model/export_image.h"
-#include "editor/model/memory_report.h"
 #include "editor/model/quality_measurement.h"
 #include "editor/model/script_runner.h"
 
@@ -50,11 +49,6 @@ class HeadlessHost : public ScriptHost {
     return LineResult::go_on();
   }
   LineResult sleep(const SleepAction&) override { return LineResult::go_on(); }
-  LineResult memory() override {
-    std::printf("memory: %s\n", memory_text(m_layer, ViewMemory{}).c_str());
-    std::fflush(stdout);
-    return LineResult::go_on();
-  }
   LineResult quality(const QualityAction& action, const std::string& where) override {
     try {
       if (action.verb == QualityAction::Verb::csv) {

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "base/overloaded.h"
+#include "editor/model/memory_report.h"
 #include "editor/model/pixel_report.h"
 #include "reference/pixel_inspection.h"
 
@@ -89,6 +90,12 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
   } catch (const CommandError& e) {
     return bad_line(where, e.what());
   }
+}
+
+LineResult ScriptHost::memory() {
+  std::printf("memory: %s\n", memory_text(layer(), ViewMemory{}).c_str());
+  std::fflush(stdout);
+  return LineResult::go_on();
 }
 
 }  // namespace gloss

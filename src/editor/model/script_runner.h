@@ -41,7 +41,9 @@ class ScriptHost {
   virtual LineResult stats() = 0;
   virtual LineResult sleep(const SleepAction& action) = 0;
   virtual LineResult quality(const QualityAction& action, const std::string& where) = 0;
-  virtual LineResult memory() = 0;
+  // Prints the `memory` line (memory_report.h) on stdout; this default knows no window (frames,
+  // textures and swatches read 0).
+  virtual LineResult memory();
 };
 
 // Runs one line of script on host. A failing line prints "error: FILE:LINE: ..." on stderr and
