@@ -20,6 +20,7 @@ from matplotlib import ticker  # noqa: E402
 
 KNOB_STYLE = {  # marker, colour (colour-blind-safe Okabe-Ito palette)
     "spp": ("o", "#0072B2"),
+    "adaptive": ("h", "#A08600"),  # the palette's yellow, darkened to read on white
     "tessellation": ("s", "#E69F00"),
     "pow": ("^", "#009E73"),
     "precision": ("D", "#CC79A7"),

@@ -3,6 +3,8 @@
 // exposure gain, clamped to [0, 1], then written as is (the classic look) or sRGB-encoded.
 // Modes: 0 shows u_a; 1 shows u_a + u_b (emissive + ambient); 2 shows the largest per-channel
 // |u_a - u_b| on the heat ramp, where u_heat_scale (linear units) maps to the ramp's top.
+// With u_clip_overlay, modes 0 and 1 show pixels with any exposed channel above 1 (what the clamp
+// cuts; editor/model/exposure_histogram.h counts the same) as magenta and dark zebra stripes.
 in vec2 v_uv;
 out vec4 frag_colour;
 
@@ -13,6 +15,7 @@ uniform float u_gain;         // 2^exposure, exposure in stops
 uniform bool u_srgb;
 uniform float u_heat_scale;   // > 0
 uniform vec3 u_heat_ramp[5];  // display colours at t = 0, 1/4, 1/2, 3/4, 1
+uniform bool u_clip_overlay;
 
 vec3 encode_srgb(vec3 c) {
   vec3 curve = 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055;
@@ -33,7 +36,14 @@ void main() {
     return;
   }
   if (u_mode == 1) a += texture(u_b, v_uv).rgb;
-  vec3 c = clamp(a * u_gain, 0.0, 1.0);
+  vec3 exposed = a * u_gain;
+  if (u_clip_overlay && max(exposed.r, max(exposed.g, exposed.b)) > 1.0) {
+    // 4-pixel diagonal stripes: no image colour looks like them.
+    bool light = mod(floor((gl_FragCoord.x + gl_FragCoord.y) / 4.0), 2.0) < 1.0;
+    frag_colour = vec4(light ? vec3(1.0, 0.0, 1.0) : vec3(0.15, 0.0, 0.15), 1.0);
+    return;
+  }
+  vec3 c = clamp(exposed, 0.0, 1.0);
   if (u_srgb) c = encode_srgb(c);
   frag_colour = vec4(c, 1.0);
 }

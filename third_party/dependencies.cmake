@@ -22,6 +22,13 @@ find_package(assimp 5.2 REQUIRED)
 find_package(PNG REQUIRED)
 # Command lines of gloss-cli and gloss. Debian 12: 2.1.2.
 find_package(CLI11 REQUIRED)
+# stb_easy_font.h from libstb-dev (header only, public domain): the tiny bitmap font that labels
+# the panes of exported term sheets (editor/model, which is built without the editor too, so not
+# through the editor's pkg-config STB). Chosen over a PSF console font because it compiles in:
+# no font file to find at run time, and the package is already a dependency.
+find_path(GLOSS_STB_INCLUDE_DIR stb_easy_font.h PATH_SUFFIXES stb REQUIRED)
+add_library(gloss_stb_easy_font INTERFACE)
+target_include_directories(gloss_stb_easy_font SYSTEM INTERFACE ${GLOSS_STB_INCLUDE_DIR})
 find_package(Threads REQUIRED)
 # glibc's vector maths library (libc6-dev ships it with libm): c^alpha over 16 lanes (engine).
 find_library(GLOSS_LIBMVEC mvec REQUIRED)

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "engine/adaptive_refinement.h"
+#include "engine/frame_pool.h"
 #include "engine/render_context.h"
 #include "engine/render_plan.h"
 #include "engine/shade/pixel_factors.h"
@@ -56,6 +57,7 @@ struct ProgressiveRenderer::Impl {
   RenderContext ctx;
   SampleCache cache;
   PixelFactors factors;
+  std::shared_ptr<FramePool> frame_pool = std::make_shared<FramePool>();
   int level = 0;  // 0 .. preview_levels - 1: coarse passes; preview_levels: full
   ChangeClass dirty = ChangeClass::none;
   int pass = 0;
@@ -160,30 +162,38 @@ bool ProgressiveRenderer::Impl::step() {
   ChangeClass redo = ChangeClass::none;  // what a cancellation leaves to do
   bool ok = true;
   bool factors_done = false;  // the fused first pass builds the pixel factors too
-  // ... and, when only the total is shown, the frame's total image as well.
-  auto frame = std::make_shared<RenderedFrame>();
-  Image* const total = worker_terms ? nullptr : &frame->images.total;
-  if (dirty == ChangeClass::full) {
+  bool total_done = false;    // ... and, when only the total is shown, the frame's total image
+  // The image size first (a restart or the next preview level), then the frame to fill.
+  const bool restart = dirty == ChangeClass::full;
+  const bool next_level = dirty == ChangeClass::none && level < options.preview_levels;
+  SampleCache previous;  // next_level: the current resolution, kept until the next is complete
+  const int previous_level = level;
+  if (restart) {
     start_level(options.preview_levels > 0 ? 0 : options.preview_levels);
+  } else if (next_level) {
+    previous = std::move(cache);
+    start_level(level + 1);
+  }
+  const std::shared_ptr<RenderedFrame> frame =
+      FramePool::make(frame_pool, cache.width, cache.height, worker_terms);
+  Image* const total = worker_terms ? nullptr : &frame->images.total;
+  if (restart) {
     redo = ChangeClass::full;
     ok = trace_single_sample(cache, ctx, factors, total);
-    factors_done = true;
+    factors_done = total_done = true;
   } else if (dirty == ChangeClass::light) {
     redo = ChangeClass::light;
     if (cache.samples() == 1 && cache.refined.spp == 0) {  // one pass: light and pixel factors
       ok = relight_single_sample(cache, ctx, factors, total);
-      factors_done = true;
+      factors_done = total_done = true;
     } else {
       ok = recompute_light_factors(cache, ctx);
     }
-  } else if (dirty == ChangeClass::none && level < options.preview_levels) {
+  } else if (next_level) {
     // The next resolution is traced aside; the current one stays until it is complete.
-    SampleCache previous = std::move(cache);
-    const int previous_level = level;
-    start_level(level + 1);
     redo = ChangeClass::exponent;  // cancelled: the factors must be rebuilt from `previous`
     ok = trace_single_sample(cache, ctx, factors, total);
-    factors_done = true;
+    factors_done = total_done = true;
     if (!ok) {
       cache = std::move(previous);
       level = previous_level;
@@ -208,8 +218,8 @@ bool ProgressiveRenderer::Impl::step() {
     return false;
   }
   dirty = ChangeClass::none;
-  if (!factors_done || total == nullptr) combine_terms(factors, ctx, frame->images, worker_terms);
-  publish(std::move(frame), ms_between(start, Clock::now()), rays.load(), converged_state());
+  if (!total_done || total == nullptr) combine_terms(factors, ctx, frame->images, worker_terms);
+  publish(frame, ms_between(start, Clock::now()), rays.load(), converged_state());
   return true;
 }
 

@@ -42,17 +42,18 @@ inline int sample_stratum(const SamplePattern& p, int sample) {
   return static_cast<int>((static_cast<long long>(sample) * p.stride) % p.count);
 }
 
-// The offset of the sample in `stratum` of pixel (x, y). Inline: the renderer evaluates it for
-// 16 lanes at a time.
-inline SampleOffset sample_offset(const SamplePattern& p, int stratum, int x, int y) {
-  if (p.count <= 1) return {0.5f, 0.5f};
+// The offset of the sample in `stratum` of pixel (x, y) for a pattern of count > 1 that is
+// (Square) or is not a square. Inline and branch-free in the lane: the renderer evaluates it
+// for 16 lanes at a time (sample_offsets).
+template <bool Square>
+inline SampleOffset stratified_offset(const SamplePattern& p, int stratum, int x, int y) {
   const auto ux = static_cast<std::uint32_t>(x), uy = static_cast<std::uint32_t>(y);
   const std::uint32_t h = mix_bits(
       p.seed ^
       mix_bits(ux ^ mix_bits(uy ^ mix_bits(static_cast<std::uint32_t>(stratum) + 0x9e3779b9U))));
   const float jx = unit_float(h), jy = unit_float(mix_bits(h));
   float dx, dy;
-  if (p.square) {
+  if constexpr (Square) {
     dx = (static_cast<float>(stratum % p.side) + jx) / static_cast<float>(p.side);
     dy = (static_cast<float>(stratum / p.side) + jy) / static_cast<float>(p.side);
   } else {
@@ -70,6 +71,25 @@ inline SampleOffset sample_offset(const SamplePattern& p, int stratum, int x, in
   if (dx >= 1.0f) dx = 0.99999994f;
   if (dy >= 1.0f) dy = 0.99999994f;
   return {dx, dy};
+}
+
+// The offset of the sample in `stratum` of pixel (x, y).
+inline SampleOffset sample_offset(const SamplePattern& p, int stratum, int x, int y) {
+  if (p.count <= 1) return {0.5f, 0.5f};
+  return p.square ? stratified_offset<true>(p, stratum, x, y)
+                  : stratified_offset<false>(p, stratum, x, y);
+}
+
+// sample_offset for n lanes, the pattern's branches taken once outside the loop.
+inline void sample_offsets(const SamplePattern& p, const int* stratum, const int* x, const int* y,
+                           int n, SampleOffset* out) {
+  if (p.count <= 1) {
+    for (int i = 0; i < n; ++i) out[i] = {0.5f, 0.5f};
+  } else if (p.square) {
+    for (int i = 0; i < n; ++i) out[i] = stratified_offset<true>(p, stratum[i], x[i], y[i]);
+  } else {
+    for (int i = 0; i < n; ++i) out[i] = stratified_offset<false>(p, stratum[i], x[i], y[i]);
+  }
 }
 
 // Convenience for single samples (the reference path): the same positions as above.

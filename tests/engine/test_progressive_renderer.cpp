@@ -82,6 +82,31 @@ TEST(ProgressiveRenderer, AdaptivePassesRefineTheCentreImageOnceAndConvergeToThe
   expect_passes(Sampling::adaptive, {10, 20, 40, 80, 80}, {1, 1, 1, 1, 16});
 }
 
+// The viewport's default: total only. Every pass, the adaptive one too, publishes its total.
+TEST(ProgressiveRenderer, TotalOnlyFramesEachCarryTheirTotal) {
+  std::vector<std::pair<int, int>> sizes;  // (info.width, total.width) of each frame
+  std::mutex mutex;
+  ProgressiveOptions options;
+  options.terms = false;
+  ProgressiveRenderer engine(options);  // destroyed first: its callback uses the two above
+  engine.set_on_publish([&] {
+    const auto frame = engine.latest();
+    std::lock_guard<std::mutex> lock(mutex);
+    sizes.emplace_back(frame->info.width, frame->images.total.width);
+  });
+  Scene scene = test::sphere_on_floor_scene();
+  scene.render.spp = 16;
+  const auto frame = converge(engine, scene);
+  ASSERT_NE(frame, nullptr);
+  engine.set_on_publish(nullptr);
+  std::lock_guard<std::mutex> lock(mutex);
+  ASSERT_EQ(sizes.size(), 5u);
+  for (const auto& [info_width, total_width] : sizes) EXPECT_EQ(total_width, info_width);
+  RenderOptions fresh_options;
+  fresh_options.placement = &frame->refined;
+  EXPECT_LE(max_abs_diff(frame->images.total, render(scene, fresh_options).total), 1e-6);
+}
+
 TEST(ProgressiveRenderer, MaterialConstantEditReshadesWithoutRaysAndMatchesFreshRender) {
   ProgressiveRenderer engine;
   Scene scene = test::sphere_on_floor_scene();

@@ -59,6 +59,7 @@ DisplayShader::DisplayShader() {
   m_srgb = glGetUniformLocation(m_program, "u_srgb");
   m_heat_scale = glGetUniformLocation(m_program, "u_heat_scale");
   m_heat_ramp = glGetUniformLocation(m_program, "u_heat_ramp");
+  m_clip_overlay = glGetUniformLocation(m_program, "u_clip_overlay");
   glGenVertexArrays(1, &m_vertex_array);
 }
 
@@ -79,6 +80,7 @@ void DisplayShader::draw(GLuint texture_a, GLuint texture_b, const DisplayParams
   glUniform1f(m_gain, std::exp2(params.exposure));
   glUniform1i(m_srgb, params.srgb ? 1 : 0);
   glUniform1f(m_heat_scale, std::max(params.heat_scale, 1e-6f));
+  glUniform1i(m_clip_overlay, params.clip_overlay ? 1 : 0);
   glUniform3fv(m_heat_ramp, kHeatRampSize, &kHeatRamp[0].x);
   glDisable(GL_BLEND);
   glDisable(GL_SCISSOR_TEST);

@@ -10,9 +10,10 @@ enum class DisplayMode { image = 0, sum = 1, heat = 2 };
 
 struct DisplayParams {
   DisplayMode mode = DisplayMode::image;
-  float exposure = 0.0f;    // stops
-  bool srgb = false;        // false: clamp only
-  float heat_scale = 0.1f;  // linear difference at the ramp's top; values <= 0 use 1e-6
+  float exposure = 0.0f;      // stops
+  bool srgb = false;          // false: clamp only
+  float heat_scale = 0.1f;    // linear difference at the ramp's top; values <= 0 use 1e-6
+  bool clip_overlay = false;  // stripes over pixels with an exposed channel above 1 (not heat)
 };
 
 class DisplayShader {
@@ -30,6 +31,7 @@ class DisplayShader {
   GLuint m_program = 0;
   GLuint m_vertex_array = 0;  // empty: the vertex shader makes its triangle from gl_VertexID
   GLint m_mode = -1, m_gain = -1, m_srgb = -1, m_heat_scale = -1, m_heat_ramp = -1;
+  GLint m_clip_overlay = -1;
   GLint m_a = -1, m_b = -1;
 };
 

@@ -12,7 +12,8 @@ GlTexture::GlTexture(GlTexture&& other) noexcept
     : m_id(std::exchange(other.m_id, 0)),
       m_width(std::exchange(other.m_width, 0)),
       m_height(std::exchange(other.m_height, 0)),
-      m_format(std::exchange(other.m_format, 0)) {}
+      m_format(std::exchange(other.m_format, 0)),
+      m_nearest(std::exchange(other.m_nearest, false)) {}
 
 GlTexture& GlTexture::operator=(GlTexture&& other) noexcept {
   if (this != &other) {
@@ -21,6 +22,7 @@ GlTexture& GlTexture::operator=(GlTexture&& other) noexcept {
     m_width = std::exchange(other.m_width, 0);
     m_height = std::exchange(other.m_height, 0);
     m_format = std::exchange(other.m_format, 0);
+    m_nearest = std::exchange(other.m_nearest, false);
   }
   return *this;
 }
@@ -29,8 +31,9 @@ void GlTexture::prepare(int width, int height, GLint internal_format) {
   if (m_id == 0) {
     glGenTextures(1, &m_id);
     glBindTexture(GL_TEXTURE_2D, m_id);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    const GLint filter = m_nearest ? GL_NEAREST : GL_LINEAR;
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   } else {
@@ -45,6 +48,16 @@ void GlTexture::prepare(int width, int height, GLint internal_format) {
     m_height = height;
     m_format = internal_format;
   }
+}
+
+void GlTexture::set_nearest(bool nearest) {
+  if (nearest == m_nearest) return;
+  m_nearest = nearest;
+  if (m_id == 0) return;  // prepare() applies it
+  const GLint filter = nearest ? GL_NEAREST : GL_LINEAR;
+  glBindTexture(GL_TEXTURE_2D, m_id);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
 }
 
 void GlTexture::upload(const Image& image) {

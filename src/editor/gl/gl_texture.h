@@ -19,6 +19,9 @@ class GlTexture {
   // Uploads image (row 0 = top, stored as texture row 0). Reallocates only when the size
   // changes. Linear filtering, clamped edges.
   void upload(const Image& image);
+  // Nearest sampling (true) or linear. Nearest is exact when texels map 1:1 to pixels, and
+  // llvmpipe samples float textures about 4x cheaper with it (one fetch instead of four).
+  void set_nearest(bool nearest);
   // Uploads width * height * 3 bytes of 8-bit RGB (swatches).
   void upload_rgb8(int width, int height, const unsigned char* rgb);
 
@@ -33,6 +36,7 @@ class GlTexture {
   GLuint m_id = 0;
   int m_width = 0, m_height = 0;
   GLint m_format = 0;
+  bool m_nearest = false;
 };
 
 }  // namespace gloss

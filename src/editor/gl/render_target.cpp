@@ -42,6 +42,15 @@ void RenderTarget::unbind() {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+void RenderTarget::blit_to_window(int x, int y) const {
+  if (m_framebuffer == 0) return;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, m_framebuffer);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glBlitFramebuffer(0, 0, m_width, m_height, x, y, x + m_width, y + m_height, GL_COLOR_BUFFER_BIT,
+                    GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 std::vector<unsigned char> RenderTarget::read_rgba() const {
   std::vector<unsigned char> pixels(static_cast<std::size_t>(m_width) * m_height * 4);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, m_framebuffer);

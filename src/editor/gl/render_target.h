@@ -21,6 +21,11 @@ class RenderTarget {
   void bind() const;
   static void unbind();
 
+  // Copies the whole target into the default framebuffer with its lower left corner at (x, y)
+  // in GL window coordinates (rows from the bottom). A blit is a plain copy in llvmpipe, far
+  // cheaper than drawing the texture as a blended, textured quad.
+  void blit_to_window(int x, int y) const;
+
   // Rows bottom to top, as glReadPixels returns them: width * height * 4 bytes.
   std::vector<unsigned char> read_rgba() const;
 

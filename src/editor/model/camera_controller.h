@@ -5,6 +5,7 @@
 #include <glm/vec2.hpp>
 
 #include "scene/camera.h"
+#include "scene/scene.h"
 
 namespace gloss {
 
@@ -27,6 +28,28 @@ bool project_point(const Camera& camera, int width, int height, const glm::vec3&
 // anchor: dragging a light keeps it in the plane facing the camera.
 glm::vec3 point_at_depth(const Camera& camera, int width, int height, const glm::vec2& px,
                          const glm::vec3& anchor);
+
+// Where "Add light" puts a new light: in view, upper right of the image (70% across, 25% down)
+// at half the target's depth, so its marker is on screen and it lights the front of the scene.
+glm::vec3 new_light_position(const Camera& camera, int width, int height);
+
+// A marker for world point p in a width x height image: on screen, its projection; off screen
+// (outside the image or behind the eye), the point of the rectangle inset by margin pixels in
+// the direction of p from the image centre, with on_screen false. direction: unit vector in image
+// coordinates (y down) from the centre toward p.
+struct EdgeMarker {
+  glm::vec2 position{0.0f};
+  glm::vec2 direction{0.0f, -1.0f};
+  bool on_screen = false;
+};
+EdgeMarker edge_marker(const Camera& camera, int width, int height, const glm::vec3& p,
+                       float margin);
+
+// The image rectangle (lo, hi; y down) that holds the projection of object's axis-aligned
+// bounds (a sphere's centre +- radius, a mesh's bounds): the viewport frames the selected object
+// with it. False when any corner is behind the eye or the object has no extent.
+bool screen_bounds(const Camera& camera, int width, int height, const Object& object, glm::vec2& lo,
+                   glm::vec2& hi);
 
 // p rotated by degrees about the vertical (+y) axis through centre, counter-clockwise seen from
 // above.

@@ -1,5 +1,7 @@
 #include "editor/model/export_image.h"
 
+#include "editor/model/sheet_labels.h"
+
 #include <unistd.h>
 
 #include <cerrno>
@@ -54,12 +56,20 @@ Image exposed(const Image& image, float stops) {
   return out;
 }
 
+int term_sheet_band(int pane_height) {
+  const int scale = std::max(1, pane_height / 200);  // 2x font from 400-pixel panes up
+  return label_height(scale) + 4 * scale;
+}
+
 Image term_sheet(const TermImages& terms) {
   const int w = terms.total.width, h = terms.total.height;
-  Image sheet(2 * w, 2 * h);
+  const int band = term_sheet_band(h);
+  const int scale = std::max(1, h / 200);
+  Image sheet(2 * w, 2 * (h + band));
   const Image* panes[4] = {&terms.emissive, &terms.diffuse, &terms.specular, &terms.total};
+  const char* names[4] = {"emissive + ambient", "diffuse", "specular", "total"};
   for (int pane = 0; pane < 4; ++pane) {
-    const int ox = (pane % 2) * w, oy = (pane / 2) * h;
+    const int ox = (pane % 2) * w, oy = (pane / 2) * (h + band) + band;
     for (int y = 0; y < h; ++y) {
       for (int x = 0; x < w; ++x) {
         glm::vec3 v = panes[pane]->at(x, y);
@@ -67,6 +77,7 @@ Image term_sheet(const TermImages& terms) {
         sheet.at(ox + x, oy + y) = v;
       }
     }
+    draw_label(sheet, ox + 4 * scale, oy - band + 2 * scale, names[pane], glm::vec3(1.0f), scale);
   }
   return sheet;
 }
@@ -113,8 +124,18 @@ Image render_export(const Scene& scene, const ViewSettings& view, ScreenshotKind
   options.terms = kind == ScreenshotKind::terms ||
                   (view.mode == ViewMode::single && view.single != TermView::total);
   const TermImages terms = render(scene, options);
-  const Image image =
-      kind == ScreenshotKind::terms ? term_sheet(terms) : viewport_image(terms, view);
+  if (kind == ScreenshotKind::terms) {
+    if (view.exposure == 0.0f) return term_sheet(terms);
+    // Exposure applies to the terms, not to the labels drawn between them.
+    TermImages e;
+    e.emissive = exposed(terms.emissive, view.exposure);
+    e.ambient = exposed(terms.ambient, view.exposure);
+    e.diffuse = exposed(terms.diffuse, view.exposure);
+    e.specular = exposed(terms.specular, view.exposure);
+    e.total = exposed(terms.total, view.exposure);
+    return term_sheet(e);
+  }
+  const Image image = viewport_image(terms, view);
   return view.exposure == 0.0f ? image : exposed(image, view.exposure);
 }
 

@@ -26,8 +26,11 @@ std::filesystem::path write_png_unique(const std::filesystem::path& folder,
 // Linear values times 2^stops (the viewport's exposure).
 Image exposed(const Image& image, float stops);
 
-// The term sheet, 2W x 2H: emissive + ambient | diffuse on top, specular | total below.
+// The term sheet: emissive + ambient | diffuse on top, specular | total below, each W x H pane
+// under a black strip of term_sheet_band(H) rows that names it in white (sheet_labels.h), so the
+// sheet is 2W x 2(H + band) and every pane pixel is its term's own.
 Image term_sheet(const TermImages& terms);
+int term_sheet_band(int pane_height);
 
 // The single image the viewport kind exports: the total, or the term a single-term view shows.
 Image viewport_image(const TermImages& terms, const ViewSettings& view);

@@ -153,6 +153,29 @@ ScriptAction parse_render_alias(Tokens& t, const std::string& verb) {
   return parse_field(t, render_fields(), FieldPart::render, 0, verb);
 }
 
+// ---- Exposure and snapshot comparison (issue 13, items 3 and 4) ----
+// `view clipped on|off` and `view ab [snapshot]`; false when mode is another view.
+bool parse_view_extra(Tokens& t, const std::string& mode, ScriptAction& out) {
+  if (mode == "clipped") {
+    out = ClippedOverlayAction{t.on_off("view clipped")};
+    return true;
+  }
+  if (mode == "ab") {
+    ViewAction v;
+    v.mode = ViewMode::ab;
+    if (!t.done()) {
+      const std::string& source = t.word("A/B source");
+      if (source != "snapshot") {
+        throw std::runtime_error("view ab takes nothing or 'snapshot', got '" + source + "'");
+      }
+      v.ab_source = AbSource::snapshot;
+    }
+    out = v;
+    return true;
+  }
+  return false;
+}
+
 // `view lobe ELEVATION_DEG` and `inspect X Y` (the lobe view and the pixel inspector).
 ScriptAction parse_lobe_elevation(Tokens& t, ViewAction v) {
   const float degrees = t.number("light elevation in degrees");
@@ -226,13 +249,18 @@ ScriptAction parse_line(Tokens& t) {
   if (verb == "view") {
     ViewAction v;
     const std::string& mode = t.word("view");
+    if (ScriptAction exposure_or_ab; parse_view_extra(t, mode, exposure_or_ab)) {
+      return exposure_or_ab;
+    }
     if (mode == "term") {
       v.mode = ViewMode::single;
       const std::string& term = t.word("term");
       if (!parse_term_view(term, v.term)) throw std::runtime_error("unknown term '" + term + "'");
     } else if (!parse_view_mode(mode, v.mode) || v.mode == ViewMode::single) {
-      throw std::runtime_error("view must be render, terms, ab, lobe or 'term NAME', got '" + mode +
-                               "'");
+      throw std::runtime_error(
+          "view must be render, terms, ab, lobe, 'term NAME', 'ab snapshot' or 'clipped on|off', "
+          "got '" +
+          mode + "'");
     }
     if (v.mode == ViewMode::lobe && !t.done()) return parse_lobe_elevation(t, v);
     return v;
@@ -248,6 +276,7 @@ ScriptAction parse_line(Tokens& t) {
   }
   if (verb == "animate") return AnimateAction{t.on_off("animate")};
   if (verb == "quit") return QuitAction{};
+  if (verb == "snapshot") return SnapshotAction{};
   if (verb == "quality") {
     const std::string& what = t.word("quality action");
     if (what == "measure") return QualityAction{QualityAction::Verb::measure, ""};

@@ -23,9 +23,17 @@ struct ScreenshotAction {
 };
 struct ViewAction {
   ViewMode mode = ViewMode::render;
-  TermView term = TermView::total;   // for ViewMode::single
+  TermView term = TermView::total;        // for ViewMode::single
+  AbSource ab_source = AbSource::models;  // for ViewMode::ab: `view ab` or `view ab snapshot`
   float lobe_elevation_deg = -1.0f;  // for ViewMode::lobe: 0..90, or -1 to keep the current one
 };
+// ---- Exposure and snapshot comparison (issue 13, items 3 and 4) ----
+// `view clipped on|off`: the clipped-pixel overlay.
+struct ClippedOverlayAction {
+  bool on = false;
+};
+// `snapshot`: keeps the current document as the A side of `view ab snapshot`.
+struct SnapshotAction {};
 struct ExposureAction {
   float stops = 0.0f;
 };
@@ -65,7 +73,7 @@ struct InspectAction {
 using ScriptAction =
     std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction, ViewAction,
                  ExposureAction, SelectAction, StatsAction, SleepAction, AnimateAction, QuitAction,
-                 QualityAction, InspectAction, MemoryAction>;
+                 QualityAction, InspectAction, ClippedOverlayAction, SnapshotAction, MemoryAction>;
 
 struct ScriptLine {
   int line = 0;  // 1-based line number in the file

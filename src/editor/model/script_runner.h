@@ -6,6 +6,9 @@
 // way for both: commands, undo and redo, view settings, selection, animation, quit.
 #include <string>
 
+#include <optional>
+
+#include "editor/model/ab_compare.h"
 #include "editor/model/command_layer.h"
 #include "editor/model/script.h"
 #include "editor/model/view_settings.h"
@@ -44,7 +47,17 @@ class ScriptHost {
   // Prints the `memory` line (memory_report.h) on stdout; this default knows no window (frames,
   // textures and swatches read 0).
   virtual LineResult memory();
+
+  // The snapshot `snapshot` takes and `view ab snapshot` compares with. Kept here by default
+  // (headless runs, tests); the editor keeps it in its App so the panel's button shares it.
+  virtual std::optional<Snapshot>& snapshot() { return m_snapshot; }
+
+ private:
+  std::optional<Snapshot> m_snapshot;
 };
+
+// The snapshot of layer's document, numbered after previous (1 for the first).
+Snapshot take_snapshot(const CommandLayer& layer, const std::optional<Snapshot>& previous);
 
 // Runs one line of script on host. A failing line prints "error: FILE:LINE: ..." on stderr and
 // returns stop with status 2 (bad line: a command that cannot apply, no such object, nothing to

@@ -20,6 +20,10 @@ const char* to_string(TermView term);
 const char* display_name(TermView term);  // "emissive + ambient"
 bool parse_term_view(const std::string& name, TermView& term);
 
+// What the A/B view compares (ab_compare.h): the document as Phong | Blinn-Phong, or the
+// snapshot taken with Snapshot | the live document.
+enum class AbSource { models, snapshot };
+
 enum class ScreenshotKind { viewport, terms, window };
 const char* to_string(ScreenshotKind kind);
 bool parse_screenshot_kind(const std::string& name, ScreenshotKind& kind);
@@ -30,14 +34,18 @@ enum class LobeEnergy { scene, on, off };
 
 struct ViewSettings {
   ViewMode mode = ViewMode::render;
-  TermView single = TermView::specular;  // shown by ViewMode::single
-  float exposure = 0.0f;                 // stops: displayed value = linear * 2^exposure
-  bool heat_auto_scale = true;           // heat scale = largest difference of the shown pair
-  float heat_scale = 0.1f;               // linear difference at the top of the heat ramp, > 0
-  float preview_scale = 1.0f;            // render pixels per screen pixel, 0.25..1
-  bool keep_highlight_size = true;       // model switch and A/B rescale exponents (document.h)
-  bool orbit_light = false;              // animate the selected light about the target's y axis
-  float orbit_speed = 45.0f;             // degrees per second
+  TermView single = TermView::specular;   // shown by ViewMode::single
+  float exposure = 0.0f;                  // stops: displayed value = linear * 2^exposure
+  bool heat_auto_scale = true;            // heat scale = largest difference of the shown pair
+  float heat_scale = 0.1f;                // linear difference at the top of the heat ramp, > 0
+  float preview_scale = 1.0f;             // render pixels per screen pixel, 0.25..1
+  AbSource ab_source = AbSource::models;  // what ViewMode::ab compares
+  // One setting for two uses: the model switch rescales every exponent by document.h's rule,
+  // and the Phong | Blinn-Phong A/B view renders B with the rescaled exponents.
+  bool keep_highlight_size = true;
+  bool show_clipped = false;  // stripes over clipped pixels (exposure_histogram.h)
+  bool orbit_light = false;   // animate the selected light about the target's y axis
+  float orbit_speed = 45.0f;  // degrees per second
   ScreenshotKind screenshot_kind = ScreenshotKind::viewport;  // what Ctrl+S saves
   std::string screenshot_dir = ".";  // where Ctrl+S writes its timestamped files
 

@@ -28,6 +28,13 @@ double FrameTimes::average() const {
   return size > 0 ? sum / size : 0.0;
 }
 
+double FrameTimes::median() const {
+  if (size == 0) return 0.0;
+  std::vector<double> sorted(ms, ms + size);
+  std::nth_element(sorted.begin(), sorted.begin() + size / 2, sorted.end());
+  return sorted[size / 2];
+}
+
 double FrameTimes::largest() const {
   double top = 0.0;
   for (int i = 0; i < size; ++i) top = std::max(top, ms[i]);
@@ -178,6 +185,32 @@ void update_title(App& app) {
   }
 }
 
+// A thin handle over the border between two panels: dragging it moves the border. vertical:
+// a left-right border (moved along x), else a top-bottom one. Returns the drag this frame.
+float splitter(const char* id, ImVec2 pos, ImVec2 size, bool vertical) {
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1, 1));
+  ImGui::Begin(id, nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+  ImGui::PopStyleVar(2);
+  ImGui::InvisibleButton("##handle", size);
+  float moved = 0.0f;
+  if (ImGui::IsItemHovered() || ImGui::IsItemActive()) {
+    ImGui::SetMouseCursor(vertical ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
+    ImGui::GetWindowDrawList()->AddRectFilled(
+        pos, ImVec2(pos.x + size.x, pos.y + size.y),
+        ImGui::GetColorU32(ImGui::IsItemActive() ? ImGuiCol_SeparatorActive
+                                                 : ImGuiCol_SeparatorHovered));
+  }
+  if (ImGui::IsItemActive())
+    moved = vertical ? ImGui::GetIO().MouseDelta.x : ImGui::GetIO().MouseDelta.y;
+  ImGui::End();
+  return moved;
+}
+
 void draw_layout(App& app) {
   draw_menu_bar(app);
   const ImGuiViewport* main = ImGui::GetMainViewport();
@@ -185,16 +218,34 @@ void draw_layout(App& app) {
   const float status_h = ImGui::GetFrameHeight() + 6.0f;
   const float top = main->Pos.y + menu_h;
   const float height = std::max(main->Size.y - menu_h - status_h, 1.0f);
-  const float side = std::clamp(main->Size.x * 0.23f, 280.0f, 420.0f);
+  const float default_side = std::clamp(main->Size.x * 0.23f, 280.0f, 420.0f);
+  // Each side panel keeps between 220 pixels and 40% of the window.
+  const float most = std::max(220.0f, main->Size.x * 0.4f);
+  if (app.left_width <= 0.0f) app.left_width = default_side;
+  if (app.right_width <= 0.0f) app.right_width = default_side;
+  app.left_width = std::clamp(app.left_width, 220.0f, most);
+  app.right_width = std::clamp(app.right_width, 220.0f, most);
+  app.lights_share = std::clamp(app.lights_share, 0.15f, 0.85f);
+  const float side = app.left_width;
+  const float right_side = app.right_width;
   const float left = main->Pos.x, right = main->Pos.x + main->Size.x;
-  const float lights_h = std::floor(height * 0.5f);
+  const float lights_h = std::floor(height * app.lights_share);
   draw_material_panel(app, ImVec2(left, top), ImVec2(side, height));
-  draw_lights_panel(app, ImVec2(right - side, top), ImVec2(side, lights_h));
-  draw_view_panel(app, ImVec2(right - side, top + lights_h), ImVec2(side, height - lights_h));
+  draw_lights_panel(app, ImVec2(right - right_side, top), ImVec2(right_side, lights_h));
+  draw_view_panel(app, ImVec2(right - right_side, top + lights_h),
+                  ImVec2(right_side, height - lights_h));
   const ImVec2 viewport_pos(left + side, top);
-  const ImVec2 viewport_size(std::max(main->Size.x - 2.0f * side, 1.0f), height);
+  const ImVec2 viewport_size(std::max(main->Size.x - side - right_side, 1.0f), height);
   app.viewport.draw(app, viewport_pos, viewport_size);
   draw_inspector(app, viewport_pos, viewport_size);
+  // The splitters go over the borders, after the panels so that they are on top.
+  app.left_width +=
+      splitter("##split-left", ImVec2(left + side - 3.0f, top), ImVec2(6.0f, height), true);
+  app.right_width -=
+      splitter("##split-right", ImVec2(right - right_side - 3.0f, top), ImVec2(6.0f, height), true);
+  app.lights_share += splitter("##split-lights", ImVec2(right - right_side, top + lights_h - 3.0f),
+                               ImVec2(right_side, 6.0f), false) /
+                      height;
   draw_status_bar(app, ImVec2(left, top + height), ImVec2(main->Size.x, status_h));
   // The Quality window opens over the viewport's right side (its table needs more width than a
   // side panel has); it can be moved, resized and closed.
@@ -222,6 +273,11 @@ void run_frame(App& app) {
   ImGui::NewFrame();
 
   app.notices.expire(frame_start);
+  // New threads (a renderer for the A/B view, exports) are lowered within a quarter second.
+  if (frame_start - app.background_checked_s > 0.25) {
+    app.background.update();
+    app.background_checked_s = frame_start;
+  }
   app.viewport.upload_frames(frame_start);
   app.swatches.poll();
   app.quality.poll();
@@ -239,7 +295,8 @@ void run_frame(App& app) {
       !app.view.orbit_light) {
     app.commands.seal();
   }
-  app.viewport.sync(app.commands.scene(), app.commands.revision(), app.view, frame_start);
+  app.viewport.sync(app.commands.scene(), app.commands.revision(), app.view,
+                    app.snapshot ? &*app.snapshot : nullptr, frame_start);
   // Once an edit's image has converged and is on screen the editor idles: the memory its passes
   // freed goes back to the system (a few ms, once per converged image).
   if (app.viewport.uploads() != app.released_at_upload &&
@@ -272,8 +329,9 @@ void run_frame(App& app) {
   glViewport(0, 0, fb_width, fb_height);
   glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
+  app.viewport.blit(fb_height);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-  if (app.capture.requested) capture_window(app);
+  if (app.capture.requested && app.capture.frames_to_skip-- <= 0) capture_window(app);
   glfwSwapBuffers(app.window);
 
   const double frame_end = app.now_s();

@@ -15,6 +15,7 @@
 #include <glad/gl.h>
 
 #include "editor/model/autosave.h"
+#include "editor/model/background_priority.h"
 #include "editor/model/command_layer.h"
 #include "editor/model/quality_measurement.h"
 #include "editor/model/recent_files.h"
@@ -38,6 +39,7 @@ struct FrameTimes {
   int size = 0, next = 0;
   void add(double value);
   double average() const;
+  double median() const;  // the Speed targets are medians: one stall does not move it
   double largest() const;
 };
 
@@ -52,6 +54,9 @@ struct WindowCapture {
   bool requested = false;
   std::string path;  // empty: a timestamped name in view.screenshot_dir
   bool from_script = false;
+  // Frames to draw before reading: a request from a menu waits one frame, in which the closed
+  // menu is no longer drawn (the frame of the click still shows it).
+  int frames_to_skip = 0;
 };
 
 // A key press (or auto-repeat) as GLFW reported it. Queued by a callback so that a press and
@@ -67,6 +72,8 @@ struct InspectorState {
   std::unique_ptr<PixelInspector> a, b;  // the document (A/B view: its Phong and Blinn sides)
   std::uint64_t revision = 0;            // document revision they were built for
   bool ab = false, keep = false;         // the A/B split and exponent rule they were built for
+  AbSource source = AbSource::models;    // what the A/B compared (ab_compare.h)
+  std::uint64_t snapshot = 0;            // the snapshot's revision + 1 they were built for, 0 none
   std::string error;                     // why they could not be built
   int hover_x = -1, hover_y = -1;        // render pixel under the cursor this frame, -1: none
 };
@@ -81,6 +88,9 @@ struct App {
   int selected_object = 0;
   int selected_light = 0;
   bool link_channels = false;  // material colour editors move R, G, B together
+  // Side panels, dragged by the splitters at their inner edges (screen pixels; 0: the default
+  // share of the window). lights_share: the Lights panel's part of the right column's height.
+  float left_width = 0.0f, right_width = 0.0f, lights_share = 0.5f;
 
   Viewport viewport;
   Swatches swatches;
@@ -94,6 +104,7 @@ struct App {
   std::string autosave_failure_shown;        // the autosave failure already announced as a notice
   std::optional<Recovery> offered_recovery;  // a crashed session's document awaiting an answer
   std::unique_ptr<ScriptPlayer> script;
+  std::optional<Snapshot> snapshot;    // the A side of the snapshot A/B (ab_compare.h)
   std::vector<NamedMaterial> library;  // materials loaded from a file, applied on demand
   std::string library_source;
   std::vector<PendingExport> exports;
@@ -104,6 +115,8 @@ struct App {
   ImVec2 cursor_position;             // the cursor as of the last event (window pixels)
   ImVec2 press_position[3];           // where each mouse button last went down (window pixels)
   FrameTimes frame_times;
+  BackgroundPriority background;  // render and export threads below the UI (created on it)
+  double background_checked_s = -1.0;
   InspectorState inspector;
 
   std::string title;                     // the window title last set
@@ -152,6 +165,8 @@ void remember_recent(App& app, RecentKind kind, const std::string& path);
 void request_quit(App& app);
 void undo(App& app);
 void redo(App& app);
+// Keeps the current document as the snapshot and shows the snapshot | live A/B view.
+void snapshot_and_compare(App& app);
 
 // shortcuts.cpp: install_input_callbacks before ImGui's GLFW backend (which chains to them),
 // then handle_shortcuts once per frame.
@@ -159,6 +174,8 @@ void install_input_callbacks(GLFWwindow* window);
 // Between the backend's NewFrame and ImGui::NewFrame: shows this frame's taps as held keys.
 void replay_key_taps(App& app);
 void handle_shortcuts(App& app);
+// Closes open menus, combo lists and other popups, but not a modal question (Esc, captures).
+void close_menus();
 
 // Panels (one file each).
 void draw_menu_bar(App& app);

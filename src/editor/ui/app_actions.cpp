@@ -9,6 +9,7 @@
 
 #include "base/error.h"
 #include "editor/model/export_image.h"
+#include "editor/model/script_runner.h"
 #include "editor/ui/app.h"
 #include "io/model_loader.h"
 #include "io/scene_loader.h"
@@ -156,7 +157,8 @@ void save_materials(App& app, const std::string& path) {
 
 void start_screenshot(App& app, ScreenshotKind kind, const std::string& path, bool from_script) {
   if (kind == ScreenshotKind::window) {
-    app.capture = {true, path, from_script};
+    app.capture = {true, path, from_script, from_script ? 0 : 1};
+    if (!from_script) close_menus();
     return;
   }
   const Scene scene = app.commands.scene();
@@ -277,6 +279,17 @@ void undo(App& app) {
 void redo(App& app) {
   const std::string label = app.commands.redo_label();
   if (app.commands.redo()) app.notices.info("redid " + label, app.now_s());
+}
+
+}  // namespace gloss
+
+namespace gloss {
+
+void snapshot_and_compare(App& app) {
+  app.snapshot = take_snapshot(app.commands, app.snapshot);
+  app.view.mode = ViewMode::ab;
+  app.view.ab_source = AbSource::snapshot;
+  app.notices.info(app.snapshot->label + " taken: A shows it, B the live scene", app.now_s());
 }
 
 }  // namespace gloss

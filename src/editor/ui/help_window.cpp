@@ -42,11 +42,15 @@ void draw_help_window(App& app) {
     row("Ctrl+O", "open a scene");
     row("Ctrl+Q", "quit");
     row("1 / 2 / 3 / 4", "render / terms 2x2 / one term / A/B view");
+    row("Ctrl+B", "snapshot: A/B of the scene now (A) against later edits (B)");
+    row("Esc", "close a menu, this help, the file panel");
     row("left drag", "orbit the camera about its target");
     row("right or middle drag, Shift+left", "pan");
     row("mouse wheel", "zoom");
     row("left click", "select the object under the cursor");
     row("drag a light marker", "move the light in the plane facing you");
+    row("click an edge arrow", "select a light that is out of view");
+    row("drag a panel's inner edge", "resize the side panels");
     row("Ctrl+click a slider", "type an exact value");
     ImGui::EndTable();
   }

@@ -1,7 +1,7 @@
 // The pixel inspector window: what the contract computed at the centre of the pixel under the
 // cursor (or the pinned one), term by term and light by light, from the reference path in double
-// (reference/pixel_inspection.h). In the A/B view both sides are read, A (Phong) and B
-// (Blinn-Phong, exponents as the view rescales them).
+// (reference/pixel_inspection.h). In the A/B view both sides are read, A and B as the viewport
+// renders them (ab_compare.h: Phong | Blinn-Phong, or the snapshot | the live document).
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -22,8 +22,10 @@ void refresh(App& app) {
   InspectorState& state = app.inspector;
   const bool ab = app.view.mode == ViewMode::ab;
   const bool keep = app.view.keep_highlight_size;
+  const AbSource source = app.view.ab_source;
+  const std::uint64_t snapshot = app.snapshot ? app.snapshot->revision + 1 : 0;
   if (state.a && state.revision == app.commands.revision() && state.ab == ab &&
-      state.keep == keep) {
+      state.keep == keep && state.source == source && state.snapshot == snapshot) {
     return;
   }
   const Scene& scene = app.commands.scene();
@@ -31,9 +33,10 @@ void refresh(App& app) {
   state.b.reset();
   try {
     if (ab) {
-      state.a = std::make_unique<PixelInspector>(with_model(scene, ShadingModel::phong, keep));
-      state.b =
-          std::make_unique<PixelInspector>(with_model(scene, ShadingModel::blinn_phong, keep));
+      // The same two documents the viewport's A/B renders (ab_compare.h).
+      const AbScenes pair = ab_scenes(scene, source, app.snapshot ? &*app.snapshot : nullptr, keep);
+      state.a = std::make_unique<PixelInspector>(pair.a);
+      state.b = std::make_unique<PixelInspector>(pair.b);
     } else {
       state.a = std::make_unique<PixelInspector>(scene);
     }
@@ -44,6 +47,8 @@ void refresh(App& app) {
   state.revision = app.commands.revision();
   state.ab = ab;
   state.keep = keep;
+  state.source = source;
+  state.snapshot = snapshot;
 }
 
 std::string rgb_text(const glm::dvec3& c) {
@@ -95,16 +100,17 @@ std::string material_text(const PixelBreakdown& r) {
   return r.material_name.empty() ? "#" + std::to_string(r.material) : r.material_name;
 }
 
-void draw_table(const PixelBreakdown& a, const PixelBreakdown* b) {
+// labels: the A and B column titles in the A/B view (ab_compare.h), else null.
+void draw_table(const PixelBreakdown& a, const PixelBreakdown* b, const std::string* labels) {
   const int columns = b != nullptr ? 3 : 2;
   const ImGuiTableFlags flags =
       ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
   if (!ImGui::BeginTable("##inspector", columns, flags)) return;
   ImGui::TableSetupColumn("");
-  ImGui::TableSetupColumn(b != nullptr                     ? "A: Phong"
+  ImGui::TableSetupColumn(b != nullptr                     ? labels[0].c_str()
                           : a.model == ShadingModel::phong ? "Phong"
                                                            : "Blinn-Phong");
-  if (b != nullptr) ImGui::TableSetupColumn("B: Blinn-Phong");
+  if (b != nullptr) ImGui::TableSetupColumn(labels[1].c_str());
   ImGui::TableHeadersRow();
   const std::string bo = b != nullptr ? object_text(*b) : "";
   const std::string bm = b != nullptr ? material_text(*b) : "";
@@ -193,9 +199,12 @@ void draw_inspector(App& app, ImVec2 viewport_pos, ImVec2 viewport_size) {
     const PixelBreakdown b = state.b->inspect(x, y);
     const glm::dvec3 d = glm::abs(a.total - b.total);
     ImGui::Text("|A - B| of the total: %.5g (largest channel)", std::max({d.x, d.y, d.z}));
-    draw_table(a, &b);
+    const std::string labels[2] = {
+        ab_label_a(app.view.ab_source, app.snapshot ? &*app.snapshot : nullptr),
+        ab_label_b(app.view.ab_source, app.view.keep_highlight_size)};
+    draw_table(a, &b, labels);
   } else {
-    draw_table(a, nullptr);
+    draw_table(a, nullptr, nullptr);
   }
   ImGui::End();
 }

@@ -6,6 +6,7 @@
 
 #include <imgui.h>
 
+#include "editor/model/camera_controller.h"
 #include "editor/ui/app.h"
 #include "editor/ui/field_widgets.h"
 #include "editor/ui/panel_widgets.h"
@@ -19,8 +20,15 @@ void draw_lights(App& app) {
   const int count = static_cast<int>(scene.lights.size());
   if (ImGui::Button("Add light")) {
     PointLight light;
-    light.position = scene.camera.eye + glm::vec3(0.0f, 2.0f, 0.0f);
-    if (execute(app, AddLight{light})) app.selected_light = count;
+    // In view (upper right of the image), so its marker shows and it can be dragged at once.
+    const RenderSettings& r = scene.render;
+    light.position = new_light_position(scene.camera, r.width, r.height);
+    if (execute(app, AddLight{light})) {
+      // Selected at once; the rest of the panel waits for the next frame, whose count includes
+      // it (clamping against this frame's count unselected it).
+      app.selected_light = count;
+      return;
+    }
   }
   if (count == 0) {
     ImGui::SameLine();

@@ -174,8 +174,9 @@ void draw_controls(App& app) {
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
         "on: the model the scene does not use is drawn with the exponent that keeps\n"
-        "the highlight's size (Blinn-Phong 4x Phong's; as the A/B view's 'B uses 4x\n"
-        "exponents'); off: both models with the material's own exponent");
+        "the highlight's size (Blinn-Phong 4x Phong's); off: both models with the\n"
+        "material's own exponent. The same setting as the Material panel's 'keep\n"
+        "highlight size (x4 rule)', which the A/B view's B side follows too");
   }
 }
 

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include <imgui.h>
 
+#include "editor/model/preset_status.h"
 #include "editor/ui/app.h"
 #include "editor/ui/field_widgets.h"
 #include "editor/ui/panel_widgets.h"
@@ -15,31 +17,41 @@ namespace gloss {
 
 namespace {
 
+// The preset swatches with their names: a table of small swatches, each with its name beside
+// it ("black plastic"), clipped to the column; the current preset is outlined, and a tweaked one
+// is named "(modified)" in the heading above.
 void draw_presets(App& app, int object, const Material& material) {
   const std::vector<Preset>& presets = preset_table();
-  const float cell = static_cast<float>(Swatches::kSize) * 0.8f;
-  const float spacing = ImGui::GetStyle().ItemSpacing.x;
-  const int per_row =
-      std::max(1, static_cast<int>((ImGui::GetContentRegionAvail().x + spacing) /
-                                   (cell + 2.0f * ImGui::GetStyle().FramePadding.x + spacing)));
+  const float icon = ImGui::GetTextLineHeight() + 4.0f;
+  const int columns = std::clamp(static_cast<int>(ImGui::GetContentRegionAvail().x / 118.0f), 1, 4);
+  if (!ImGui::BeginTable("##presets", columns, ImGuiTableFlags_SizingStretchSame)) return;
   for (std::size_t i = 0; i < presets.size(); ++i) {
+    ImGui::TableNextColumn();
     ImGui::PushID(static_cast<int>(i));
     const bool current = presets[i].name == material.preset;
-    if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.95f, 0.75f, 0.2f, 1.0f));
-    bool clicked = false;
-    if (GLuint texture = app.swatches.texture(i); texture != 0) {
-      clicked = ImGui::ImageButton(
-          reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(texture)), ImVec2(cell, cell));
-    } else {
-      clicked = ImGui::Button("...", ImVec2(cell + 2.0f * ImGui::GetStyle().FramePadding.x,
-                                            cell + 2.0f * ImGui::GetStyle().FramePadding.y));
-    }
-    if (current) ImGui::PopStyleColor();
+    std::string name = presets[i].name;
+    std::replace(name.begin(), name.end(), '_', ' ');
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    // One selectable row per preset: swatch and name click alike.
+    const bool clicked = ImGui::Selectable("##preset", current, 0, ImVec2(0.0f, icon));
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", presets[i].name.c_str());
+    ImDrawList* list = ImGui::GetWindowDrawList();
+    if (GLuint texture = app.swatches.texture(i); texture != 0) {
+      list->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(texture)), at,
+                     ImVec2(at.x + icon, at.y + icon));
+    } else {
+      list->AddRectFilled(at, ImVec2(at.x + icon, at.y + icon), IM_COL32(60, 60, 66, 255));
+    }
+    if (current) {
+      list->AddRect(ImVec2(at.x - 1, at.y - 1), ImVec2(at.x + icon + 1, at.y + icon + 1),
+                    IM_COL32(242, 190, 50, 255), 0.0f, 0, 2.0f);
+    }
+    list->AddText(ImVec2(at.x + icon + 4.0f, at.y + 2.0f), ImGui::GetColorU32(ImGuiCol_Text),
+                  name.c_str());
     if (clicked) execute(app, ApplyPreset{object, presets[i].name});
-    if ((i + 1) % per_row != 0 && i + 1 < presets.size()) ImGui::SameLine();
     ImGui::PopID();
   }
+  ImGui::EndTable();
 }
 
 void draw_model_switch(App& app) {
@@ -53,11 +65,13 @@ void draw_model_switch(App& app) {
     execute(app, SetModel{model == 0 ? ShadingModel::phong : ShadingModel::blinn_phong,
                           app.view.keep_highlight_size});
   }
-  ImGui::Checkbox("keep highlight size on switch", &app.view.keep_highlight_size);
+  // One setting for both uses (view_settings.h): the switch above and the A/B view's B side.
+  ImGui::Checkbox("keep highlight size (x4 rule)", &app.view.keep_highlight_size);
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
         "Blinn-Phong exponent = 4 x Phong exponent: near the peak the half vector\n"
-        "turns half as far as the reflection vector, so the lobes match.");
+        "turns half as far as the reflection vector, so the lobes match.\n"
+        "Used when the model is switched here, and by the A/B view (B side).");
   }
   RenderSettings edited = render;
   field_widget(*find_field(render_fields(), "energy_normalize"), edited);
@@ -119,10 +133,23 @@ void draw_material_panel(App& app, ImVec2 pos, ImVec2 size) {
   ImGui::PopStyleColor();
 
   Material edited = material;
+  ImGui::PushItemWidth(-120.0f);  // room for the longest label, "Phong exponent"
   ImGui::Checkbox("link RGB channels", &app.link_channels);
+  // The exponent's label names the model it is the exponent of.
+  const bool blinn = scene.render.model == ShadingModel::blinn_phong;
   for (const Field<Material>& field : material_fields()) {
-    field_widget(field, edited, app.link_channels);
+    const bool exponent = std::string(field.key) == "shininess";
+    field_widget(
+        field, edited, app.link_channels,
+        exponent ? (blinn ? "Blinn exponent##shininess" : "Phong exponent##shininess") : nullptr);
+    if (exponent && ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("%s", blinn ? "alpha of (N.H)^alpha, Blinn-Phong; drag: 1%% per pixel, "
+                                      "Shift faster, Alt finer, Ctrl+click to type"
+                                    : "alpha of (R.V)^alpha, Phong; drag: 1%% per pixel, "
+                                      "Shift faster, Alt finer, Ctrl+click to type");
+    }
   }
+  ImGui::PopItemWidth();
   if (auto command =
           field_command(FieldPart::material, object, material_fields(), material, edited)) {
     execute(app, *command);
@@ -130,8 +157,13 @@ void draw_material_panel(App& app, ImVec2 pos, ImVec2 size) {
 
   section_title("Presets");
   if (!material.preset.empty()) {
-    const std::string reset = "Reset to preset '" + material.preset + "'";
-    if (ImGui::Button(reset.c_str())) execute(app, ApplyPreset{object, material.preset});
+    ImGui::Text("preset: %s", preset_status(material).c_str());
+    if (preset_modified(material)) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton("Reset")) execute(app, ApplyPreset{object, material.preset});
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("reload '%s', undoing the tweaks", material.preset.c_str());
+    }
   } else {
     ImGui::TextDisabled("custom material (no preset)");
   }

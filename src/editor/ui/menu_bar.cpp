@@ -102,13 +102,23 @@ void view_menu(App& app) {
     }
     ImGui::EndMenu();
   }
-  if (ImGui::MenuItem("A/B Phong vs Blinn-Phong", "4", view.mode == ViewMode::ab)) {
+  if (ImGui::MenuItem("A/B Phong vs Blinn-Phong", "4",
+                      view.mode == ViewMode::ab && view.ab_source == AbSource::models)) {
     view.mode = ViewMode::ab;
+    view.ab_source = AbSource::models;
   }
   if (ImGui::MenuItem("BRDF lobe of the selected material", "5", view.mode == ViewMode::lobe)) {
     view.mode = ViewMode::lobe;
   }
   ImGui::MenuItem("Pixel inspector", "I", &view.show_inspector);
+  if (ImGui::MenuItem("Snapshot, then A/B snapshot vs live", "Ctrl+B")) snapshot_and_compare(app);
+  if (ImGui::MenuItem("A/B snapshot vs live", nullptr,
+                      view.mode == ViewMode::ab && view.ab_source == AbSource::snapshot,
+                      app.snapshot.has_value())) {
+    view.mode = ViewMode::ab;
+    view.ab_source = AbSource::snapshot;
+  }
+  ImGui::MenuItem("Show clipped pixels", nullptr, &view.show_clipped);
   ImGui::Separator();
   const bool srgb = app.commands.scene().render.srgb;
   if (ImGui::MenuItem("sRGB display encoding", nullptr, srgb)) {

@@ -10,7 +10,10 @@
 
 namespace gloss {
 
-std::string stats_text(const App& app) {
+std::string stats_text(App& app) {
+  // Every pixel of the live image as shown (exposure_histogram.h: any channel above 1).
+  const double clipped_share =
+      app.viewport.histogram(app.view, app.commands.scene().render.srgb, true).clipped_share();
   char text[512];
   const LatencyProbe& latency = app.viewport.latency();
   const RenderedFrame* frame = app.viewport.shown_frame();
@@ -18,12 +21,13 @@ std::string stats_text(const App& app) {
   const double rays_per_s =
       info.pass_ms > 0.0 ? static_cast<double>(info.rays) / (info.pass_ms * 1e-3) : 0.0;
   std::snprintf(text, sizeof text,
-                "ui_frame_ms avg=%.2f max=%.2f frames=%d | edit_to_first_image_ms=%.1f "
+                "ui_frame_ms avg=%.2f median=%.2f max=%.2f frames=%d | edit_to_first_image_ms=%.1f "
                 "edit_to_full_image_ms=%.1f | pass=%d spp=%d/%d size=%dx%d pass_ms=%.1f "
-                "since_change_ms=%.1f rays_per_s=%.3g",
-                app.frame_times.average(), app.frame_times.largest(), app.frame_times.size,
-                latency.first_image_ms, latency.full_image_ms, info.pass, info.spp, info.target_spp,
-                info.width, info.height, info.pass_ms, info.since_change_ms, rays_per_s);
+                "since_change_ms=%.1f rays_per_s=%.3g clipped=%.2f%%",
+                app.frame_times.average(), app.frame_times.median(), app.frame_times.largest(),
+                app.frame_times.size, latency.first_image_ms, latency.full_image_ms, info.pass,
+                info.spp, info.target_spp, info.width, info.height, info.pass_ms,
+                info.since_change_ms, rays_per_s, 100.0 * clipped_share);
   return text;
 }
 
@@ -83,6 +87,7 @@ class ScriptPlayer::Host : public ScriptHost {
   CommandLayer& layer() override { return m_app.commands; }
   ViewSettings& view() override { return m_app.view; }
   void select(int object) override { m_app.selected_object = object; }
+  std::optional<Snapshot>& snapshot() override { return m_app.snapshot; }
 
   LineResult wait(const WaitAction& a, const std::string&) override {
     return hold(Waiting::converge, m_now + a.timeout_s);

@@ -35,6 +35,6 @@ class ScriptPlayer {
 };
 
 // The `stats` line's text: UI frame times, edit-to-image delays, the renderer's last pass.
-std::string stats_text(const App& app);
+std::string stats_text(App& app);  // non-const: computes the clipped share
 
 }  // namespace gloss

@@ -3,6 +3,7 @@
 // between two frames would be lost: shortcuts read a queue of GLFW key events instead, and such
 // taps are replayed to ImGui as held for one frame (Enter in a text field, Backspace ...).
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "editor/ui/app.h"
 
@@ -56,6 +57,18 @@ void save_scene_shortcut(App& app) {
 
 }  // namespace
 
+void close_menus() {
+  // Dear ImGui 1.86 closes popups on Esc only with keyboard navigation on, which would also
+  // move focus with the arrow keys; this closes them to the innermost modal instead.
+  ImGuiContext& g = *ImGui::GetCurrentContext();
+  int keep = 0;
+  for (int i = 0; i < g.OpenPopupStack.Size; ++i) {
+    const ImGuiWindow* w = g.OpenPopupStack[i].Window;
+    if (w != nullptr && (w->Flags & ImGuiWindowFlags_Modal) != 0) keep = i + 1;
+  }
+  if (keep < g.OpenPopupStack.Size) ImGui::ClosePopupToLevel(keep, true);
+}
+
 void install_input_callbacks(GLFWwindow* window) {
   glfwSetKeyCallback(window, on_key);
   glfwSetMouseButtonCallback(window, on_mouse_button);
@@ -108,6 +121,7 @@ void handle_shortcuts(App& app) {
                        "");
     }
     if (ctrl && press.key == GLFW_KEY_Q) request_quit(app);
+    if (ctrl && press.key == GLFW_KEY_B) snapshot_and_compare(app);
     if (press.mods == 0 && press.key >= GLFW_KEY_1 && press.key <= GLFW_KEY_5 &&
         !ImGui::IsAnyItemActive()) {
       const ViewMode modes[5] = {ViewMode::render, ViewMode::terms, ViewMode::single, ViewMode::ab,
@@ -120,6 +134,7 @@ void handle_shortcuts(App& app) {
     if (press.key == GLFW_KEY_ESCAPE) {
       app.show_help = false;
       app.browser.open = false;
+      close_menus();
     }
   }
 }

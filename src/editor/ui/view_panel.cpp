@@ -2,6 +2,8 @@
 // (scene/fields.h's render table), the preview scale, and screenshots. View settings are window
 // preferences (not undone); render settings are the document's and go through commands.
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -14,6 +16,48 @@ namespace gloss {
 
 namespace {
 
+// The histogram of the live image as displayed (exposure and encoding applied): R, G and B
+// counts over 64 bins, drawn as lines on a square-root scale so that the dark bins of a mostly
+// black background do not flatten the rest. Then the clipped share and the overlay switch.
+void draw_histogram(App& app) {
+  ViewSettings& view = app.view;
+  const ExposureHistogram h = app.viewport.histogram(view, app.commands.scene().render.srgb);
+  const float width = ImGui::GetContentRegionAvail().x;
+  const float height = 56.0f;
+  const ImVec2 p0 = ImGui::GetCursorScreenPos();
+  ImGui::Dummy(ImVec2(width, height));
+  ImDrawList* list = ImGui::GetWindowDrawList();
+  list->AddRectFilled(p0, ImVec2(p0.x + width, p0.y + height), IM_COL32(20, 20, 22, 255));
+  std::uint32_t top = 1;
+  for (const auto& channel : h.counts) {
+    for (std::uint32_t n : channel) top = std::max(top, n);
+  }
+  const ImU32 colours[3] = {IM_COL32(235, 80, 80, 220), IM_COL32(90, 220, 90, 220),
+                            IM_COL32(100, 140, 255, 220)};
+  for (int c = 0; c < 3; ++c) {
+    ImVec2 points[ExposureHistogram::kBins];
+    for (int b = 0; b < ExposureHistogram::kBins; ++b) {
+      const float share = std::sqrt(static_cast<float>(h.counts[c][b]) / static_cast<float>(top));
+      points[b] = ImVec2(p0.x + width * (static_cast<float>(b) + 0.5f) / ExposureHistogram::kBins,
+                         p0.y + height - 1.0f - share * (height - 2.0f));
+    }
+    list->AddPolyline(points, ExposureHistogram::kBins, colours[c], 0, 1.0f);
+  }
+  const double share = h.clipped_share();
+  const ImVec4 colour = share > 0.01 ? ImVec4(1.0f, 0.55f, 0.35f, 1.0f)
+                                     : ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
+  ImGui::TextColored(colour, "clipped %.1f%% (R %.1f G %.1f B %.1f)", 100.0 * share,
+                     h.pixels ? 100.0 * h.clipped_channel[0] / h.pixels : 0.0,
+                     h.pixels ? 100.0 * h.clipped_channel[1] / h.pixels : 0.0,
+                     h.pixels ? 100.0 * h.clipped_channel[2] / h.pixels : 0.0);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "pixels with any channel above 1 after exposure: the display clamps them\n"
+        "(histogram of the displayed values, R G B, square-root height)");
+  }
+  ImGui::Checkbox("show clipped pixels", &view.show_clipped);
+}
+
 void draw_view_mode(App& app) {
   ViewSettings& view = app.view;
   int mode = static_cast<int>(view.mode);
@@ -22,7 +66,7 @@ void draw_view_mode(App& app) {
   ImGui::RadioButton("terms 2x2 (2)", &mode, static_cast<int>(ViewMode::terms));
   ImGui::RadioButton("one term (3)", &mode, static_cast<int>(ViewMode::single));
   ImGui::SameLine();
-  ImGui::RadioButton("A/B Phong|Blinn (4)", &mode, static_cast<int>(ViewMode::ab));
+  ImGui::RadioButton("A/B (4)", &mode, static_cast<int>(ViewMode::ab));
   ImGui::RadioButton("BRDF lobe (5)", &mode, static_cast<int>(ViewMode::lobe));
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("the selected material's lobe as a polar plot");
   ImGui::SameLine();
@@ -38,18 +82,40 @@ void draw_view_mode(App& app) {
     }
   }
   if (view.mode == ViewMode::ab) {
+    int source = static_cast<int>(view.ab_source);
+    ImGui::RadioButton("Phong | Blinn-Phong", &source, static_cast<int>(AbSource::models));
+    if (!app.snapshot) ImGui::BeginDisabled();
+    ImGui::RadioButton("snapshot | live", &source, static_cast<int>(AbSource::snapshot));
+    if (!app.snapshot) ImGui::EndDisabled();
+    view.ab_source = static_cast<AbSource>(source);
     ImGui::Checkbox("automatic heat scale", &view.heat_auto_scale);
     if (!view.heat_auto_scale) {
       ImGui::SliderFloat("heat scale", &view.heat_scale, 1e-4f, 10.0f, "%.4f",
                          ImGuiSliderFlags_Logarithmic);
       view.heat_scale = std::max(view.heat_scale, 1e-6f);
     }
-    ImGui::Checkbox("B uses 4x exponents", &view.keep_highlight_size);
+    if (view.ab_source == AbSource::models) {
+      // The Material panel's setting, shown here as a reminder, not a second switch.
+      ImGui::TextDisabled("B exponents %s: keep highlight size",
+                          view.keep_highlight_size ? "x4" : "x1");
+      if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("one setting, switched in the Material panel (Shading model)");
+      }
+    }
+  }
+  if (ImGui::Button("Snapshot (Ctrl+B)")) snapshot_and_compare(app);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("keep the current scene as A and compare it with the live scene as B");
+  }
+  if (app.snapshot) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s kept", app.snapshot->label.c_str());
   }
   ImGui::SliderFloat("exposure", &view.exposure, -8.0f, 8.0f, "%+.2f stops");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("display value = linear x 2^exposure");
   ImGui::SameLine();
   if (ImGui::SmallButton("0")) view.exposure = 0.0f;
+  draw_histogram(app);
 }
 
 void draw_quality(App& app) {
@@ -100,7 +166,7 @@ void draw_view_panel(App& app, ImVec2 pos, ImVec2 size) {
     ImGui::End();
     return;
   }
-  ImGui::PushItemWidth(-110.0f);
+  ImGui::PushItemWidth(-130.0f);  // room for "samples per pixel"
   section_title("View");
   draw_view_mode(app);
   section_title("Quality");

@@ -4,12 +4,15 @@
 // 2x2 term sheet, or A/B with a heat map). Owns the renderers; never waits for them.
 #include <cstdint>
 #include <memory>
+#include <string>
 
 #include <imgui.h>
 
 #include "editor/gl/display_shader.h"
 #include "editor/gl/gl_texture.h"
 #include "editor/gl/render_target.h"
+#include "editor/model/ab_compare.h"
+#include "editor/model/exposure_histogram.h"
 #include "editor/model/view_settings.h"
 #include "engine/progressive_renderer.h"
 
@@ -42,9 +45,14 @@ class Viewport {
   // Uploads frames published since the last call. now_s: seconds on the frame clock.
   void upload_frames(double now_s);
   // Hands the document to the renderer(s) when it, the view mode or the render size changed.
-  void sync(const Scene& document, std::uint64_t revision, const ViewSettings& view, double now_s);
+  // snapshot: the A side of the snapshot comparison (AbSource::snapshot), may be null.
+  void sync(const Scene& document, std::uint64_t revision, const ViewSettings& view,
+            const Snapshot* snapshot, double now_s);
   // Draws the viewport window at pos/size (screen coordinates) with its gestures.
   void draw(App& app, ImVec2 pos, ImVec2 size);
+  // Copies the viewport's image into the window's back buffer (framebuffer_height: the window's
+  // in framebuffer pixels); call after clearing it and before ImGui draws on top.
+  void blit(int framebuffer_height) const;
   // Call after the swap that showed this frame: completes latency measurements.
   void frame_shown(double now_s);
 
@@ -63,6 +71,12 @@ class Viewport {
   // textures in RAM; a GPU driver keeps them in video memory), for the `memory` script line.
   std::uint64_t frame_bytes() const;
   std::uint64_t texture_bytes() const;
+
+  // The histogram of the live image as shown (the total, or the single term shown; in the
+  // snapshot A/B the live B side), recomputed only when that image or the display changed.
+  // Large images are sampled (every step-th pixel and row, at most ~16k pixels) to stay well
+  // under a millisecond; exact=true counts every pixel (the `stats` line).
+  ExposureHistogram histogram(const ViewSettings& view, bool srgb, bool exact = false);
 
  private:
   // viewport_input.cpp: gestures, light markers, picking.
@@ -83,6 +97,7 @@ class Viewport {
   std::unique_ptr<ProgressiveRenderer> m_a;
   std::unique_ptr<ProgressiveRenderer> m_b;  // Blinn-Phong side of the A/B view, when shown
   std::shared_ptr<const RenderedFrame> m_frame_a, m_frame_b;
+  std::shared_ptr<const RenderedFrame> m_image_a, m_image_b;  // the newest with a total image
 
   GlTexture m_total, m_emissive, m_ambient, m_diffuse, m_specular, m_b_total;
   RenderTarget m_target;
@@ -95,10 +110,14 @@ class Viewport {
   ViewMode m_pushed_mode = ViewMode::render;
   bool m_pushed_terms = false;
   bool m_pushed_keep = false;
+  AbSource m_pushed_source = AbSource::models;
+  std::uint64_t m_pushed_snapshot = 0;  // revision of the snapshot pushed as A
+  std::string m_label_a, m_label_b;     // A/B pane labels of what was pushed
 
   // Layout of the last draw (screen coordinates).
   ImVec2 m_pos{0, 0}, m_size{0, 0};
   float m_framebuffer_scale = 1.0f;
+  bool m_visible = false;  // the viewport window was drawn this frame (blit() shows it)
   Pane m_panes[4];
   int m_pane_count = 1;
 
@@ -114,15 +133,31 @@ class Viewport {
     TermView single = TermView::total;
     float exposure = 0, heat_scale = 0;
     bool srgb = false;
+    bool show_clipped = false;
     bool operator==(const TargetKey& o) const;
   };
   TargetKey m_target_key;
   std::uint64_t m_uploads = 0;  // counts texture uploads
   LatencyProbe m_latency;
 
+  // The last histogram (histogram()) and what it was computed from.
+  struct HistogramKey {
+    const void* frame = nullptr;
+    float exposure = 0.0f;
+    bool srgb = false, exact = false;
+    TermView term = TermView::total;
+    bool operator==(const HistogramKey& o) const {
+      return frame == o.frame && exposure == o.exposure && srgb == o.srgb && exact == o.exact &&
+             term == o.term;
+    }
+  };
+  HistogramKey m_histogram_key;
+  ExposureHistogram m_histogram;
+
   // Gesture state (viewport_input.cpp).
-  int m_drag_button = -1;  // ImGuiMouseButton being dragged in the viewport, -1 none
-  int m_drag_light = -1;   // light being dragged, -1 none
+  int m_drag_button = -1;         // ImGuiMouseButton being dragged in the viewport, -1 none
+  int m_drag_light = -1;          // light being dragged, -1 none
+  bool m_marker_pressed = false;  // the press hit a light marker (no orbit, no pick)
   int m_drag_pane = 0;
   float m_drag_distance = 0.0f;  // farthest the cursor went from the press, pixels
   ImVec2 m_drag_press{0, 0};     // where the drag's button went down (screen)

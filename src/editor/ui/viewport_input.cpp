@@ -110,10 +110,15 @@ void Viewport::draw(App& app, ImVec2 pos, ImVec2 size) {
   const float aspect = static_cast<float>(render.width) / static_cast<float>(render.height);
   const float pane_w = std::floor(std::min(cell.x, cell.y * aspect));
   const ImVec2 pane_size(pane_w, std::floor(pane_w / aspect));
+  // The panes touch: a 2x2 sheet is one block centred in the viewport, so the space the aspect
+  // leaves over is one band at the edges rather than gaps between the rows or columns.
+  const float columns = grid ? 2.0f : 1.0f;
+  const ImVec2 block(pane_size.x * columns, pane_size.y * columns);
+  const ImVec2 origin(std::floor(pos.x + (size.x - block.x) * 0.5f),
+                      std::floor(pos.y + (size.y - block.y) * 0.5f));
   for (int i = 0; i < m_pane_count; ++i) {
-    m_panes[i].min = ImVec2(
-        std::floor(pos.x + static_cast<float>(i % 2) * cell.x + (cell.x - pane_size.x) * 0.5f),
-        std::floor(pos.y + static_cast<float>(i / 2) * cell.y + (cell.y - pane_size.y) * 0.5f));
+    m_panes[i].min = ImVec2(origin.x + static_cast<float>(i % 2) * pane_size.x,
+                            origin.y + static_cast<float>(i / 2) * pane_size.y);
     m_panes[i].size = pane_size;
   }
 
@@ -127,6 +132,7 @@ void Viewport::draw(App& app, ImVec2 pos, ImVec2 size) {
       ImGuiWindowFlags_NoBackground;  // the image covers it
   const bool open = ImGui::Begin("Viewport", nullptr, flags);
   ImGui::PopStyleVar(2);
+  m_visible = false;
   app.inspector.hover_x = app.inspector.hover_y = -1;
   if (!open) {
     ImGui::End();
@@ -138,9 +144,9 @@ void Viewport::draw(App& app, ImVec2 pos, ImVec2 size) {
     return;
   }
   draw_panes(app.view, app.commands.scene().render.srgb);
-  // The target's texture rows run bottom to top: flip v.
-  ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(m_target.texture())), size,
-               ImVec2(0, 1), ImVec2(1, 0));
+  // The target is copied into the back buffer under ImGui's draw lists (blit(), from
+  // run_frame): the window has no background, so it shows through.
+  m_visible = true;
   handle_input(app);
   ImDrawList* list = ImGui::GetWindowDrawList();
   draw_labels(app.view, list);
@@ -161,24 +167,65 @@ void Viewport::draw_light_markers(App& app, ImDrawList* list) const {
   for (int p = 0; p < m_pane_count; ++p) {
     if (app.view.mode == ViewMode::ab && p == 3) continue;  // the legend
     const Pane& pane = m_panes[p];
+    const int w = static_cast<int>(pane.size.x), h = static_cast<int>(pane.size.y);
     list->PushClipRect(pane.min, ImVec2(pane.min.x + pane.size.x, pane.min.y + pane.size.y), true);
-    for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i) {
-      glm::vec2 at;
-      if (!project_point(scene.camera, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
-                         scene.lights[i].position, at)) {
-        continue;
+    // The selected object: corner brackets around its projected bounds, and its name.
+    const int object = app.selected_object;
+    glm::vec2 lo, hi;
+    if (object >= 0 && object < static_cast<int>(scene.objects.size()) &&
+        screen_bounds(scene.camera, w, h, scene.objects[object], lo, hi)) {
+      const ImVec2 a(pane.min.x + lo.x - 3.0f, pane.min.y + lo.y - 3.0f);
+      const ImVec2 b(pane.min.x + hi.x + 3.0f, pane.min.y + hi.y + 3.0f);
+      const float arm = std::min(14.0f, 0.3f * std::min(b.x - a.x, b.y - a.y));
+      const ImU32 colour = IM_COL32(255, 200, 40, 230);
+      const ImVec2 corners[4] = {a, ImVec2(b.x, a.y), b, ImVec2(a.x, b.y)};
+      for (int c = 0; c < 4; ++c) {
+        const float sx = (c == 1 || c == 2) ? -1.0f : 1.0f;
+        const float sy = c >= 2 ? -1.0f : 1.0f;
+        const ImVec2 k = corners[c];
+        list->AddLine(k, ImVec2(k.x + sx * arm, k.y), colour, 2.0f);
+        list->AddLine(k, ImVec2(k.x, k.y + sy * arm), colour, 2.0f);
       }
-      const ImVec2 centre(pane.min.x + at.x, pane.min.y + at.y);
+      if (p == 0) {
+        list->AddText(ImVec2(a.x, std::max(a.y - 16.0f, pane.min.y + 20.0f)), colour,
+                      object_label(scene, object).c_str());
+      }
+    }
+    for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i) {
+      const EdgeMarker m =
+          edge_marker(scene.camera, w, h, scene.lights[i].position, kMarkerRadius + 6.0f);
+      // Off-screen arrows at the top edge sit below the pane's label.
+      const float y = m.on_screen ? m.position.y : std::max(m.position.y, 30.0f);
+      const ImVec2 centre(pane.min.x + m.position.x, pane.min.y + y);
       const glm::vec3 c = glm::clamp(scene.lights[i].diffuse, glm::vec3(0.0f), glm::vec3(1.0f));
+      const ImU32 fill = ImGui::ColorConvertFloat4ToU32(ImVec4(c.x, c.y, c.z, 1.0f));
       const bool selected = i == app.selected_light;
+      const ImU32 ring = selected ? IM_COL32(255, 200, 40, 255) : IM_COL32(20, 20, 20, 255);
       const float r = selected ? kMarkerRadius + 2.0f : kMarkerRadius;
-      list->AddCircleFilled(centre, r, ImGui::ColorConvertFloat4ToU32(ImVec4(c.x, c.y, c.z, 1.0f)));
-      list->AddCircle(centre, r + 1.5f,
-                      selected ? IM_COL32(255, 200, 40, 255) : IM_COL32(20, 20, 20, 255), 0, 2.0f);
-      char label[16];
-      std::snprintf(label, sizeof label, "%d", i);
-      list->AddText(ImVec2(centre.x + r + 3.0f, centre.y - r - 6.0f), IM_COL32(255, 230, 150, 255),
-                    label);
+      if (m.on_screen) {
+        list->AddCircleFilled(centre, r, fill);
+        list->AddCircle(centre, r + 1.5f, ring, 0, 2.0f);
+      } else {
+        // Off screen: an arrow at the edge pointing toward the light.
+        const ImVec2 d(m.direction.x, m.direction.y), n(-m.direction.y, m.direction.x);
+        const float len = r + 5.0f;
+        const ImVec2 tip(centre.x + d.x * len, centre.y + d.y * len);
+        const ImVec2 l(centre.x - d.x * r + n.x * r, centre.y - d.y * r + n.y * r);
+        const ImVec2 rr(centre.x - d.x * r - n.x * r, centre.y - d.y * r - n.y * r);
+        list->AddTriangleFilled(tip, l, rr, fill);
+        list->AddTriangle(tip, l, rr, ring, 2.0f);
+      }
+      char label[32];
+      std::snprintf(label, sizeof label, m.on_screen ? "%d" : "%d (off view)", i);
+      const ImVec2 size = ImGui::CalcTextSize(label);
+      // Keep the label inside the pane, beside the marker.
+      // Right of the marker, or left of it where the pane's right edge is too close.
+      float lx = centre.x + r + 3.0f;
+      if (lx + size.x > pane.min.x + pane.size.x - 2.0f) lx = centre.x - r - 6.0f - size.x;
+      lx = std::max(lx, pane.min.x + 2.0f);
+      const float ly = std::clamp(centre.y - r - 6.0f, pane.min.y + 2.0f,
+                                  pane.min.y + pane.size.y - size.y - 2.0f);
+      list->AddText(ImVec2(lx, ly), IM_COL32(255, 230, 150, 255), label);
     }
     list->PopClipRect();
   }
@@ -205,17 +252,20 @@ void Viewport::handle_input(App& app) {
     m_drag_distance = 0.0f;
     m_drag_pane = pane_at(press);
     m_drag_light = -1;
+    m_marker_pressed = false;
     if (m_drag_button == ImGuiMouseButton_Left && !io.KeyShift) {
       const Pane& pane = m_panes[m_drag_pane];
       for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i) {
-        glm::vec2 at;
-        if (!project_point(scene.camera, static_cast<int>(pane.size.x),
-                           static_cast<int>(pane.size.y), scene.lights[i].position, at)) {
-          continue;
-        }
-        const float dx = pane.min.x + at.x - press.x, dy = pane.min.y + at.y - press.y;
+        const EdgeMarker m =
+            edge_marker(scene.camera, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
+                        scene.lights[i].position, kMarkerRadius + 6.0f);
+        const float dx = pane.min.x + m.position.x - press.x;
+        const float dy = pane.min.y + m.position.y - press.y;
         if (dx * dx + dy * dy <= (kMarkerRadius + 4.0f) * (kMarkerRadius + 4.0f)) {
-          m_drag_light = i;
+          // An off-screen light's arrow selects it; only an on-screen marker drags the light
+          // (the drag keeps the light's depth, which an off-screen light may not have).
+          m_drag_light = m.on_screen ? i : -1;
+          m_marker_pressed = true;
           app.selected_light = i;
         }
       }
@@ -235,7 +285,7 @@ void Viewport::handle_input(App& app) {
           point_at_depth(scene.camera, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
                          local, scene.lights[m_drag_light].position);
       execute(app, SetField{FieldPart::light, m_drag_light, "position", vec3_value(moved)});
-    } else if (m_drag_distance > kClickSlop) {
+    } else if (m_drag_distance > kClickSlop && !m_marker_pressed) {
       // The scene turns as if grabbed: a drag to the right carries its front to the right (the
       // eye orbits left, positive yaw in orbit_camera); a drag down shows more of its top.
       const Camera camera = pan ? pan_camera(scene.camera, d.x, d.y, static_cast<int>(pane.size.y))
@@ -255,7 +305,7 @@ void Viewport::handle_input(App& app) {
   }
 
   if (ImGui::IsItemDeactivated()) {
-    if (m_drag_button == ImGuiMouseButton_Left && m_drag_light < 0 &&
+    if (m_drag_button == ImGuiMouseButton_Left && m_drag_light < 0 && !m_marker_pressed &&
         m_drag_distance <= kClickSlop && !(app.view.mode == ViewMode::ab && m_drag_pane == 3)) {
       pin_inspected_pixel(app, io.MousePos);
       const Pane& pane = m_panes[m_drag_pane];

@@ -1,6 +1,7 @@
 #include "engine/trace/refined_samples.h"
 
 #include <algorithm>
+#include <cstdint>
 
 #include "engine/parallel_loops.h"
 #include "engine/trace/sample_packet.h"
@@ -21,26 +22,39 @@ SamplePacket entry_packet(std::size_t e0, std::size_t e1) {
 // Directions of the packet's entries: sample (entry mod spp) of pixel pixels[entry / spp].
 void entry_directions(SamplePacket& packet, const SampleCache& cache, const SamplePattern& pattern) {
   const RefinedSamples& refined = cache.refined;
-  // Lane pixels and strata by increments (no division per lane); masked-off lanes repeat the
-  // last entry, a finite direction nobody reads.
+  // Lane pixels and strata by increments (no division per lane; stride < count); masked-off
+  // lanes repeat the last entry, a finite direction nobody reads.
   alignas(64) int lane_x[kLanes], lane_row[kLanes], lane_stratum[kLanes];
   std::size_t k = static_cast<std::size_t>(packet.x0 / refined.spp);
   int s = packet.x0 % refined.spp;
+  int stratum = sample_stratum(pattern, s);
+  int x = 0, row = 0;
+  std::size_t pixel_of_xy = SIZE_MAX;
   for (int i = 0; i < kLanes; ++i) {
-    const std::uint32_t pixel = refined.pixels[k];
-    lane_x[i] = static_cast<int>(pixel % static_cast<std::uint32_t>(cache.width));
-    lane_row[i] = static_cast<int>(pixel / static_cast<std::uint32_t>(cache.width)) + cache.row0;
-    lane_stratum[i] = sample_stratum(pattern, s);
-    if (packet.x0 + i + 1 < packet.x1 && ++s == refined.spp) {
+    if (k != pixel_of_xy) {
+      const std::uint32_t pixel = refined.pixels[k];
+      x = static_cast<int>(pixel % static_cast<std::uint32_t>(cache.width));
+      row = static_cast<int>(pixel / static_cast<std::uint32_t>(cache.width)) + cache.row0;
+      pixel_of_xy = k;
+    }
+    lane_x[i] = x;
+    lane_row[i] = row;
+    lane_stratum[i] = stratum;
+    if (packet.x0 + i + 1 >= packet.x1) continue;
+    stratum += pattern.stride;  // sample_stratum of s + 1
+    if (stratum >= pattern.count) stratum -= pattern.count;
+    if (++s == refined.spp) {
       s = 0;
+      stratum = 0;
       ++k;
     }
   }
+  SampleOffset offset[kLanes];
+  sample_offsets(pattern, lane_stratum, lane_x, lane_row, kLanes, offset);
   alignas(64) double px[kLanes], py[kLanes];
-  for (int i = 0; i < kLanes; ++i) {  // integer hashing, as packet_directions
-    const SampleOffset o = sample_offset(pattern, lane_stratum[i], lane_x[i], lane_row[i]);
-    px[i] = static_cast<double>(lane_x[i]) + static_cast<double>(o.dx);
-    py[i] = static_cast<double>(lane_row[i]) + static_cast<double>(o.dy);
+  for (int i = 0; i < kLanes; ++i) {
+    px[i] = static_cast<double>(lane_x[i]) + static_cast<double>(offset[i].dx);
+    py[i] = static_cast<double>(lane_row[i]) + static_cast<double>(offset[i].dy);
   }
   packet_directions_at(packet, cache, px, py);
 }

@@ -37,11 +37,17 @@ void packet_directions(SamplePacket& packet, const SampleCache& cache, const Sam
       py[i] = static_cast<double>(packet.y0 + cache.row0) + 0.5;
     }
   } else {
-    for (int i = 0; i < kLanes; ++i) {  // integer hashing
-      const int x = packet.x0 + i, row = packet.y0 + cache.row0;
-      const SampleOffset o = sample_offset(pattern, stratum, x, row);
-      px[i] = static_cast<double>(x) + static_cast<double>(o.dx);
-      py[i] = static_cast<double>(row) + static_cast<double>(o.dy);
+    alignas(64) int lane_x[kLanes], lane_row[kLanes], lane_stratum[kLanes];
+    for (int i = 0; i < kLanes; ++i) {
+      lane_x[i] = packet.x0 + i;
+      lane_row[i] = packet.y0 + cache.row0;
+      lane_stratum[i] = stratum;
+    }
+    SampleOffset offset[kLanes];
+    sample_offsets(pattern, lane_stratum, lane_x, lane_row, kLanes, offset);  // integer hashing
+    for (int i = 0; i < kLanes; ++i) {
+      px[i] = static_cast<double>(lane_x[i]) + static_cast<double>(offset[i].dx);
+      py[i] = static_cast<double>(lane_row[i]) + static_cast<double>(offset[i].dy);
     }
   }
   packet_directions_at(packet, cache, px, py);

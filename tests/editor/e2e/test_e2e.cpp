@@ -66,10 +66,12 @@ TEST_F(EditorE2E, TermSheetHasFourNonEmptyPanesThatSumToTheTotal) {
   ASSERT_EQ(r.status, 0) << r.err;
   const Png8 sheet = read_png((m_dir / "sheet.png").string());
   ASSERT_EQ(sheet.width, 2 * 160);
-  ASSERT_EQ(sheet.height, 2 * 120);
-  const int w = sheet.width / 2, h = sheet.height / 2;
+  // Each pane sits under a strip with its name (export_image.h): 16 rows at this size.
+  const int band = 16;
+  ASSERT_EQ(sheet.height, 2 * (120 + band));
+  const int w = 160, h = 120;
   auto at = [&](int pane, int x, int y, int c) {
-    const int px = (pane % 2) * w + x, py = (pane / 2) * h + y;
+    const int px = (pane % 2) * w + x, py = (pane / 2) * (h + band) + band + y;
     return static_cast<int>(sheet.rgb[(static_cast<std::size_t>(py) * sheet.width + px) * 3 + c]);
   };
   int lit[4] = {0, 0, 0, 0};

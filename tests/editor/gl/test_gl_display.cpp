@@ -118,6 +118,26 @@ TEST_F(GlDisplay, SrgbEncodingFollowsTheStandardCurve) {
   expect_byte(rgba[2], srgb(0.9), "near white");
 }
 
+TEST_F(GlDisplay, ClipOverlayStripesOnlyPixelsAboveOne) {
+  // 8 x 1: x < 4 at exactly 1 after exposure (shown white), x >= 4 at 1.5 (clipped). The stripes
+  // alternate every 4 pixels of x + y, so the clipped pixels are magenta or dark violet, with
+  // no green either way.
+  Image image(8, 1, glm::vec3(0.5f));
+  for (int x = 4; x < 8; ++x) image.at(x, 0) = glm::vec3(0.75f, 0.1f, 0.1f);
+  DisplayParams p;
+  p.exposure = 1.0f;
+  p.clip_overlay = true;
+  const std::vector<unsigned char> rgba = display(image, nullptr, p);
+  for (int x = 0; x < 4; ++x) expect_byte(rgba[4 * x + 1], 1.0, "exactly 1 is not clipped");
+  for (int x = 4; x < 8; ++x) {
+    EXPECT_EQ(rgba[4 * x + 1], 0) << "clipped pixel " << x << " is striped (no green)";
+    EXPECT_EQ(rgba[4 * x + 0], rgba[4 * x + 2]) << "magenta or violet at " << x;
+  }
+  p.clip_overlay = false;
+  const std::vector<unsigned char> plain = display(image, nullptr, p);
+  expect_byte(plain[4 * 5 + 1], 0.2, "without the overlay the clamp shows 0.1 x 2");
+}
+
 TEST_F(GlDisplay, SumModeAddsTheTwoTerms) {
   const Image emissive(2, 2, glm::vec3(0.1f, 0.0f, 0.5f));
   const Image ambient(2, 2, glm::vec3(0.3f, 0.2f, 0.7f));

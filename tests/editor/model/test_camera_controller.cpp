@@ -36,6 +36,58 @@ TEST(CameraController, ProjectionFollowsTheSpecsPixelMapping) {
   EXPECT_NEAR(at.y, 25.0f, 1e-3f);
 }
 
+TEST(CameraController, ANewLightIsInViewUpperRightAtHalfTheTargetDepth) {
+  const Camera c = front_camera();
+  const glm::vec3 p = new_light_position(c, 200, 100);
+  EXPECT_NEAR(p.z, 2.5f, 1e-4f);  // half way from the eye (z = 5) to the target (z = 0)
+  glm::vec2 at;
+  ASSERT_TRUE(project_point(c, 200, 100, p, at));
+  EXPECT_NEAR(at.x, 140.0f, 1e-3f);  // 70% across
+  EXPECT_NEAR(at.y, 25.0f, 1e-3f);   // 25% down
+}
+
+TEST(CameraController, EdgeMarkersClampOffScreenPointsToTheBorder) {
+  const Camera c = front_camera();  // 200 x 100, margin 10: the inset border is x 10..190, y 10..90
+  EdgeMarker m = edge_marker(c, 200, 100, glm::vec3(5.0f, 2.5f, 0.0f), 10.0f);
+  EXPECT_TRUE(m.on_screen);
+  EXPECT_NEAR(m.position.x, 150.0f, 1e-3f);
+  // Straight above the top edge (y = 20 at depth 5 is 4 x the half height): top middle.
+  m = edge_marker(c, 200, 100, glm::vec3(0.0f, 20.0f, 0.0f), 10.0f);
+  EXPECT_FALSE(m.on_screen);
+  EXPECT_NEAR(m.position.x, 100.0f, 1e-3f);
+  EXPECT_NEAR(m.position.y, 10.0f, 1e-3f);
+  EXPECT_NEAR(m.direction.y, -1.0f, 1e-5f);
+  // Far right: right middle.
+  m = edge_marker(c, 200, 100, glm::vec3(30.0f, 0.0f, 0.0f), 10.0f);
+  EXPECT_NEAR(m.position.x, 190.0f, 1e-3f);
+  EXPECT_NEAR(m.position.y, 50.0f, 1e-3f);
+  // At depth 5, (x, y) = (10, 10) is x / (5 * aspect 2) = 1 half width (100 px) right and
+  // y / 5 = 2 half heights (100 px) up: 45 degrees in pixels. The inset half sizes (90, 40) put
+  // the top first, 40 px up, so 40 px right: x = 140.
+  m = edge_marker(c, 200, 100, glm::vec3(10.0f, 10.0f, 0.0f), 10.0f);
+  EXPECT_NEAR(m.position.x, 140.0f, 1e-3f);
+  EXPECT_NEAR(m.position.y, 10.0f, 1e-3f);
+  // Behind the eye and a little above: the side it is on, the top.
+  m = edge_marker(c, 200, 100, glm::vec3(0.0f, 1.0f, 10.0f), 10.0f);
+  EXPECT_FALSE(m.on_screen);
+  EXPECT_NEAR(m.position.y, 10.0f, 1e-3f);
+}
+
+TEST(CameraController, ScreenBoundsFrameASphereByItsNearestCorners) {
+  // Unit sphere at the origin, eye at z = 5: the nearest bound corners are at depth 4, where a
+  // unit is 1/4 of the half height (50 px) and 1/(4 x 2) of the half width (100 px): 12.5 px.
+  Object sphere;
+  sphere.radius = 1.0f;
+  glm::vec2 lo, hi;
+  ASSERT_TRUE(screen_bounds(front_camera(), 200, 100, sphere, lo, hi));
+  EXPECT_NEAR(lo.x, 87.5f, 1e-3f);
+  EXPECT_NEAR(hi.x, 112.5f, 1e-3f);
+  EXPECT_NEAR(lo.y, 37.5f, 1e-3f);
+  EXPECT_NEAR(hi.y, 62.5f, 1e-3f);
+  sphere.center.z = 5.0f;  // around the eye: corners behind it
+  EXPECT_FALSE(screen_bounds(front_camera(), 200, 100, sphere, lo, hi));
+}
+
 TEST(CameraController, PointsBehindTheEyeDoNotProject) {
   glm::vec2 at;
   EXPECT_FALSE(project_point(front_camera(), 200, 100, glm::vec3(0.0f, 0.0f, 6.0f), at));

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "editor/model/export_image.h"
+#include "editor/model/sheet_labels.h"
 #include "io/image_io.h"
 #include "io/scene_loader.h"
 #include "support/test_scene.h"
@@ -46,7 +47,7 @@ TEST(ExportImage, TimestampIsDateAndTime) {
   EXPECT_EQ(text[8], '-');
 }
 
-TEST(ExportImage, TermSheetPlacesTheFourPanes) {
+TEST(ExportImage, TermSheetPlacesTheFourPanesUnderTheirLabels) {
   TermImages terms;
   terms.emissive = Image(3, 2, glm::vec3(0.1f));
   terms.ambient = Image(3, 2, glm::vec3(0.05f));
@@ -54,12 +55,44 @@ TEST(ExportImage, TermSheetPlacesTheFourPanes) {
   terms.specular = Image(3, 2, glm::vec3(0.4f));
   terms.total = Image(3, 2, glm::vec3(0.85f));
   const Image sheet = term_sheet(terms);
+  const int band = term_sheet_band(2);
+  EXPECT_EQ(band, 16);  // 12-pixel font at scale 1, 2 pixels above and below
   ASSERT_EQ(sheet.width, 6);
-  ASSERT_EQ(sheet.height, 4);
-  EXPECT_NEAR(sheet.at(0, 0).x, 0.15f, 1e-6f);  // emissive + ambient, top left
-  EXPECT_NEAR(sheet.at(5, 1).y, 0.3f, 1e-6f);   // diffuse, top right
-  EXPECT_NEAR(sheet.at(2, 2).z, 0.4f, 1e-6f);   // specular, bottom left
-  EXPECT_NEAR(sheet.at(3, 3).x, 0.85f, 1e-6f);  // total, bottom right
+  ASSERT_EQ(sheet.height, 2 * (2 + band));
+  EXPECT_NEAR(sheet.at(0, band).x, 0.15f, 1e-6f);          // emissive + ambient, top left
+  EXPECT_NEAR(sheet.at(5, band + 1).y, 0.3f, 1e-6f);       // diffuse, top right
+  EXPECT_NEAR(sheet.at(2, 2 * band + 2).z, 0.4f, 1e-6f);   // specular, bottom left
+  EXPECT_NEAR(sheet.at(3, 2 * band + 3).x, 0.85f, 1e-6f);  // total, bottom right
+}
+
+TEST(ExportImage, TermSheetLabelsAreWhiteTextInTheStrips) {
+  TermImages terms;
+  for (Image* image :
+       {&terms.emissive, &terms.ambient, &terms.diffuse, &terms.specular, &terms.total}) {
+    *image = Image(200, 100, glm::vec3(0.25f));
+  }
+  terms.emissive = Image(200, 100, glm::vec3(0.0f));
+  const Image sheet = term_sheet(terms);
+  const int band = term_sheet_band(100);
+  int white[4] = {0, 0, 0, 0};
+  for (int pane = 0; pane < 4; ++pane) {
+    const int ox = (pane % 2) * 200, oy = (pane / 2) * (100 + band);
+    for (int y = oy; y < oy + band; ++y) {
+      for (int x = ox; x < ox + 200; ++x) {
+        const glm::vec3 v = sheet.at(x, y);
+        if (v == glm::vec3(1.0f))
+          ++white[pane];
+        else
+          EXPECT_EQ(v, glm::vec3(0.0f)) << "strip pixels are black or white";
+      }
+    }
+  }
+  // "emissive + ambient" is the longest name: most ink. Every strip has some.
+  for (int pane = 0; pane < 4; ++pane) EXPECT_GT(white[pane], 20) << pane;
+  EXPECT_GT(white[0], white[1]);
+  EXPECT_GT(label_width("emissive + ambient", 1), label_width("total", 1));
+  // No ink in the panes themselves: 0.25 everywhere under the strips (0.25 + 0 top left).
+  EXPECT_EQ(sheet.at(100, band + 50), glm::vec3(0.25f));
 }
 
 TEST(ExportImage, ExposureIsPowersOfTwo) {

@@ -1,0 +1,68 @@
+#include "engine/frame_pool.h"
+
+#include <algorithm>
+
+namespace gloss {
+
+namespace {
+// Buffers kept: the frame on screen, the one being rendered, and the terms of a term view.
+constexpr std::size_t kKept = 12;
+}  // namespace
+
+std::shared_ptr<RenderedFrame> FramePool::make(const std::shared_ptr<FramePool>& pool, int width,
+                                               int height, bool terms) {
+  auto* frame = new RenderedFrame;
+  frame->images.total = pool->take(width, height);
+  if (terms) {
+    for (Image* image : {&frame->images.emissive, &frame->images.ambient,
+                         &frame->images.diffuse, &frame->images.specular}) {
+      *image = pool->take(width, height);
+    }
+  }
+  return std::shared_ptr<RenderedFrame>(frame, [pool](RenderedFrame* f) {
+    pool->give_back(*f);
+    delete f;
+  });
+}
+
+Image FramePool::take(int width, int height) {
+  const std::size_t size = static_cast<std::size_t>(width) * height;
+  Image image;
+  image.width = width;
+  image.height = height;
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    // The smallest buffer that holds the image (no new pages), else the largest (fewest).
+    auto best = m_buffers.end();
+    for (auto it = m_buffers.begin(); it != m_buffers.end(); ++it) {
+      const bool fits = it->capacity() >= size;
+      if (best == m_buffers.end() ||
+          (fits && (best->capacity() < size || it->capacity() < best->capacity())) ||
+          (!fits && best->capacity() < size && it->capacity() > best->capacity())) {
+        best = it;
+      }
+    }
+    if (best != m_buffers.end()) {
+      image.pixels = std::move(*best);
+      m_buffers.erase(best);
+    }
+  }
+  image.pixels.resize(size);  // no zeroing when it fits: the old values are overwritten
+  return image;
+}
+
+void FramePool::give_back(RenderedFrame& frame) {
+  std::lock_guard<std::mutex> lock(m_mutex);
+  for (Image* image : {&frame.images.total, &frame.images.emissive, &frame.images.ambient,
+                       &frame.images.diffuse, &frame.images.specular}) {
+    if (image->pixels.capacity() == 0) continue;
+    m_buffers.push_back(std::move(image->pixels));
+  }
+  if (m_buffers.size() > kKept) {  // drop the smallest
+    std::sort(m_buffers.begin(), m_buffers.end(),
+              [](const auto& a, const auto& b) { return a.capacity() > b.capacity(); });
+    m_buffers.resize(kKept);
+  }
+}
+
+}  // namespace gloss
