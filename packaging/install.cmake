@@ -9,6 +9,24 @@
 set(GLOSS_SHARE share)
 
 install(TARGETS gloss-cli RUNTIME DESTINATION bin)
+# A GLOSS_ISA_VARIANTS build (docs/engine.md, "One build for every x86-64"): libgloss_core.so
+# in PREFIX/lib/gloss/ (the baseline level) and PREFIX/lib/gloss/glibc-hwcaps/LEVEL/ (each higher
+# level, where glibc's loader looks first when the CPU runs it); the programs find it through
+# their RUNPATH, relative to bin/.
+if(GLOSS_ISA_VARIANTS)
+  list(GET GLOSS_ISA_LEVELS 0 baseline)
+  foreach(level ${GLOSS_ISA_LEVELS})
+    set(dest lib/gloss/glibc-hwcaps/${level})
+    if(level STREQUAL baseline)
+      set(dest lib/gloss)
+    endif()
+    install(TARGETS gloss_core.${level} LIBRARY DESTINATION ${dest})
+  endforeach()
+  set_target_properties(gloss-cli PROPERTIES INSTALL_RPATH "$ORIGIN/../lib/gloss")
+  if(GLOSS_BUILD_EDITOR)
+    set_target_properties(gloss PROPERTIES INSTALL_RPATH "$ORIGIN/../lib/gloss")
+  endif()
+endif()
 if(GLOSS_BUILD_EDITOR)
   install(TARGETS gloss RUNTIME DESTINATION bin)
   install(FILES ${PROJECT_SOURCE_DIR}/packaging/gloss.desktop

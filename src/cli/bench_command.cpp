@@ -17,6 +17,7 @@
 #include "base/atomic_file.h"
 #include "cli/commands.h"
 #include "io/scene_loader.h"
+#include "scene/isa_variant.h"
 
 namespace gloss {
 
@@ -69,6 +70,8 @@ void run_bench(const BenchArgs& args) {
   BenchReport report = run_benchmark(scene, args.options);
   report.peak_rss_mb = render_peak_mb;
   std::cout << format_bench_table(report);
+  // Which build of the pixel code ran: native, the baseline, or a variant the loader chose.
+  std::cout << "  pixel code: " << pixel_code_isa() << "\n";
   if (!args.json.empty()) {
     write_text_atomically(args.json, bench_to_json(report));
     std::cout << "wrote " << args.json << "\n";

@@ -2,6 +2,7 @@
 # fresh prefix, the prefix moved elsewhere (any prefix works), then the installed programs run from
 # there with GLOSS_ASSETS unset.
 # Arguments: -DBUILD=build folder -DOUT=scratch folder -DEDITOR=ON|OFF [-DVALIDATE=desktop-file-validate]
+#            [-DISA_LEVELS=x86-64-v2;x86-64-v3;... for a GLOSS_ISA_VARIANTS build]
 cmake_minimum_required(VERSION 3.20)
 file(REMOVE_RECURSE ${OUT})
 set(first ${OUT}/first-prefix)
@@ -18,6 +19,15 @@ file(RENAME ${first} ${prefix})
 set(expected bin/gloss-cli share/gloss/assets/scenes/spheres.json
              share/gloss/assets/materials/opengl-vrml.csv share/gloss/assets/models/utah-teapot.txt
              share/doc/gloss/editor.md share/doc/gloss/spec/scene-and-cli.md)
+# A GLOSS_ISA_VARIANTS build (ISA_LEVELS: its levels, baseline first): one libgloss_core.so per
+# level, the higher ones where glibc's loader looks for them.
+foreach(level IN LISTS ISA_LEVELS)
+  if(level STREQUAL "${ISA_LEVELS}" OR ISA_LEVELS MATCHES "^${level};")
+    list(APPEND expected lib/gloss/libgloss_core.so)
+  else()
+    list(APPEND expected lib/gloss/glibc-hwcaps/${level}/libgloss_core.so)
+  endif()
+endforeach()
 if(EDITOR)
   list(APPEND expected bin/gloss share/applications/gloss.desktop
                        share/icons/hicolor/256x256/apps/gloss.png)

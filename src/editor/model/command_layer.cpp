@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "scene/scene_bytes.h"
+
 namespace gloss {
 
 CommandLayer::CommandLayer(Scene scene) : m_scene(std::move(scene)) {}
@@ -18,11 +20,14 @@ bool CommandLayer::execute(const Command& command) {
     // document after it did.
     m_undo.back().label = command_label(command);
     m_undo.back().state = m_next_state++;
+    account(m_undo.back(), next);
   } else {
     m_undo.push_back({command_label(command), key, m_scene, m_next_state++});
+    account(m_undo.back(), next);
     if (m_undo.size() > kMaxSteps) m_undo.erase(m_undo.begin());
   }
   m_redo.clear();
+  drop_oldest_over_budget();
   m_scene = std::move(next);
   m_open = !key.empty();
   ++m_revision;
@@ -44,6 +49,7 @@ bool CommandLayer::undo() {
   m_undo.pop_back();
   std::swap(step.other, m_scene);
   if (step.opens) std::swap(step.other_saved, m_saved_state);
+  account(step, m_scene);
   m_redo.push_back(std::move(step));
   ++m_revision;
   return true;
@@ -56,6 +62,7 @@ bool CommandLayer::redo() {
   m_redo.pop_back();
   std::swap(step.other, m_scene);
   if (step.opens) std::swap(step.other_saved, m_saved_state);
+  account(step, m_scene);
   m_undo.push_back(std::move(step));
   ++m_revision;
   return true;
@@ -100,6 +107,38 @@ void CommandLayer::set_path(const std::string& path) {
     move_document(it->other, path);
   }
   ++m_revision;
+}
+
+}  // namespace gloss
+
+namespace gloss {
+
+namespace {
+
+std::uint64_t text_bytes(const std::string& s) {
+  return s.capacity() > std::string().capacity() ? s.capacity() + 1 : 0;
+}
+
+}  // namespace
+
+void CommandLayer::account(Step& step, const Scene& beside) {
+  // sizeof(Step) holds sizeof(Scene), which scene_bytes_without_meshes counts too.
+  step.bytes = sizeof(Step) - sizeof(Scene) + text_bytes(step.label) + text_bytes(step.key) +
+               scene_bytes_without_meshes(step.other) + unshared_mesh_bytes(step.other, beside);
+}
+
+std::uint64_t CommandLayer::history_bytes() const {
+  std::uint64_t total = 0;
+  for (const Step& step : m_undo) total += step.bytes;
+  for (const Step& step : m_redo) total += step.bytes;
+  return total;
+}
+
+void CommandLayer::drop_oldest_over_budget() {
+  std::uint64_t total = history_bytes();
+  std::size_t drop = 0;
+  while (total > kMaxHistoryBytes && m_undo.size() - drop > 1) total -= m_undo[drop++].bytes;
+  m_undo.erase(m_undo.begin(), m_undo.begin() + static_cast<std::ptrdiff_t>(drop));
 }
 
 }  // namespace gloss

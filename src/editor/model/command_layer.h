@@ -62,6 +62,14 @@ class CommandLayer {
   std::size_t redo_count() const { return m_redo.size(); }
   // Steps kept; older steps are dropped (at 500 steps a gesture-sized step is ~1 scene copy).
   static constexpr std::size_t kMaxSteps = 500;
+  // Bytes the undo and redo steps may hold (history_bytes); past it the oldest undo steps are
+  // dropped, though never the newest one. Edits share meshes, so this bounds the steps that
+  // keep replaced scenes' meshes alive (open, add model), not ordinary edits.
+  static constexpr std::uint64_t kMaxHistoryBytes = std::uint64_t(64) << 20;
+  // What the steps hold: each step's scene copy without meshes (scene/scene_bytes.h), its
+  // labels, and the meshes it alone keeps alive (not shared with the document on the other side
+  // of it when it was recorded, undone or redone).
+  std::uint64_t history_bytes() const;
 
  private:
   struct Step {
@@ -73,7 +81,11 @@ class CommandLayer {
     // For an opening step, the saved state of the document on the other side; undo and redo
     // swap it with m_saved_state.
     std::uint64_t other_saved = 0;
+    std::uint64_t bytes = 0;  // see history_bytes; set by account()
   };
+  // Sets step.bytes for a step whose other side is `beside`.
+  static void account(Step& step, const Scene& beside);
+  void drop_oldest_over_budget();
   std::uint64_t current_state() const { return m_undo.empty() ? 0 : m_undo.back().state; }
 
   Scene m_scene;

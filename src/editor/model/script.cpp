@@ -286,6 +286,8 @@ ScriptAction parse_line(Tokens& t) {
     throw std::runtime_error("quality must be measure, start, cancel or 'csv PATH', got '" + what +
                              "'");
   }
+  // Issue 14: the memory report.
+  if (verb == "memory") return MemoryAction{};
   throw std::runtime_error("unknown command '" + verb + "'");
 }
 

@@ -52,6 +52,9 @@ struct AnimateAction {
   bool on = false;
 };
 struct QuitAction {};
+// Prints the process's resident memory and what the editor can account for of it (history,
+// frames, textures; docs/editor.md, "Memory").
+struct MemoryAction {};
 // The Quality panel's measurement (quality_measurement.h) at its quick settings: measure starts it
 // on the current scene and holds the script until it ends; start does not hold; cancel stops it;
 // csv writes the rows so far as tradeoff CSV to path, atomically.
@@ -70,7 +73,7 @@ struct InspectAction {
 using ScriptAction =
     std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction, ViewAction,
                  ExposureAction, SelectAction, StatsAction, SleepAction, AnimateAction, QuitAction,
-                 QualityAction, InspectAction, ClippedOverlayAction, SnapshotAction>;
+                 QualityAction, InspectAction, ClippedOverlayAction, SnapshotAction, MemoryAction>;
 
 struct ScriptLine {
   int line = 0;  // 1-based line number in the file

@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "base/overloaded.h"
+#include "editor/model/memory_report.h"
 #include "editor/model/pixel_report.h"
 #include "reference/pixel_inspection.h"
 
@@ -108,11 +109,18 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
             [&](const SleepAction& a) { return host.sleep(a); },
             [&](const QualityAction& a) { return host.quality(a, where); },
             [&](const InspectAction& a) { return inspect(host, a, where); },
+            [&](const MemoryAction&) { return host.memory(); },
         },
         line.action);
   } catch (const CommandError& e) {
     return bad_line(where, e.what());
   }
+}
+
+LineResult ScriptHost::memory() {
+  std::printf("memory: %s\n", memory_text(layer(), ViewMemory{}).c_str());
+  std::fflush(stdout);
+  return LineResult::go_on();
 }
 
 }  // namespace gloss

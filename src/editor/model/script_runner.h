@@ -44,6 +44,9 @@ class ScriptHost {
   virtual LineResult stats() = 0;
   virtual LineResult sleep(const SleepAction& action) = 0;
   virtual LineResult quality(const QualityAction& action, const std::string& where) = 0;
+  // Prints the `memory` line (memory_report.h) on stdout; this default knows no window (frames,
+  // textures and swatches read 0).
+  virtual LineResult memory();
 
   // The snapshot `snapshot` takes and `view ab snapshot` compares with. Kept here by default
   // (headless runs, tests); the editor keeps it in its App so the panel's button shares it.

@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "base/error.h"
+#include "base/process_memory.h"
 #include "editor/model/camera_controller.h"
 #include "editor/model/config_paths.h"
 #include "editor/ui/script_player.h"
@@ -296,6 +297,13 @@ void run_frame(App& app) {
   }
   app.viewport.sync(app.commands.scene(), app.commands.revision(), app.view,
                     app.snapshot ? &*app.snapshot : nullptr, frame_start);
+  // Once an edit's image has converged and is on screen the editor idles: the memory its passes
+  // freed goes back to the system (a few ms, once per converged image).
+  if (app.viewport.uploads() != app.released_at_upload &&
+      app.viewport.converged_and_shown(app.commands.revision(), app.view)) {
+    release_free_memory();
+    app.released_at_upload = app.viewport.uploads();
+  }
   if (app.autosaver) {
     // A failure is announced once when it appears or changes; the status bar keeps it on screen
     // (autosave_notice) until a write succeeds.

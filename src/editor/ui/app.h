@@ -119,8 +119,9 @@ struct App {
   double background_checked_s = -1.0;
   InspectorState inspector;
 
-  std::string title;          // the window title last set
-  double last_frame_s = 0.0;  // start of the previous frame (orbit-light animation step)
+  std::string title;                     // the window title last set
+  double last_frame_s = 0.0;             // start of the previous frame (orbit-light animation step)
+  std::uint64_t released_at_upload = 0;  // viewport.uploads() when free memory was last released
   bool show_help = false;
   bool show_about = false;
   bool show_quality = false;  // the Quality window

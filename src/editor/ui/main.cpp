@@ -15,6 +15,7 @@
 
 #include "base/assets.h"
 #include "base/error.h"
+#include "base/process_memory.h"
 #include "editor/model/config_paths.h"
 #include "editor/model/document.h"
 #include "editor/model/headless.h"
@@ -50,6 +51,7 @@ gloss::Scene load_start_scene(const Options& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  gloss::limit_allocator_retention();  // before any thread (renderers, llvmpipe) starts
   using namespace gloss;
   // ---- Setup: options, document, script -----------------------------------------------------
   Options options;

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "base/error.h"
+#include "editor/model/memory_report.h"
 #include "editor/model/quality_measurement.h"
 #include "editor/model/script_runner.h"
 #include "editor/ui/app.h"
@@ -99,6 +100,13 @@ class ScriptPlayer::Host : public ScriptHost {
     std::printf("stats: %s\n", stats_text(m_app).c_str());
     std::fflush(stdout);
     m_app.frame_times = FrameTimes{};
+    return LineResult::go_on();
+  }
+  LineResult memory() override {
+    const ViewMemory view{m_app.viewport.frame_bytes(), m_app.viewport.texture_bytes(),
+                          m_app.swatches.texture_bytes()};
+    std::printf("memory: %s\n", memory_text(m_app.commands, view).c_str());
+    std::fflush(stdout);
     return LineResult::go_on();
   }
   LineResult sleep(const SleepAction& a) override {

@@ -21,6 +21,8 @@ class Swatches {
   GLuint texture(std::size_t preset) const;
   // Why the swatches failed, or empty.
   const std::string& error() const { return m_error; }
+  // Bytes of the swatch textures (RGB8).
+  std::size_t texture_bytes() const { return m_textures.size() * kSize * kSize * 3; }
 
  private:
   std::future<std::vector<std::vector<unsigned char>>> m_job;  // RGB8, kSize^2 * 3 each

@@ -134,6 +134,13 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
   scene.render.width = width;
   scene.render.height = height;
   if (terms != m_pushed_terms || !m_pushed_any) m_a->set_terms(terms);
+  if (!terms) {
+    // Textures the view no longer shows: llvmpipe keeps each in RAM (12 B per pixel).
+    m_emissive = GlTexture();
+    m_ambient = GlTexture();
+    m_diffuse = GlTexture();
+    m_specular = GlTexture();
+  }
   if (ab) {
     if (!m_b) {
       ProgressiveOptions options;
@@ -151,6 +158,7 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
   } else {
     m_b.reset();  // cancels and joins its worker
     m_frame_b.reset();
+    m_b_total = GlTexture();
     m_image_b.reset();
     m_a->set_scene(scene);
   }
@@ -355,6 +363,47 @@ void Viewport::draw_legend(const ViewSettings& view, ImDrawList* list, const Pan
 }  // namespace gloss
 
 namespace gloss {
+
+namespace {
+
+std::uint64_t image_bytes(const Image& image) {
+  return image.pixels.size() * sizeof(glm::vec3);
+}
+
+std::uint64_t frame_images_bytes(const RenderedFrame* frame) {
+  if (frame == nullptr) return 0;
+  const TermImages& t = frame->images;
+  return image_bytes(t.emissive) + image_bytes(t.ambient) + image_bytes(t.diffuse) +
+         image_bytes(t.specular) + image_bytes(t.total);
+}
+
+// RGB32F: 12 bytes per texel as uploaded (the driver may pad).
+std::uint64_t float_texture_bytes(const GlTexture& t) {
+  return t.empty() ? 0 : static_cast<std::uint64_t>(t.width()) * t.height() * 12;
+}
+
+}  // namespace
+
+std::uint64_t Viewport::frame_bytes() const {
+  // The newest frames and the newest with a total image; each frame counted once.
+  const RenderedFrame* held[] = {m_frame_a.get(), m_frame_b.get(), m_image_a.get(),
+                                 m_image_b.get()};
+  std::uint64_t total = 0;
+  for (int i = 0; i < 4; ++i) {
+    if (std::find(held, held + i, held[i]) == held + i) total += frame_images_bytes(held[i]);
+  }
+  return total;
+}
+
+std::uint64_t Viewport::texture_bytes() const {
+  std::uint64_t total = 0;
+  for (const GlTexture* t :
+       {&m_total, &m_emissive, &m_ambient, &m_diffuse, &m_specular, &m_b_total}) {
+    total += float_texture_bytes(*t);
+  }
+  // The off-screen target the panes are drawn into: RGBA8.
+  return total + static_cast<std::uint64_t>(m_target.width()) * m_target.height() * 4;
+}
 
 ExposureHistogram Viewport::histogram(const ViewSettings& view, bool srgb, bool exact) {
   const bool live_is_b = view.mode == ViewMode::ab && view.ab_source == AbSource::snapshot;

@@ -65,6 +65,12 @@ class Viewport {
   const RenderedFrame* shown_frame() const { return m_frame_a.get(); }
   const LatencyProbe& latency() const { return m_latency; }
   float max_difference() const { return m_max_difference; }
+  // Counts texture uploads: a new value means a new image reached the screen.
+  std::uint64_t uploads() const { return m_uploads; }
+  // Bytes of the published frames the viewport holds and of its GL textures (llvmpipe keeps
+  // textures in RAM; a GPU driver keeps them in video memory), for the `memory` script line.
+  std::uint64_t frame_bytes() const;
+  std::uint64_t texture_bytes() const;
 
   // The histogram of the live image as shown (the total, or the single term shown; in the
   // snapshot A/B the live B side), recomputed only when that image or the display changed.

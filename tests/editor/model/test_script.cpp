@@ -116,14 +116,30 @@ class RecordingHost : public ScriptHost {
   LineResult quality(const QualityAction&, const std::string&) override {
     return LineResult::go_on();
   }
+  LineResult memory() override {
+    ++memory_reports;
+    return LineResult::go_on();
+  }
 
   int waits = 0;
+  int memory_reports = 0;
   int selected = -1;
 
  private:
   CommandLayer m_layer;
   ViewSettings m_view;
 };
+
+// Runs every line of text on host; returns what the last line left to do and its stderr.
+LineResult run_all(const std::string& text, RecordingHost& host, std::string& errors);
+
+TEST(Script, MemoryIsHandedToTheHostAndTakesNoArgument) {
+  RecordingHost host(test::two_sphere_scene());
+  std::string errors;
+  EXPECT_EQ(run_all("memory\nmemory\n", host, errors).next, LineResult::Next::go_on);
+  EXPECT_EQ(host.memory_reports, 2);
+  EXPECT_THROW(parse_script("memory now\n", "m.txt"), InputError);
+}
 
 // Runs every line of text on host; returns what the last line left to do and its stderr.
 LineResult run_all(const std::string& text, RecordingHost& host, std::string& errors) {
