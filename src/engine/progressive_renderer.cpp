@@ -59,6 +59,7 @@ struct ProgressiveRenderer::Impl {
   PixelFactors factors;
   std::shared_ptr<FramePool> frame_pool = std::make_shared<FramePool>();
   int level = 0;  // 0 .. preview_levels - 1: coarse passes; preview_levels: full
+  double last_full_pass_ms = -1;  // the last full-resolution 1-spp pass (preview_budget_ms)
   ChangeClass dirty = ChangeClass::none;
   int pass = 0;
   std::uint64_t worker_generation = 0;
@@ -172,7 +173,13 @@ bool ProgressiveRenderer::Impl::step() {
     start_level(options.preview_levels > 0 ? 0 : options.preview_levels);
   } else if (next_level) {
     previous = std::move(cache);
-    start_level(level + 1);
+    const bool skip = last_full_pass_ms >= 0 && last_full_pass_ms <= options.preview_budget_ms;
+    // Its spare planes and refined buffers hold no data: the new image takes them now, its
+    // planes in use once the new image is complete (reclaim_planes below).
+    cache.spare = std::move(previous.spare);
+    previous.spare.clear();
+    cache.refined.plane = std::move(previous.refined.plane);
+    start_level(skip ? options.preview_levels : level + 1);
   }
   const std::shared_ptr<RenderedFrame> frame =
       FramePool::make(frame_pool, cache.width, cache.height, worker_terms);
@@ -223,7 +230,9 @@ bool ProgressiveRenderer::Impl::step() {
   }
   dirty = ChangeClass::none;
   if (!total_done || total == nullptr) combine_terms(factors, ctx, frame->images, worker_terms);
-  publish(frame, ms_between(start, Clock::now()), rays.load(), converged_state());
+  const double pass_ms = ms_between(start, Clock::now());
+  if ((restart || next_level) && level == options.preview_levels) last_full_pass_ms = pass_ms;
+  publish(frame, pass_ms, rays.load(), converged_state());
   return true;
 }
 

@@ -37,6 +37,10 @@ struct RenderedFrame {
 struct ProgressiveOptions {
   bool terms = true;       // publish the four term images as well as the total
   int preview_levels = 3;  // coarse passes before full resolution: 1/8, 1/4, 1/2
+  // When the last full-resolution 1-spp pass took at most this long, the image goes from the
+  // coarsest preview straight to full resolution: the finer previews would only delay it.
+  // 0: always every preview.
+  double preview_budget_ms = 25.0;
 };
 
 class ProgressiveRenderer {

@@ -107,6 +107,32 @@ TEST(ProgressiveRenderer, TotalOnlyFramesEachCarryTheirTotal) {
   EXPECT_LE(max_abs_diff(frame->images.total, render(scene, fresh_options).total), 1e-6);
 }
 
+// The widths of the frames published for a camera change after a first convergence.
+std::vector<int> widths_after_camera_change(double preview_budget_ms) {
+  std::vector<int> widths;
+  std::mutex mutex;
+  ProgressiveOptions options;
+  options.preview_budget_ms = preview_budget_ms;
+  ProgressiveRenderer engine(options);  // destroyed first: its callback uses the two above
+  Scene scene = test::sphere_on_floor_scene();
+  converge(engine, scene);  // measures the full-resolution pass
+  engine.set_on_publish([&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    widths.push_back(engine.latest()->info.width);
+  });
+  scene.camera.eye = {1, 2, 4};
+  converge(engine, scene);
+  engine.set_on_publish(nullptr);
+  std::lock_guard<std::mutex> lock(mutex);
+  return widths;
+}
+
+TEST(ProgressiveRenderer, AFastFullPassSkipsTheFinerPreviews) {
+  // 80 x 60 at 4 spp, adaptive: the full pass takes well under a day, never under 0 ms.
+  EXPECT_EQ(widths_after_camera_change(86400e3), (std::vector<int>{10, 80, 80}));
+  EXPECT_EQ(widths_after_camera_change(0.0), (std::vector<int>{10, 20, 40, 80, 80}));
+}
+
 TEST(ProgressiveRenderer, MaterialConstantEditReshadesWithoutRaysAndMatchesFreshRender) {
   ProgressiveRenderer engine;
   Scene scene = test::sphere_on_floor_scene();
