@@ -207,12 +207,16 @@ long long packet_light(const SamplePacket& packet, const SurfaceLanes& surfaces,
   long long rays = 0;
   if (ctx.plan.shadow_rays) {
     RTCRay16 ray;
-    for (int i = 0; i < kLanes; ++i) {
-      const Surface s = surfaces.get(i);
-      const glm::vec3 org = shadow_ray_origin(s, packet.t[i]);
+    for (int i = 0; i < kLanes; ++i) {  // vector code: no call, no branch
+      const glm::vec3 org = shadow_ray_origin(surfaces.get(i), packet.t[i]);
       set_packet_ray(ray, i, org, light.position - org, kShadowRayEnd);
-      // Only spheres can find their own origin (self_shadow.h); set_packet_ray left "none".
-      if (ctx.plan.spheres) ray.id[i] = shadow_ray_id(*ctx.scene, packet.object[i], s);
+    }
+    // Only spheres can find their own origin (self_shadow.h); set_packet_ray left "none". A
+    // loop of its own: the call inside the loop above kept it scalar (retrace 12.8 -> 14.2 ms).
+    if (ctx.plan.spheres) {
+      for (int i = 0; i < kLanes; ++i) {
+        ray.id[i] = shadow_ray_id(*ctx.scene, packet.object[i], surfaces.get(i));
+      }
     }
     rays = count_set_lanes(lit);
     RTCIntersectContext context = coherent_context();
