@@ -7,6 +7,8 @@
 //     shadow edges and the terminator, where Phong's specular lobe is cut off;
 //   - differs in the total (linear, unclamped: the values images and metrics hold) by more
 //     than `threshold` in some channel: highlights, flat-shaded facets, steep gradients.
+//   - is itself where the total curves: its 4-neighbour Laplacian exceeds threshold / 10 in some
+//     channel (the tip of a highlight narrower than the step test sees).
 // Pixels on the image border are always refined: beyond them lies no centre to compare with,
 // and an edge just outside the last row of centres (a floor ending at the bottom of the frame)
 // would otherwise go unseen.

@@ -72,13 +72,24 @@ TEST(AdaptiveRefinement, AColourStepRefinesBothSidesOnlyAboveTheThreshold) {
   for (int y = 0; y < 4; ++y) {
     for (int x = 3; x < 6; ++x) img.total.pixels[img.at(x, y)] = glm::vec3(0.5f, 0.8f, 0.5f);
   }
-  EXPECT_EQ(img.refined(0.29f), pixel_list({{2, 1}, {3, 1}, {2, 2}, {3, 2}}, 6));
-  EXPECT_TRUE(img.refined(0.31f).empty());
+  const std::vector<std::uint32_t> step = pixel_list({{2, 1}, {3, 1}, {2, 2}, {3, 2}}, 6);
+  EXPECT_EQ(img.refined(0.29f), step);
+  // Above 0.3 only the curvature test sees it: Laplacian +-0.3 on the two sides, above t / 10.
+  EXPECT_EQ(img.refined(2.99f), step);
+  EXPECT_TRUE(img.refined(3.01f).empty());
   // Linear values, unclamped: 1 and 1.5 differ although a display shows both as white.
   img.total.pixels.assign(img.total.pixels.size(), glm::vec3(1.0f));
   img.total.pixels[img.at(2, 2)] = glm::vec3(1.5f);
   EXPECT_EQ(img.refined(0.49f).size(), 6u);  // its 3 x 3 block less the border row 3
-  EXPECT_TRUE(img.refined(0.51f).empty());
+}
+
+TEST(AdaptiveRefinement, APeakBelowTheStepThresholdIsRefinedWhereItCurves) {
+  HandImage img(6, 4, 0);
+  img.total.pixels[img.at(2, 2)] = glm::vec3(0.5f, 0.51f, 0.5f);  // steps of 0.01 only
+  EXPECT_TRUE(img.refined(0.5f).empty());  // Laplacian 0.04 at the peak, 0.01 beside it
+  // t / 10 = 0.005: the peak and its side neighbours (not (2, 3), a border pixel anyway).
+  EXPECT_EQ(img.refined(0.05f), pixel_list({{2, 1}, {1, 2}, {2, 2}, {3, 2}}, 6));
+  EXPECT_EQ(img.refined(0.125f), pixel_list({{2, 2}}, 6));  // 0.0125: the peak only
 }
 
 TEST(AdaptiveRefinement, AShadowEdgeRefinesEvenWhereTheColourHidesIt) {
