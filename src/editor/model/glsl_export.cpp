@@ -96,10 +96,11 @@ std::string export_glsl(const Scene& scene, int material) {
     s += light_array(scene, "gloss_light_attenuation", "attenuation (c0, c1, c2)",
                      &PointLight::attenuation);
   }
-  s += "\n// Visibility of light i from p: 1 lit, 0 shadowed. ";
-  s += scene.render.shadows ? "The scene has shadows on (render.shadows); this shader has no\n"
-                              "// shadow test: replace the body with your shadow-map lookup.\n"
-                            : "The scene has shadows off (render.shadows).\n";
+  s += "\n// Visibility of light i from p: 1 lit, 0 shadowed.\n";
+  s += scene.render.shadows
+           ? "// The scene has shadows on (render.shadows); this shader has no shadow\n"
+             "// test: replace the body with your shadow-map lookup.\n"
+           : "// The scene has shadows off (render.shadows).\n";
   s += "float gloss_visibility(int light, vec3 p, vec3 n_g) {\n  return 1.0;\n}\n\n";
   s += "// ---- shaders/phong_contract.glsl ----\n";
   s += kPhongContractGlsl;

@@ -252,12 +252,37 @@ TEST_P(GlslExport, AgreesWithTheReferenceOnEveryTerm) {
   }
 }
 
+class GlslExportNoLights : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!m_context.ok()) GTEST_SKIP() << "no EGL surfaceless GL: " << m_context.error();
+  }
+  test::EglContext m_context;
+};
+
 INSTANTIATE_TEST_SUITE_P(
     Scenes, GlslExport,
     ::testing::Values(Case{"phong_alpha10", ShadingModel::phong, false, 10.0f},
                       Case{"blinn_energy_alpha200", ShadingModel::blinn_phong, true, 200.0f},
                       Case{"phong_alpha0", ShadingModel::phong, false, 0.0f}),
     [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
+
+// Without lights the shader still compiles (no zero-size arrays) and gives ke + ka A_scene.
+TEST_F(GlslExportNoLights, CompilesAndGivesEmissivePlusAmbient) {
+  Scene scene = agreement_scene(ShadingModel::phong, false, 10.0f);
+  scene.lights.clear();
+  std::string log;
+  const Agreement a = measure(scene, export_glsl(scene, 0), log);
+  ASSERT_TRUE(log.empty()) << log;
+  for (int i = 0; i < kTerms; ++i) EXPECT_GE(a.share[i], 0.995) << kTermNames[i];
+  const std::vector<std::vector<float>> gl = render_with_shader(scene, export_glsl(scene, 0), log);
+  ASSERT_FALSE(gl.empty());
+  // The centre pixel (80, 60) is on the sphere: (0.01, 0, 0) + (0.1, 0.2, 0.3) * 0.2, by hand.
+  const std::size_t centre = 4 * (60 * 160 + 80);
+  EXPECT_NEAR(gl[0][centre + 0], 0.03, 1e-6);
+  EXPECT_NEAR(gl[0][centre + 1], 0.04, 1e-6);
+  EXPECT_NEAR(gl[0][centre + 2], 0.06, 1e-6);
+}
 
 // Planted errors in a copy of the exported source: each must break the 99.5 % agreement on the
 // total, or the check above could not fail.
