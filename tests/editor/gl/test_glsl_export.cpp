@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include <EGL/egl.h>
 #include <glad/gl.h>
 
 #include "editor/gl/egl_context.h"
@@ -282,6 +283,55 @@ TEST_F(GlslExportNoLights, CompilesAndGivesEmissivePlusAmbient) {
   EXPECT_NEAR(gl[0][centre + 0], 0.03, 1e-6);
   EXPECT_NEAR(gl[0][centre + 1], 0.04, 1e-6);
   EXPECT_NEAR(gl[0][centre + 2], 0.06, 1e-6);
+}
+
+// GLSL ES 3.00 (WebGL 2's language): the export with only its version line changed compiles in
+// an OpenGL ES 3 context, as its header promises. glad's entry points, loaded for the GL context,
+// are Mesa's dispatch stubs and serve whichever context is current.
+TEST_F(GlslExportNoLights, CompilesAsGlslEs300WithOnlyTheVersionLineChanged) {
+  EGLDisplay display = eglGetCurrentDisplay();
+  EGLContext gl_context = eglGetCurrentContext();
+  const EGLint config_attributes[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE,
+                                      EGL_OPENGL_ES3_BIT, EGL_NONE};
+  EGLConfig config = nullptr;
+  EGLint count = 0;
+  if (!eglBindAPI(EGL_OPENGL_ES_API) ||
+      !eglChooseConfig(display, config_attributes, &config, 1, &count) || count < 1) {
+    eglBindAPI(EGL_OPENGL_API);
+    GTEST_SKIP() << "no EGL config for OpenGL ES 3";
+  }
+  const EGLint context_attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 0,
+                                       EGL_NONE};
+  EGLContext es = eglCreateContext(display, config, EGL_NO_CONTEXT, context_attributes);
+  ASSERT_NE(es, EGL_NO_CONTEXT);
+  ASSERT_TRUE(eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, es));
+  EXPECT_EQ(
+      std::string(reinterpret_cast<const char*>(glGetString(GL_VERSION))).rfind("OpenGL ES", 0),
+      0u);
+  for (const bool with_lights : {true, false}) {
+    Scene scene = agreement_scene(ShadingModel::blinn_phong, true, 20.0f);
+    if (!with_lights) scene.lights.clear();
+    std::string source = export_glsl(scene, 0);
+    const std::string core = "#version 330 core\n";
+    ASSERT_EQ(source.rfind(core, 0), 0u);
+    source.replace(0, core.size(), "#version 300 es\n");
+    std::string log;
+    const GLuint shader = compile(GL_FRAGMENT_SHADER, source, log);
+    EXPECT_TRUE(log.empty()) << (with_lights ? "with lights: " : "without lights: ") << log;
+    glDeleteShader(shader);
+    // The check can fail: ES fragment shaders have no default float precision, so the same
+    // source without the export's precision line must not compile.
+    const std::string precision = "precision highp float;\n";
+    const std::size_t at = source.find(precision);
+    ASSERT_NE(at, std::string::npos);
+    source.erase(at, precision.size());
+    std::string planted_log;
+    glDeleteShader(compile(GL_FRAGMENT_SHADER, source, planted_log));
+    EXPECT_FALSE(planted_log.empty()) << "an ES shader without float precision compiled";
+  }
+  eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, gl_context);
+  eglDestroyContext(display, es);
+  eglBindAPI(EGL_OPENGL_API);
 }
 
 // Planted errors in a copy of the exported source: each must break the 99.5 % agreement on the
