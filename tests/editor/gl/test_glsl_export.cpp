@@ -12,6 +12,8 @@
 
 #include <EGL/egl.h>
 #include <glad/gl.h>
+#include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include "editor/gl/egl_context.h"
 #include "editor/model/glsl_export.h"
@@ -72,29 +74,49 @@ Scene agreement_scene(ShadingModel model, bool energy, float alpha) {
   return scene;
 }
 
-// Renders scene's only sphere with fragment_source; returns the five images (total first) as
-// RGBA floats, rows top to bottom, misses left at the background. Empty with a message in log
-// when the program does not build.
-std::vector<std::vector<float>> render_with_shader(const Scene& scene,
-                                                   const std::string& fragment_source,
-                                                   std::string& log) {
+// The host's per-pixel geometry, in double: the camera formula of scene/camera.h at each pixel
+// centre, then the hit nearest the eye on objects[0], which is the head-on sphere (its exact
+// normal) or a flat quad (the normal of its first triangle as wound, which may face away: the
+// shader's two-sided rule has to flip it). One vertex per covered pixel: ndc.xy, p.xyz, n.xyz.
+std::vector<float> host_hits(const Scene& scene) {
   const int w = scene.render.width, h = scene.render.height;
-  const Object& sphere = scene.objects.at(0);
-  // The host's per-pixel geometry, in double: the camera formula of scene/camera.h at the pixel
-  // centre, then the ray-sphere hit nearest the eye and the sphere's exact normal there.
+  const Object& object = scene.objects.at(0);
   const CameraBasis<double> basis = make_camera_basis<double>(scene.camera, w, h);
-  const glm::dvec3 c(sphere.center);
-  const double r = sphere.radius;
-  std::vector<float> vertices;  // ndc.xy, p.xyz, n.xyz per covered pixel
+  std::vector<float> vertices;
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       const glm::dvec3 d = camera_direction<double>(basis, x + 0.5, y + 0.5, w, h);
-      const glm::dvec3 oc = basis.eye - c;
-      const double b = glm::dot(oc, d), disc = b * b - (glm::dot(oc, oc) - r * r);
-      if (disc < 0.0) continue;
-      const double t = -b - std::sqrt(disc);
-      if (t <= 0.0) continue;
-      const glm::dvec3 p = basis.eye + t * d, n = (p - c) / r;
+      glm::dvec3 p, n;
+      if (object.type == ObjectType::sphere) {
+        const glm::dvec3 c(object.center);
+        const double r = object.radius;
+        const glm::dvec3 oc = basis.eye - c;
+        const double b = glm::dot(oc, d), disc = b * b - (glm::dot(oc, oc) - r * r);
+        if (disc < 0.0) continue;
+        const double t = -b - std::sqrt(disc);
+        if (t <= 0.0) continue;
+        p = basis.eye + t * d;
+        n = (p - c) / r;
+      } else {  // a planar quad, axis-aligned corners (the test scenes')
+        const Mesh& mesh = *object.mesh;
+        const glm::dvec3 a(mesh.positions[mesh.triangles[0].x]),
+            b(mesh.positions[mesh.triangles[0].y]), c(mesh.positions[mesh.triangles[0].z]);
+        n = glm::normalize(glm::cross(b - a, c - a));
+        const double denominator = glm::dot(d, n);
+        if (denominator == 0.0) continue;
+        const double t = glm::dot(a - basis.eye, n) / denominator;
+        if (t <= 0.0) continue;
+        p = basis.eye + t * d;
+        glm::dvec3 lo(object.params.quad[0]), hi = lo;
+        for (const glm::vec3& corner : object.params.quad) {
+          lo = glm::min(lo, glm::dvec3(corner));
+          hi = glm::max(hi, glm::dvec3(corner));
+        }
+        const double slack = 1e-9;
+        if (glm::any(glm::lessThan(p, lo - slack)) || glm::any(glm::greaterThan(p, hi + slack))) {
+          continue;
+        }
+      }
       const float row[8] = {float(2.0 * (x + 0.5) / w - 1.0),
                             float(1.0 - 2.0 * (y + 0.5) / h),
                             float(p.x),
@@ -106,6 +128,27 @@ std::vector<std::vector<float>> render_with_shader(const Scene& scene,
       vertices.insert(vertices.end(), row, row + 8);
     }
   }
+  return vertices;
+}
+
+// A flat quad in the plane z = 0 wound so that its normal points away from the eye (-z), lit by
+// the same two lights from the eye's side: only the two-sided rule makes it lit.
+Scene back_quad_scene() {
+  Scene scene = agreement_scene(ShadingModel::phong, false, 30.0f);
+  scene.objects.clear();
+  test::add_quad(scene, {-1.3f, -1.1f, 0.0f}, {-1.3f, 1.1f, 0.0f}, {1.3f, 1.1f, 0.0f},
+                 {1.3f, -1.1f, 0.0f}, 0);
+  return scene;
+}
+
+// Renders objects[0] of scene with fragment_source at host_hits' points; returns the five images
+// (total first) as RGBA floats, rows top to bottom, misses left at the background. Empty with a
+// message in log when the program does not build.
+std::vector<std::vector<float>> render_with_shader(const Scene& scene,
+                                                   const std::string& fragment_source,
+                                                   std::string& log) {
+  const int w = scene.render.width, h = scene.render.height;
+  const std::vector<float> vertices = host_hits(scene);
 
   const GLuint vs = compile(GL_VERTEX_SHADER, kPointVertexShader, log);
   const GLuint fs = compile(GL_FRAGMENT_SHADER, fragment_source, log);
@@ -253,7 +296,8 @@ TEST_P(GlslExport, AgreesWithTheReferenceOnEveryTerm) {
   }
 }
 
-class GlslExportNoLights : public ::testing::Test {
+// Single cases that need a GL context: no lights, the back-facing quad, GLSL ES.
+class GlslExportCases : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!m_context.ok()) GTEST_SKIP() << "no EGL surfaceless GL: " << m_context.error();
@@ -268,8 +312,26 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"phong_alpha0", ShadingModel::phong, false, 0.0f}),
     [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
 
+// The two-sided rule: a quad whose normal faces away from the eye is shaded on its visible side.
+TEST_F(GlslExportCases, BackFacingQuadAgreesThroughTheTwoSidedRule) {
+  const Scene scene = back_quad_scene();
+  ASSERT_LT(glm::dot(glm::cross(scene.objects[0].params.quad[1] - scene.objects[0].params.quad[0],
+                                scene.objects[0].params.quad[2] - scene.objects[0].params.quad[0]),
+                     scene.camera.eye),
+            0.0f)
+      << "the quad's winding must face away from the eye";
+  std::string log;
+  const Agreement a = measure(scene, export_glsl(scene, 0), log);
+  ASSERT_TRUE(log.empty()) << log;
+  for (int i = 0; i < kTerms; ++i) {
+    std::printf("[glsl-agreement] back_quad %s: %.4f%% within 1e-3, largest difference %.3g\n",
+                kTermNames[i], 100.0 * a.share[i], a.largest[i]);
+    EXPECT_GE(a.share[i], 0.995) << kTermNames[i];
+  }
+}
+
 // Without lights the shader still compiles (no zero-size arrays) and gives ke + ka A_scene.
-TEST_F(GlslExportNoLights, CompilesAndGivesEmissivePlusAmbient) {
+TEST_F(GlslExportCases, CompilesAndGivesEmissivePlusAmbient) {
   Scene scene = agreement_scene(ShadingModel::phong, false, 10.0f);
   scene.lights.clear();
   std::string log;
@@ -288,7 +350,7 @@ TEST_F(GlslExportNoLights, CompilesAndGivesEmissivePlusAmbient) {
 // GLSL ES 3.00 (WebGL 2's language): the export with only its version line changed compiles in
 // an OpenGL ES 3 context, as its header promises. glad's entry points, loaded for the GL context,
 // are Mesa's dispatch stubs and serve whichever context is current.
-TEST_F(GlslExportNoLights, CompilesAsGlslEs300WithOnlyTheVersionLineChanged) {
+TEST_F(GlslExportCases, CompilesAsGlslEs300WithOnlyTheVersionLineChanged) {
   EGLDisplay display = eglGetCurrentDisplay();
   EGLContext gl_context = eglGetCurrentContext();
   const EGLint config_attributes[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE,
@@ -340,6 +402,7 @@ struct Plant {
   const char* name;
   const char* from;
   const char* to;
+  bool back_quad = false;  // the back-facing quad instead of the head-on sphere
 };
 
 class GlslPlantedError : public ::testing::TestWithParam<Plant> {
@@ -352,7 +415,8 @@ class GlslPlantedError : public ::testing::TestWithParam<Plant> {
 
 TEST_P(GlslPlantedError, FailsTheAgreementCheck) {
   const Plant plant = GetParam();
-  const Scene scene = agreement_scene(ShadingModel::phong, false, 10.0f);
+  const Scene scene =
+      plant.back_quad ? back_quad_scene() : agreement_scene(ShadingModel::phong, false, 10.0f);
   std::string source = export_glsl(scene, 0);
   const std::size_t at = source.find(plant.from);
   ASSERT_NE(at, std::string::npos) << "the exported shader no longer contains " << plant.from;
@@ -372,7 +436,8 @@ INSTANTIATE_TEST_SUITE_P(
               "float c = f.cos_blinn;"},
         Plant{"attenuation_dropped", "float att = gloss_attenuation(attenuation_coeffs, d);",
               "float att = 1.0;"},
-        Plant{"ambient_light_sum_dropped", "ambient_light += gloss_light_ambient[i];", ""}),
+        Plant{"ambient_light_sum_dropped", "ambient_light += gloss_light_ambient[i];", ""},
+        Plant{"two_sided_rule_dropped", "gloss_two_sided(n_g, n, v);", "", true}),
     [](const ::testing::TestParamInfo<Plant>& info) { return std::string(info.param.name); });
 
 }  // namespace
