@@ -1,5 +1,5 @@
 // Export GLSL (editor/model/glsl_export.h) run through GL 3.3 core without a display: the
-// exported fragment shader, fed the head-on sphere's exact hit points and normals per pixel,
+// exported fragment shader, fed exact hit points and normals per pixel (glsl_harness.h),
 // against the double-precision reference renderer of the same scene at one sample per pixel.
 // docs/spec/shading.md ("A raster (GLSL) path", issue 12): with shadows off, at least 99.5 % of
 // pixels within 1e-3 on every term. A planted shader error must fail the same check.
@@ -13,48 +13,21 @@
 #include <EGL/egl.h>
 #include <glad/gl.h>
 #include <glm/geometric.hpp>
-#include <glm/vector_relational.hpp>
 
 #include "editor/gl/egl_context.h"
+#include "editor/gl/glsl_harness.h"
 #include "editor/model/glsl_export.h"
-#include "reference/reference_renderer.h"
-#include "scene/camera.h"
 #include "support/scene_fixtures.h"
 
 namespace gloss {
 namespace {
 
-// One point per covered pixel, at the pixel's centre, carrying that pixel's hit point and normal;
-// the exported shader does the rest. Points of size 1 at pixel centres cover exactly their pixel.
-const char* const kPointVertexShader = R"glsl(#version 330 core
-layout(location = 0) in vec2 pixel_ndc;
-layout(location = 1) in vec3 hit_position;
-layout(location = 2) in vec3 hit_normal;
-out vec3 gloss_position;
-out vec3 gloss_normal;
-void main() {
-  gloss_position = hit_position;
-  gloss_normal = hit_normal;
-  gl_Position = vec4(pixel_ndc, 0.0, 1.0);
-}
-)glsl";
-
-constexpr int kTerms = 5;  // total, emissive, ambient, diffuse, specular (the export's outputs)
-
-GLuint compile(GLenum type, const std::string& source, std::string& log) {
-  const GLuint shader = glCreateShader(type);
-  const char* text = source.c_str();
-  glShaderSource(shader, 1, &text, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char buffer[4096] = {};
-    glGetShaderInfoLog(shader, sizeof buffer, nullptr, buffer);
-    log += buffer;
-  }
-  return shader;
-}
+using test::Agreement;
+using test::compile_shader;
+using test::kGlslTermNames;
+using test::kGlslTerms;
+using test::measure_agreement;
+using test::render_exported;
 
 // The scene of the test: the fixtures' head-on sphere (attenuated light with La) plus a second,
 // coloured light from the left with its own attenuation; shadows off.
@@ -74,63 +47,6 @@ Scene agreement_scene(ShadingModel model, bool energy, float alpha) {
   return scene;
 }
 
-// The host's per-pixel geometry, in double: the camera formula of scene/camera.h at each pixel
-// centre, then the hit nearest the eye on objects[0], which is the head-on sphere (its exact
-// normal) or a flat quad (the normal of its first triangle as wound, which may face away: the
-// shader's two-sided rule has to flip it). One vertex per covered pixel: ndc.xy, p.xyz, n.xyz.
-std::vector<float> host_hits(const Scene& scene) {
-  const int w = scene.render.width, h = scene.render.height;
-  const Object& object = scene.objects.at(0);
-  const CameraBasis<double> basis = make_camera_basis<double>(scene.camera, w, h);
-  std::vector<float> vertices;
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const glm::dvec3 d = camera_direction<double>(basis, x + 0.5, y + 0.5, w, h);
-      glm::dvec3 p, n;
-      if (object.type == ObjectType::sphere) {
-        const glm::dvec3 c(object.center);
-        const double r = object.radius;
-        const glm::dvec3 oc = basis.eye - c;
-        const double b = glm::dot(oc, d), disc = b * b - (glm::dot(oc, oc) - r * r);
-        if (disc < 0.0) continue;
-        const double t = -b - std::sqrt(disc);
-        if (t <= 0.0) continue;
-        p = basis.eye + t * d;
-        n = (p - c) / r;
-      } else {  // a planar quad, axis-aligned corners (the test scenes')
-        const Mesh& mesh = *object.mesh;
-        const glm::dvec3 a(mesh.positions[mesh.triangles[0].x]),
-            b(mesh.positions[mesh.triangles[0].y]), c(mesh.positions[mesh.triangles[0].z]);
-        n = glm::normalize(glm::cross(b - a, c - a));
-        const double denominator = glm::dot(d, n);
-        if (denominator == 0.0) continue;
-        const double t = glm::dot(a - basis.eye, n) / denominator;
-        if (t <= 0.0) continue;
-        p = basis.eye + t * d;
-        glm::dvec3 lo(object.params.quad[0]), hi = lo;
-        for (const glm::vec3& corner : object.params.quad) {
-          lo = glm::min(lo, glm::dvec3(corner));
-          hi = glm::max(hi, glm::dvec3(corner));
-        }
-        const double slack = 1e-9;
-        if (glm::any(glm::lessThan(p, lo - slack)) || glm::any(glm::greaterThan(p, hi + slack))) {
-          continue;
-        }
-      }
-      const float row[8] = {float(2.0 * (x + 0.5) / w - 1.0),
-                            float(1.0 - 2.0 * (y + 0.5) / h),
-                            float(p.x),
-                            float(p.y),
-                            float(p.z),
-                            float(n.x),
-                            float(n.y),
-                            float(n.z)};
-      vertices.insert(vertices.end(), row, row + 8);
-    }
-  }
-  return vertices;
-}
-
 // A flat quad in the plane z = 0 wound so that its normal points away from the eye (-z), lit by
 // the same two lights from the eye's side: only the two-sided rule makes it lit.
 Scene back_quad_scene() {
@@ -141,132 +57,11 @@ Scene back_quad_scene() {
   return scene;
 }
 
-// Renders objects[0] of scene with fragment_source at host_hits' points; returns the five images
-// (total first) as RGBA floats, rows top to bottom, misses left at the background. Empty with a
-// message in log when the program does not build.
-std::vector<std::vector<float>> render_with_shader(const Scene& scene,
-                                                   const std::string& fragment_source,
-                                                   std::string& log) {
-  const int w = scene.render.width, h = scene.render.height;
-  const std::vector<float> vertices = host_hits(scene);
-
-  const GLuint vs = compile(GL_VERTEX_SHADER, kPointVertexShader, log);
-  const GLuint fs = compile(GL_FRAGMENT_SHADER, fragment_source, log);
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, vs);
-  glAttachShader(program, fs);
-  glLinkProgram(program);
-  GLint linked = 0;
-  glGetProgramiv(program, GL_LINK_STATUS, &linked);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  if (!linked) {
-    char buffer[4096] = {};
-    glGetProgramInfoLog(program, sizeof buffer, nullptr, buffer);
-    log += buffer;
-    glDeleteProgram(program);
-    return {};
-  }
-
-  GLuint framebuffer = 0, textures[kTerms] = {};
-  glGenFramebuffers(1, &framebuffer);
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-  glGenTextures(kTerms, textures);
-  GLenum buffers[kTerms];
-  for (int i = 0; i < kTerms; ++i) {
-    glBindTexture(GL_TEXTURE_2D, textures[i]);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    buffers[i] = GL_COLOR_ATTACHMENT0 + i;
-    glFramebufferTexture2D(GL_FRAMEBUFFER, buffers[i], GL_TEXTURE_2D, textures[i], 0);
-  }
-  glDrawBuffers(kTerms, buffers);
-  EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), static_cast<GLenum>(GL_FRAMEBUFFER_COMPLETE));
-  glViewport(0, 0, w, h);
-  // A miss: background in the total, 0 in every term (spec, first section).
-  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-  const float background[4] = {scene.background.x, scene.background.y, scene.background.z, 0.0f};
-  glClearBufferfv(GL_COLOR, 0, background);
-  for (int i = 1; i < kTerms; ++i) glClearBufferfv(GL_COLOR, i, zero);
-
-  GLuint vao = 0, vbo = 0;
-  glGenVertexArrays(1, &vao);
-  glBindVertexArray(vao);
-  glGenBuffers(1, &vbo);
-  glBindBuffer(GL_ARRAY_BUFFER, vbo);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(float)),
-               vertices.data(), GL_STATIC_DRAW);
-  const GLsizei stride = 8 * sizeof(float);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride, nullptr);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
-                        reinterpret_cast<const void*>(2 * sizeof(float)));
-  glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride,
-                        reinterpret_cast<const void*>(5 * sizeof(float)));
-  for (GLuint a = 0; a < 3; ++a) glEnableVertexAttribArray(a);
-  glUseProgram(program);
-  const glm::vec3 eye = scene.camera.eye;
-  glUniform3f(glGetUniformLocation(program, "gloss_eye"), eye.x, eye.y, eye.z);
-  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(vertices.size() / 8));
-
-  std::vector<std::vector<float>> images(kTerms);
-  std::vector<float> bottom_up(static_cast<std::size_t>(w) * h * 4);
-  for (int i = 0; i < kTerms; ++i) {
-    glReadBuffer(GL_COLOR_ATTACHMENT0 + i);
-    glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, bottom_up.data());
-    images[i].resize(bottom_up.size());
-    const std::size_t row = static_cast<std::size_t>(w) * 4;
-    for (int y = 0; y < h; ++y) {
-      std::copy_n(&bottom_up[(h - 1 - y) * row], row, &images[i][y * row]);
-    }
-  }
-  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
-  glUseProgram(0);
-  glDeleteBuffers(1, &vbo);
-  glDeleteVertexArrays(1, &vao);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glDeleteTextures(kTerms, textures);
-  glDeleteFramebuffers(1, &framebuffer);
-  glDeleteProgram(program);
-  return images;
+// How the export of scene's material 0 (or source, when given) agrees with the reference.
+Agreement measure(const Scene& scene, const std::string& source, std::string& log) {
+  return measure_agreement(
+      scene, [&](int) { return source; }, 1e-3, log);
 }
-
-// Share of pixels whose largest channel difference to reference is within tolerance.
-double share_within(const std::vector<float>& gl, const Image& reference, double tolerance,
-                    double* largest = nullptr) {
-  std::size_t good = 0;
-  double worst = 0.0;
-  for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
-    const glm::vec3 ref = reference.pixels[i];
-    double e = 0.0;
-    for (int k = 0; k < 3; ++k) e = std::max(e, std::abs(double(gl[4 * i + k]) - double(ref[k])));
-    worst = std::max(worst, e);
-    if (e <= tolerance) ++good;
-  }
-  if (largest != nullptr) *largest = worst;
-  return double(good) / double(reference.pixels.size());
-}
-
-struct Agreement {
-  double share[kTerms] = {};    // within 1e-3, total first
-  double largest[kTerms] = {};  // largest channel difference
-};
-
-Agreement measure(const Scene& scene, const std::string& fragment_source, std::string& log) {
-  Agreement a;
-  const std::vector<std::vector<float>> gl = render_with_shader(scene, fragment_source, log);
-  if (gl.empty()) return a;
-  ReferenceOptions options;
-  options.spp = 1;
-  const TermImages ref = render_reference<double>(scene, options);
-  const Image* images[kTerms] = {&ref.total, &ref.emissive, &ref.ambient, &ref.diffuse,
-                                 &ref.specular};
-  for (int i = 0; i < kTerms; ++i)
-    a.share[i] = share_within(gl[i], *images[i], 1e-3, &a.largest[i]);
-  return a;
-}
-
-const char* const kTermNames[kTerms] = {"total", "emissive", "ambient", "diffuse", "specular"};
 
 struct Case {
   const char* name;
@@ -289,10 +84,10 @@ TEST_P(GlslExport, AgreesWithTheReferenceOnEveryTerm) {
   std::string log;
   const Agreement a = measure(scene, export_glsl(scene, 0), log);
   ASSERT_TRUE(log.empty()) << log;
-  for (int i = 0; i < kTerms; ++i) {
+  for (int i = 0; i < kGlslTerms; ++i) {
     std::printf("[glsl-agreement] %s %s: %.4f%% within 1e-3, largest difference %.3g\n", c.name,
-                kTermNames[i], 100.0 * a.share[i], a.largest[i]);
-    EXPECT_GE(a.share[i], 0.995) << kTermNames[i];
+                kGlslTermNames[i], 100.0 * a.share[i], a.largest[i]);
+    EXPECT_GE(a.share[i], 0.995) << kGlslTermNames[i];
   }
 }
 
@@ -323,10 +118,10 @@ TEST_F(GlslExportCases, BackFacingQuadAgreesThroughTheTwoSidedRule) {
   std::string log;
   const Agreement a = measure(scene, export_glsl(scene, 0), log);
   ASSERT_TRUE(log.empty()) << log;
-  for (int i = 0; i < kTerms; ++i) {
+  for (int i = 0; i < kGlslTerms; ++i) {
     std::printf("[glsl-agreement] back_quad %s: %.4f%% within 1e-3, largest difference %.3g\n",
-                kTermNames[i], 100.0 * a.share[i], a.largest[i]);
-    EXPECT_GE(a.share[i], 0.995) << kTermNames[i];
+                kGlslTermNames[i], 100.0 * a.share[i], a.largest[i]);
+    EXPECT_GE(a.share[i], 0.995) << kGlslTermNames[i];
   }
 }
 
@@ -337,8 +132,9 @@ TEST_F(GlslExportCases, CompilesAndGivesEmissivePlusAmbient) {
   std::string log;
   const Agreement a = measure(scene, export_glsl(scene, 0), log);
   ASSERT_TRUE(log.empty()) << log;
-  for (int i = 0; i < kTerms; ++i) EXPECT_GE(a.share[i], 0.995) << kTermNames[i];
-  const std::vector<std::vector<float>> gl = render_with_shader(scene, export_glsl(scene, 0), log);
+  for (int i = 0; i < kGlslTerms; ++i) EXPECT_GE(a.share[i], 0.995) << kGlslTermNames[i];
+  const std::vector<std::vector<float>> gl = render_exported(
+      scene, [&](int m) { return export_glsl(scene, m); }, log);
   ASSERT_FALSE(gl.empty());
   // The centre pixel (80, 60) is on the sphere: (0.01, 0, 0) + (0.1, 0.2, 0.3) * 0.2, by hand.
   const std::size_t centre = 4 * (60 * 160 + 80);
@@ -378,7 +174,7 @@ TEST_F(GlslExportCases, CompilesAsGlslEs300WithOnlyTheVersionLineChanged) {
     ASSERT_EQ(source.rfind(core, 0), 0u);
     source.replace(0, core.size(), "#version 300 es\n");
     std::string log;
-    const GLuint shader = compile(GL_FRAGMENT_SHADER, source, log);
+    const GLuint shader = compile_shader(GL_FRAGMENT_SHADER, source, log);
     EXPECT_TRUE(log.empty()) << (with_lights ? "with lights: " : "without lights: ") << log;
     glDeleteShader(shader);
     // The check can fail: ES fragment shaders have no default float precision, so the same
@@ -388,7 +184,7 @@ TEST_F(GlslExportCases, CompilesAsGlslEs300WithOnlyTheVersionLineChanged) {
     ASSERT_NE(at, std::string::npos);
     source.erase(at, precision.size());
     std::string planted_log;
-    glDeleteShader(compile(GL_FRAGMENT_SHADER, source, planted_log));
+    glDeleteShader(compile_shader(GL_FRAGMENT_SHADER, source, planted_log));
     EXPECT_FALSE(planted_log.empty()) << "an ES shader without float precision compiled";
   }
   eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, gl_context);
