@@ -269,8 +269,12 @@ Agreement measure_agreement(const Scene& scene, const std::function<std::string(
     for (std::size_t i = 0; i < images[t]->pixels.size(); ++i) {
       const glm::vec3 r = images[t]->pixels[i];
       double e = 0.0;
-      for (int k = 0; k < 3; ++k)
-        e = std::max(e, std::abs(double(gl[t][4 * i + k]) - double(r[k])));
+      for (int k = 0; k < 3; ++k) {
+        const double g = gl[t][4 * i + k];
+        // A NaN or Inf from the shader counts as the largest possible difference (std::max
+        // would drop a NaN).
+        e = std::max(e, std::isfinite(g) ? std::abs(g - double(r[k])) : kNone);
+      }
       a.largest[t] = std::max(a.largest[t], e);
       if (e <= tolerance) {
         ++good;
