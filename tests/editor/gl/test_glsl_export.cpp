@@ -236,7 +236,8 @@ INSTANTIATE_TEST_SUITE_P(
               "float att = 1.0;"},
         Plant{"ambient_light_sum_dropped", "ambient_light += gloss_light_ambient[i];", ""},
         Plant{"two_sided_rule_dropped", "gloss_two_sided(n_g, n, v);", "", true},
-        // pow of a negative cosine is undefined in GLSL (non-finite on llvmpipe): counted as failing.
+        // pow of a negative cosine is undefined in GLSL (non-finite on llvmpipe): counted as
+        // failing.
         Plant{"negative_cosine_rule_dropped", "if (!(c > 0.0)) return 0.0;", ""}),
     [](const ::testing::TestParamInfo<Plant>& info) { return std::string(info.param.name); });
 
