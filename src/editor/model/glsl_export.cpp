@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "base/atomic_file.h"
+#include "base/printable_text.h"
 
 namespace gloss {
 
@@ -43,9 +44,11 @@ std::string export_glsl(const Scene& scene, int material) {
     throw std::out_of_range("no material " + std::to_string(material));
   }
   const Material& m = scene.materials[static_cast<std::size_t>(material)];
-  const std::string name = static_cast<std::size_t>(material) < scene.material_names.size()
-                               ? scene.material_names[static_cast<std::size_t>(material)]
-                               : "material " + std::to_string(material);
+  // Names and paths come from files: a newline in one would end the GLSL comment it is in.
+  const std::string name =
+      printable_text(static_cast<std::size_t>(material) < scene.material_names.size()
+                         ? scene.material_names[static_cast<std::size_t>(material)]
+                         : "material " + std::to_string(material));
   const std::string where = "materials[" + std::to_string(material) + "] \"" + name + "\"";
   std::string s;
   s += "#version 330 core\n";
@@ -53,7 +56,8 @@ std::string export_glsl(const Scene& scene, int material) {
        "changes.\n";
   s += "// Exported by gloss (Export GLSL): the shading contract of docs/spec/shading.md for\n";
   s += "// " + where + " under the scene's " + std::to_string(scene.lights.size()) +
-       " point light(s)" + (scene.path.empty() ? "" : ", from " + scene.path) + ".\n";
+       " point light(s)" + (scene.path.empty() ? "" : ", from " + printable_text(scene.path)) +
+       ".\n";
   s += "//\n";
   s += "// The host program supplies, per fragment, in world space:\n";
   s += "//   gloss_position  the surface point p\n";
@@ -72,8 +76,8 @@ std::string export_glsl(const Scene& scene, int material) {
   s += "layout(location = 2) out vec4 gloss_ambient;\n";
   s += "layout(location = 3) out vec4 gloss_diffuse;\n";
   s += "layout(location = 4) out vec4 gloss_specular;\n\n";
-  s += "// The material: " + where + (m.preset.empty() ? "" : ", preset \"" + m.preset + "\"") +
-       ".\n";
+  s += "// The material: " + where +
+       (m.preset.empty() ? "" : ", preset \"" + printable_text(m.preset) + "\"") + ".\n";
   s += "const vec3 gloss_ka = " + vec3_literal(m.ambient) + ";  // " + where + ".ambient\n";
   s += "const vec3 gloss_kd = " + vec3_literal(m.diffuse) + ";  // " + where + ".diffuse\n";
   s += "const vec3 gloss_ks = " + vec3_literal(m.specular) + ";  // " + where + ".specular\n";

@@ -59,6 +59,16 @@ TEST(GlslExport, NoLightsLeavesNoArrays) {
   EXPECT_TRUE(contains(s, "shadows off"));
 }
 
+TEST(GlslExport, NamesFromFilesCannotEndAComment) {
+  Scene scene = test::two_sphere_scene();
+  scene.material_names[0] = "red\nvoid main() {}";
+  scene.path = "a\rb.json";
+  const std::string s = export_glsl(scene, 0);
+  EXPECT_TRUE(contains(s, "materials[0] \"red\\x0Avoid main() {}\""));
+  EXPECT_TRUE(contains(s, "from a\\x0Db.json."));
+  EXPECT_FALSE(contains(s, "\nvoid main() {}"));
+}
+
 TEST(GlslExport, RefusesAMissingMaterial) {
   const Scene scene = test::two_sphere_scene();
   EXPECT_THROW(export_glsl(scene, 2), std::out_of_range);
