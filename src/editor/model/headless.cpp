@@ -27,7 +27,9 @@ class HeadlessHost : public ScriptHost {
 
   CommandLayer& layer() override { return m_layer; }
   ViewSettings& view() override { return m_view; }
-  void select(int) override {}
+  // Kept only for `export glsl` without an object index, which exports the selected object's.
+  void select(int object) override { m_selected = object; }
+  int selected_object() const override { return m_selected; }
 
   LineResult wait(const WaitAction&, const std::string&) override { return LineResult::go_on(); }
   LineResult screenshot(const ScreenshotAction& a, const std::string& where) override {
@@ -79,6 +81,7 @@ class HeadlessHost : public ScriptHost {
   CommandLayer m_layer;
   ViewSettings m_view;
   QualityMeasurement m_quality;
+  int m_selected = 0;
 };
 
 }  // namespace

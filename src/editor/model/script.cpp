@@ -288,6 +288,15 @@ ScriptAction parse_line(Tokens& t) {
   }
   // Issue 14: the memory report.
   if (verb == "memory") return MemoryAction{};
+  // Issue 12: the GLSL path.
+  if (verb == "export") {
+    const std::string& what = t.word("export kind");
+    if (what != "glsl") throw std::runtime_error("export must be 'glsl PATH', got '" + what + "'");
+    ExportGlslAction e;
+    e.path = t.word("shader path");
+    if (!t.done()) e.object = t.index("object index");
+    return e;
+  }
   throw std::runtime_error("unknown command '" + verb + "'");
 }
 

@@ -70,10 +70,19 @@ struct InspectAction {
   int x = 0, y = 0;
 };
 
+// ---- The GLSL path (issue 12) ----
+// `export glsl PATH [OBJECT]`: writes the fragment shader of editor/model/glsl_export.h for the
+// material of object OBJECT (default: the selected object), atomically.
+struct ExportGlslAction {
+  std::string path;
+  int object = -1;  // -1: the host's selected object
+};
+
 using ScriptAction =
     std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction, ViewAction,
                  ExposureAction, SelectAction, StatsAction, SleepAction, AnimateAction, QuitAction,
-                 QualityAction, InspectAction, ClippedOverlayAction, SnapshotAction, MemoryAction>;
+                 QualityAction, InspectAction, ClippedOverlayAction, SnapshotAction, MemoryAction,
+                 ExportGlslAction>;
 
 struct ScriptLine {
   int line = 0;  // 1-based line number in the file

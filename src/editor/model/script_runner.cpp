@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "base/overloaded.h"
+#include "editor/model/glsl_export.h"
 #include "editor/model/memory_report.h"
 #include "editor/model/pixel_report.h"
 #include "reference/pixel_inspection.h"
@@ -33,6 +34,25 @@ LineResult inspect(ScriptHost& host, const InspectAction& a, const std::string& 
   view.inspect_pinned = true;
   view.inspect_x = a.x;
   view.inspect_y = a.y;
+  return LineResult::go_on();
+}
+
+// `export glsl PATH [OBJECT]` (issue 12): the same for both hosts, text only (no GL needed).
+LineResult export_glsl_line(ScriptHost& host, const ExportGlslAction& a, const std::string& where) {
+  const Scene& scene = host.layer().scene();
+  const int object = a.object >= 0 ? a.object : host.selected_object();
+  if (object < 0 || object >= static_cast<int>(scene.objects.size())) {
+    return bad_line(where, "no object " + std::to_string(object));
+  }
+  const int material = scene.objects[static_cast<std::size_t>(object)].material;
+  try {
+    write_glsl_export(a.path, scene, material);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s%s\n", where.c_str(), e.what());
+    return LineResult::stop(1);
+  }
+  std::printf("export glsl: %s (material %d of object %d)\n", a.path.c_str(), material, object);
+  std::fflush(stdout);
   return LineResult::go_on();
 }
 
@@ -110,6 +130,7 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
             [&](const QualityAction& a) { return host.quality(a, where); },
             [&](const InspectAction& a) { return inspect(host, a, where); },
             [&](const MemoryAction&) { return host.memory(); },
+            [&](const ExportGlslAction& a) { return export_glsl_line(host, a, where); },
         },
         line.action);
   } catch (const CommandError& e) {

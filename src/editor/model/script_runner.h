@@ -37,6 +37,8 @@ class ScriptHost {
   virtual CommandLayer& layer() = 0;
   virtual ViewSettings& view() = 0;
   virtual void select(int object) = 0;
+  // The object whose material `export glsl` writes when the line names none.
+  virtual int selected_object() const { return 0; }
 
   // where: "FILE:LINE: " for messages. Errors are printed by the host, which returns stop.
   virtual LineResult wait(const WaitAction& action, const std::string& where) = 0;

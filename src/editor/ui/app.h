@@ -153,6 +153,8 @@ void add_model(App& app, const std::string& path);
 void save_scene_as(App& app, const std::string& path);
 void load_materials(App& app, const std::string& path);
 void save_materials(App& app, const std::string& path);
+// Writes the selected object's material as a GLSL fragment shader (editor/model/glsl_export.h).
+void export_glsl_shader(App& app, const std::string& path);
 // Starts an export; path empty = timestamped name in view.screenshot_dir.
 void start_screenshot(App& app, ScreenshotKind kind, const std::string& path, bool from_script);
 // Collects finished exports, showing their paths (or errors) as notices.

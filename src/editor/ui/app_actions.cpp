@@ -8,7 +8,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "base/error.h"
+#include "editor/model/document.h"
 #include "editor/model/export_image.h"
+#include "editor/model/glsl_export.h"
 #include "editor/model/script_runner.h"
 #include "editor/ui/app.h"
 #include "io/model_loader.h"
@@ -155,6 +157,18 @@ void save_materials(App& app, const std::string& path) {
                    app.now_s());
 }
 
+void export_glsl_shader(App& app, const std::string& path) {
+  const Scene& scene = app.commands.scene();
+  if (app.selected_object < 0 || app.selected_object >= static_cast<int>(scene.objects.size())) {
+    throw std::runtime_error("select an object to export its material");
+  }
+  const int material = scene.objects[static_cast<std::size_t>(app.selected_object)].material;
+  write_glsl_export(path, scene, material);
+  app.notices.info(
+      "exported the GLSL shader of " + object_label(scene, app.selected_object) + " to " + path,
+      app.now_s());
+}
+
 void start_screenshot(App& app, ScreenshotKind kind, const std::string& path, bool from_script) {
   if (kind == ScreenshotKind::window) {
     app.capture = {true, path, from_script, from_script ? 0 : 1};
@@ -253,6 +267,9 @@ void browser_action(App& app, const std::string& path) {
         break;
       case BrowsePurpose::save_materials:
         save_materials(app, path);
+        break;
+      case BrowsePurpose::export_glsl:
+        export_glsl_shader(app, path);
         break;
     }
     app.browser.open = false;

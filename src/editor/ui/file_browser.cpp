@@ -23,12 +23,15 @@ const char* title(BrowsePurpose purpose) {
       return "Save scene as";
     case BrowsePurpose::save_materials:
       return "Save materials";
+    case BrowsePurpose::export_glsl:
+      return "Export GLSL";
   }
   return "File";
 }
 
 bool is_save(BrowsePurpose purpose) {
-  return purpose == BrowsePurpose::save_scene || purpose == BrowsePurpose::save_materials;
+  return purpose == BrowsePurpose::save_scene || purpose == BrowsePurpose::save_materials ||
+         purpose == BrowsePurpose::export_glsl;
 }
 
 std::vector<std::string> extensions(BrowsePurpose purpose) {
@@ -42,6 +45,8 @@ std::vector<std::string> extensions(BrowsePurpose purpose) {
     case BrowsePurpose::load_materials:
     case BrowsePurpose::save_materials:
       return {".json", ".mtl"};
+    case BrowsePurpose::export_glsl:
+      return {".frag", ".glsl"};
   }
   return {};
 }
@@ -55,6 +60,7 @@ RecentKind recent_kind(BrowsePurpose purpose) {
       return RecentKind::materials;
     case BrowsePurpose::open_scene:
     case BrowsePurpose::save_scene:
+    case BrowsePurpose::export_glsl:
       break;
   }
   return RecentKind::scene;

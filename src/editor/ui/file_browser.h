@@ -10,7 +10,14 @@
 
 namespace gloss {
 
-enum class BrowsePurpose { open_scene, add_model, load_materials, save_scene, save_materials };
+enum class BrowsePurpose {
+  open_scene,
+  add_model,
+  load_materials,
+  save_scene,
+  save_materials,
+  export_glsl,  // issue 12: the selected object's material as a fragment shader
+};
 // The recent list the panel offers for purpose (scenes for scenes, models for Add model, ...).
 RecentKind recent_kind(BrowsePurpose purpose);
 const char* title(BrowsePurpose purpose);

@@ -55,6 +55,9 @@ void file_menu(App& app) {
   if (ImGui::MenuItem("Save materials (JSON, MTL)...")) {
     app.browser.show(BrowsePurpose::save_materials, scene_folder(app), "materials.mtl");
   }
+  if (ImGui::MenuItem("Export GLSL...")) {
+    app.browser.show(BrowsePurpose::export_glsl, scene_folder(app), "gloss.frag");
+  }
   ImGui::Separator();
   if (ImGui::MenuItem("Screenshot", "Ctrl+S")) {
     start_screenshot(app, app.view.screenshot_kind, "", false);

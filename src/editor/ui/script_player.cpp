@@ -87,6 +87,7 @@ class ScriptPlayer::Host : public ScriptHost {
   CommandLayer& layer() override { return m_app.commands; }
   ViewSettings& view() override { return m_app.view; }
   void select(int object) override { m_app.selected_object = object; }
+  int selected_object() const override { return m_app.selected_object; }
   std::optional<Snapshot>& snapshot() override { return m_app.snapshot; }
 
   LineResult wait(const WaitAction& a, const std::string&) override {

@@ -1,0 +1,132 @@
+// phong_contract.glsl: the shading contract of docs/spec/shading.md, written once in GLSL.
+// The same rules as src/shading/shading.h and src/shading/total.h (the CPU and reference paths).
+//
+// Subset: GLSL 3.30 core and GLSL ES 3.00 (WebGL 2) alike: no #version line here (the program
+// that uses this file puts its own first), no derivatives, no integer bit operations, no
+// double. float arithmetic throughout (the CPU path computes the per-light factors in double;
+// docs/spec/shading.md, "A raster (GLSL) path", counts float arithmetic as a measured knob).
+//
+// What a program must define BEFORE this code (an exported shader, editor/model/glsl_export.h,
+// defines all of them as constants):
+//   GLOSS_LIGHT_COUNT                  a #define, number of point lights (0 allowed)
+//   vec3 gloss_ka, gloss_kd, gloss_ks, gloss_ke   material constants ("The terms and the total")
+//   float gloss_alpha                  shininess exponent, >= 0
+//   vec3 gloss_scene_ambient           A_scene
+//   int gloss_model                    GLOSS_PHONG or GLOSS_BLINN_PHONG
+//   bool gloss_energy_normalize        the "Optional switches" energy normalisation
+//   and, when GLOSS_LIGHT_COUNT > 0, arrays of GLOSS_LIGHT_COUNT entries:
+//   vec3 gloss_light_position[], gloss_light_ambient[], gloss_light_diffuse[],
+//        gloss_light_specular[], gloss_light_attenuation[] (c0, c1, c2)
+//   float gloss_visibility(int light, vec3 p, vec3 n_g)   vis: 1 lit, 0 shadowed
+
+#define GLOSS_PHONG 0
+#define GLOSS_BLINN_PHONG 1
+
+// What one point light contributes at one point, before material constants and light colours
+// (shading.h, LightFactors): diffuse = kd Ld diffuse_weight, specular = ks Ls spec_weight c^alpha.
+struct GlossLightFactors {
+  float diffuse_weight;  // ndl * att * vis, 0 when ndl <= 0
+  float spec_weight;     // att * vis, 0 when ndl <= 0
+  float cos_phong;       // R . V = dot(2 ndl n - l, v)
+  float cos_blinn;       // N . H = dot(n, normalize(l + v))
+};
+
+// The four term contributions and their total at one point ("Term buffers").
+struct GlossTerms {
+  vec3 emissive;
+  vec3 ambient;
+  vec3 diffuse;   // summed over the lights
+  vec3 specular;  // summed over the lights
+  vec3 total;
+};
+
+// "What one point light adds": att = 1 / (c0 + c1 d + c2 d^2); c >= 0, not all 0 (the loader
+// refuses others), so the denominator is > 0.
+float gloss_attenuation(vec3 c, float d) {
+  return 1.0 / (c.x + d * (c.y + d * c.z));
+}
+
+// "The surface at a hit": every surface has two sides; when dot(n_g, v) < 0 both n_g and n are
+// negated before any rule uses them. Spheres seen from outside never flip; meshes can.
+void gloss_two_sided(inout vec3 n_g, inout vec3 n, vec3 v) {
+  if (dot(n_g, v) < 0.0) {
+    n_g = -n_g;
+    n = -n;
+  }
+}
+
+// "What one point light adds", the geometric part (shading.h, light_factors). p: point, n: unit
+// shading normal, v: unit direction to the eye, both already on the viewer's side; vis 1 or 0.
+// A light exactly at p (d = 0) or with ndl <= 0 adds nothing: all factors 0.
+GlossLightFactors gloss_light_factors(vec3 p, vec3 n, vec3 v, vec3 light_position,
+                                      vec3 attenuation_coeffs, float vis) {
+  GlossLightFactors f = GlossLightFactors(0.0, 0.0, 0.0, 0.0);
+  vec3 to_light = light_position - p;
+  float d = length(to_light);  // d = |P_i - p|
+  if (!(d > 0.0)) return f;    // a light on the surface adds neither diffuse nor specular
+  vec3 l = to_light / d;       // l = (P_i - p) / d
+  float ndl = dot(n, l);       // ndl = dot(n, l)
+  if (!(ndl > 0.0)) return f;  // ndl <= 0: neither diffuse nor specular
+  float att = gloss_attenuation(attenuation_coeffs, d);
+  f.spec_weight = att * vis;                        // specular_i carries att * vis
+  f.diffuse_weight = ndl * f.spec_weight;           // diffuse_i = kd Ld ndl att vis
+  f.cos_phong = dot(2.0 * ndl * n - l, v);          // Phong: R . V, R = 2 ndl n - l
+  vec3 h = l + v;                                   // l = -v leaves no half vector (shading.h)
+  float h_len = length(h);
+  f.cos_blinn = h_len > 0.0 ? dot(n, h) / h_len : 0.0;  // Blinn-Phong: N . normalize(l + v)
+  return f;
+}
+
+// "The terms and the total": c^alpha for c > 0, 0 for c <= 0; at alpha = 0, 1 wherever c > 0
+// (the specular term is continuous as alpha goes to 0). c above 1 comes from rounding only.
+float gloss_specular_power(float c, float alpha) {
+  if (!(c > 0.0)) return 0.0;
+  if (c >= 1.0) return 1.0;
+  if (alpha == 0.0) return 1.0;
+  return pow(c, alpha);  // defined: 0 < c < 1
+}
+
+// The cosine the model raises to alpha (shading.h, model_cosine).
+float gloss_model_cosine(GlossLightFactors f, int model) {
+  return model == GLOSS_PHONG ? f.cos_phong : f.cos_blinn;
+}
+
+// "Optional switches": the specular term times (alpha + 2) / (2 pi) for Phong, times
+// (alpha + 8) / (8 pi) for Blinn-Phong.
+float gloss_energy_normalization(int model, float alpha) {
+  const float pi = 3.14159265358979323846;
+  return model == GLOSS_PHONG ? (alpha + 2.0) / (2.0 * pi) : (alpha + 8.0) / (8.0 * pi);
+}
+
+// The whole contract at one surface point with the material and lights defined above.
+// p: world position; n_g: geometric normal; n: shading normal (unit; n = n_g on spheres and flat
+// meshes); eye: camera position. The two-sided rule is applied here.
+GlossTerms gloss_shade(vec3 p, vec3 n_g, vec3 n, vec3 eye) {
+  vec3 v = normalize(eye - p);  // v = normalize(eye - p)
+  gloss_two_sided(n_g, n, v);
+  GlossTerms t;
+  t.emissive = gloss_ke;  // emissive = ke
+  vec3 ambient_light = gloss_scene_ambient;
+  t.diffuse = vec3(0.0);
+  t.specular = vec3(0.0);
+  float norm = gloss_energy_normalize ? gloss_energy_normalization(gloss_model, gloss_alpha) : 1.0;
+#if GLOSS_LIGHT_COUNT > 0
+  for (int i = 0; i < GLOSS_LIGHT_COUNT; ++i) {
+    ambient_light += gloss_light_ambient[i];  // A_scene + sum_i La_i: not attenuated, not shadowed
+    float vis = gloss_visibility(i, p, n_g);
+    GlossLightFactors f = gloss_light_factors(p, n, v, gloss_light_position[i],
+                                              gloss_light_attenuation[i], vis);
+    float c = gloss_model_cosine(f, gloss_model);
+    // diffuse_i = kd * Ld_i * ndl * att * vis
+    t.diffuse += gloss_kd * gloss_light_diffuse[i] * f.diffuse_weight;
+    // specular_i = ks * Ls_i * c^alpha * att * vis (times the normalisation when switched on)
+    t.specular += gloss_ks * gloss_light_specular[i] * (f.spec_weight *
+                                                        gloss_specular_power(c, gloss_alpha) *
+                                                        norm);
+  }
+#endif
+  t.ambient = gloss_ka * ambient_light;  // ambient = ka * (A_scene + sum_i La_i)
+  // total = emissive + ambient + sum_i (diffuse_i + specular_i), in total.h's fixed order
+  t.total = ((t.emissive + t.ambient) + t.diffuse) + t.specular;
+  return t;
+}

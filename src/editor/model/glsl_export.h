@@ -1,0 +1,27 @@
+#pragma once
+// "Export GLSL" (issue 12): a self-contained GLSL fragment shader for one material of the
+// document under the document's lights, the shading contract of shaders/phong_contract.glsl with
+// every constant filled in from the scene and a comment naming where each came from. The text
+// only: no GL here (the model stays GL-free; tests/editor/gl compiles and runs the result).
+//
+// The host program supplies, per fragment: the world-space position and normal (`in vec3
+// gloss_position, gloss_normal`) and the eye position (`uniform vec3 gloss_eye`); the shader
+// writes the total to colour attachment 0 and the four terms to attachments 1..4.
+#include <string>
+
+#include "scene/scene.h"
+
+namespace gloss {
+
+// The fragment shader text for scene.materials[material] (GLSL 3.30 core; the header says the
+// one line to change for GLSL ES 3.00 / WebGL 2). Throws std::out_of_range for a bad index.
+std::string export_glsl(const Scene& scene, int material);
+
+// Writes export_glsl(scene, material) to path atomically (base/atomic_file.h); throws
+// RuntimeFailure when the file cannot be written.
+void write_glsl_export(const std::string& path, const Scene& scene, int material);
+
+// The contract source, shaders/phong_contract.glsl, embedded at build time.
+extern const char* const kPhongContractGlsl;
+
+}  // namespace gloss
