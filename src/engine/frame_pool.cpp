@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "engine/best_fit.h"
+
 namespace gloss {
 
 namespace {
@@ -14,8 +16,8 @@ std::shared_ptr<RenderedFrame> FramePool::make(const std::shared_ptr<FramePool>&
   auto* frame = new RenderedFrame;
   frame->images.total = pool->take(width, height);
   if (terms) {
-    for (Image* image : {&frame->images.emissive, &frame->images.ambient,
-                         &frame->images.diffuse, &frame->images.specular}) {
+    for (Image* image : {&frame->images.emissive, &frame->images.ambient, &frame->images.diffuse,
+                         &frame->images.specular}) {
       *image = pool->take(width, height);
     }
   }
@@ -32,16 +34,8 @@ Image FramePool::take(int width, int height) {
   image.height = height;
   {
     std::lock_guard<std::mutex> lock(m_mutex);
-    // The smallest buffer that holds the image (no new pages), else the largest (fewest).
-    auto best = m_buffers.end();
-    for (auto it = m_buffers.begin(); it != m_buffers.end(); ++it) {
-      const bool fits = it->capacity() >= size;
-      if (best == m_buffers.end() ||
-          (fits && (best->capacity() < size || it->capacity() < best->capacity())) ||
-          (!fits && best->capacity() < size && it->capacity() > best->capacity())) {
-        best = it;
-      }
-    }
+    const auto best = best_fit(m_buffers.begin(), m_buffers.end(), size,
+                               [](const std::vector<glm::vec3>& b) { return b.capacity(); });
     if (best != m_buffers.end()) {
       image.pixels = std::move(*best);
       m_buffers.erase(best);

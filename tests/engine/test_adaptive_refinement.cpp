@@ -10,6 +10,7 @@
 #include "engine/renderer.h"
 #include "engine/trace/single_sample_pass.h"
 #include "scene/memory_estimate.h"
+#include "support/image_compare.h"
 #include "support/scene_fixtures.h"
 
 namespace gloss {
@@ -51,10 +52,10 @@ std::vector<std::uint32_t> pixel_list(std::initializer_list<std::pair<int, int>>
 
 TEST(AdaptiveRefinement, TheImageBorderIsAlwaysRefined) {
   const HandImage img(4, 3, 0);  // uniform: nothing inside differs
-  EXPECT_EQ(choose_refined_pixels(img.cache, img.total, 1.0f, 0, 3),
-            pixel_list({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {0, 1}, {3, 1}, {0, 2}, {1, 2}, {2, 2},
-                        {3, 2}},
-                       4));
+  EXPECT_EQ(
+      choose_refined_pixels(img.cache, img.total, 1.0f, 0, 3),
+      pixel_list({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {0, 1}, {3, 1}, {0, 2}, {1, 2}, {2, 2}, {3, 2}},
+                 4));
   EXPECT_TRUE(img.refined(1.0f).empty());
 }
 
@@ -62,9 +63,9 @@ TEST(AdaptiveRefinement, AnotherObjectRefinesItsWholeNeighbourhood) {
   HandImage img(7, 6, 0);
   img.cache.planes[0].object[img.at(3, 2)] = -1;  // one background pixel
   // Rows 1-3, columns 2-4: the pixel and its 8 neighbours, each seeing a different object.
-  EXPECT_EQ(img.refined(0.1f), pixel_list({{2, 1}, {3, 1}, {4, 1}, {2, 2}, {3, 2}, {4, 2},
-                                           {2, 3}, {3, 3}, {4, 3}},
-                                          7));
+  EXPECT_EQ(
+      img.refined(0.1f),
+      pixel_list({{2, 1}, {3, 1}, {4, 1}, {2, 2}, {3, 2}, {4, 2}, {2, 3}, {3, 3}, {4, 3}}, 7));
 }
 
 TEST(AdaptiveRefinement, AColourStepRefinesBothSidesOnlyAboveTheThreshold) {
@@ -98,10 +99,7 @@ TEST(AdaptiveRefinement, AShadowEdgeRefinesEvenWhereTheColourHidesIt) {
   EXPECT_EQ(img.refined(1.0f), pixel_list({{2, 1}, {3, 1}}, 5));
 }
 
-double max_abs_diff(const glm::vec3& a, const glm::vec3& b) {
-  const glm::vec3 d = glm::abs(a - b);
-  return std::max(d.x, std::max(d.y, d.z));
-}
+using test::largest_channel_difference;
 
 TEST(AdaptiveRefinement, RefinedPixelsEqualUniformSamplingAndTheRestTheCentre) {
   Scene scene = test::sphere_on_floor_scene();
@@ -122,10 +120,11 @@ TEST(AdaptiveRefinement, RefinedPixelsEqualUniformSamplingAndTheRestTheCentre) {
   for (const std::uint32_t p : refined) is_refined[p] = true;
   for (std::size_t i = 0; i < pixels; ++i) {
     const Image& expected = is_refined[i] ? uniform.total : centre.total;
-    ASSERT_LE(max_abs_diff(adaptive.total.pixels[i], expected.pixels[i]), 1e-6) << i;
-    ASSERT_LE(max_abs_diff(adaptive.specular.pixels[i],
-                           (is_refined[i] ? uniform.specular : centre.specular).pixels[i]),
-              1e-6)
+    ASSERT_LE(largest_channel_difference(adaptive.total.pixels[i], expected.pixels[i]), 1e-6) << i;
+    ASSERT_LE(
+        largest_channel_difference(adaptive.specular.pixels[i],
+                                   (is_refined[i] ? uniform.specular : centre.specular).pixels[i]),
+        1e-6)
         << i;
   }
 }

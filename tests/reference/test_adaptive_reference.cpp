@@ -6,15 +6,13 @@
 
 #include "engine/renderer.h"
 #include "reference/reference_renderer.h"
+#include "support/image_compare.h"
 #include "support/scene_fixtures.h"
 
 namespace gloss {
 namespace {
 
-double max_abs_diff(const glm::vec3& a, const glm::vec3& b) {
-  const glm::vec3 d = glm::abs(a - b);
-  return std::max(d.x, std::max(d.y, d.z));
-}
+using test::largest_channel_difference;
 
 TEST(AdaptiveReference, ReferencePathAgreesGivenTheSamePlacement) {
   Scene scene = test::sphere_on_floor_scene();
@@ -34,7 +32,7 @@ TEST(AdaptiveReference, ReferencePathAgreesGivenTheSamePlacement) {
   std::size_t off = 0;
   for (std::size_t i = 0; i < mask.size(); ++i) {
     if (edges[i] != 0) continue;
-    if (max_abs_diff(fast.total.pixels[i], exact.total.pixels[i]) > 1e-4) ++off;
+    if (largest_channel_difference(fast.total.pixels[i], exact.total.pixels[i]) > 1e-4) ++off;
   }
   EXPECT_EQ(off, 0u);
 }

@@ -1,5 +1,5 @@
 #pragma once
-// The display shaders of shaders/, compiled into the binary at build time (embed_shaders.cmake).
+// The display shaders of shaders/, compiled into the binary at build time (src/editor/embed_glsl.cmake).
 
 namespace gloss {
 

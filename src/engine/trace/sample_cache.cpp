@@ -1,5 +1,6 @@
 #include "engine/trace/sample_cache.h"
 
+#include "engine/best_fit.h"
 #include "engine/trace/refined_samples.h"
 #include "engine/trace/sample_packet.h"
 #include "shading/sampling.h"
@@ -56,14 +57,8 @@ void append_planes(SampleCache& cache, std::size_t lights, int count) {
   const std::size_t pixels = cache.pixel_count();
   for (int s = 0; s < count; ++s) {
     if (!cache.spare.empty()) {
-      // The smallest spare that holds the image (no new pages, no copy), else the largest.
-      auto best = cache.spare.begin();
-      for (auto it = cache.spare.begin(); it != cache.spare.end(); ++it) {
-        const std::size_t have = it->object.capacity(), best_have = best->object.capacity();
-        if (have >= pixels ? (best_have < pixels || have < best_have) : have > best_have) {
-          best = it;
-        }
-      }
+      const auto best = best_fit(cache.spare.begin(), cache.spare.end(), pixels,
+                                 [](const SamplePlane& p) { return p.object.capacity(); });
       cache.planes.push_back(std::move(*best));
       cache.spare.erase(best);
     } else {

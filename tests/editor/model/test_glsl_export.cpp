@@ -12,6 +12,7 @@
 #include "base/error.h"
 #include "editor/model/script.h"
 #include "editor/model/script_runner.h"
+#include "support/quiet_script_host.h"
 #include "support/scratch_folder.h"
 #include "support/test_scene.h"
 
@@ -75,28 +76,7 @@ TEST(GlslExport, RefusesAMissingMaterial) {
   EXPECT_THROW(export_glsl(scene, -1), std::out_of_range);
 }
 
-class Host : public ScriptHost {
- public:
-  explicit Host(Scene scene) : m_layer(std::move(scene)) {}
-  CommandLayer& layer() override { return m_layer; }
-  ViewSettings& view() override { return m_view; }
-  void select(int object) override { m_selected = object; }
-  int selected_object() const override { return m_selected; }
-  LineResult wait(const WaitAction&, const std::string&) override { return LineResult::go_on(); }
-  LineResult screenshot(const ScreenshotAction&, const std::string&) override {
-    return LineResult::go_on();
-  }
-  LineResult stats() override { return LineResult::go_on(); }
-  LineResult sleep(const SleepAction&) override { return LineResult::go_on(); }
-  LineResult quality(const QualityAction&, const std::string&) override {
-    return LineResult::go_on();
-  }
-
- private:
-  CommandLayer m_layer;
-  ViewSettings m_view;
-  int m_selected = 0;
-};
+using Host = test::QuietScriptHost;
 
 LineResult run(const std::string& text, Host& host) {
   const Script s = parse_script(text, "run.txt");

@@ -13,31 +13,13 @@
 #include "editor/model/script.h"
 #include "editor/model/script_runner.h"
 #include "reference/reference_renderer.h"
+#include "support/quiet_script_host.h"
 #include "support/test_scene.h"
 
 namespace gloss {
 namespace {
 
-class Host : public ScriptHost {
- public:
-  explicit Host(Scene scene) : m_layer(std::move(scene)) {}
-  CommandLayer& layer() override { return m_layer; }
-  ViewSettings& view() override { return m_view; }
-  void select(int) override {}
-  LineResult wait(const WaitAction&, const std::string&) override { return LineResult::go_on(); }
-  LineResult screenshot(const ScreenshotAction&, const std::string&) override {
-    return LineResult::go_on();
-  }
-  LineResult stats() override { return LineResult::go_on(); }
-  LineResult sleep(const SleepAction&) override { return LineResult::go_on(); }
-  LineResult quality(const QualityAction&, const std::string&) override {
-    return LineResult::go_on();
-  }
-
- private:
-  CommandLayer m_layer;
-  ViewSettings m_view;
-};
+using Host = test::QuietScriptHost;
 
 struct ScriptRun {
   LineResult result;

@@ -1,0 +1,36 @@
+#pragma once
+// A ScriptHost for model tests: owns the document's command layer and view settings, remembers
+// the selection, and lets every host action (wait, screenshot, stats, sleep, quality) pass.
+#include <string>
+#include <utility>
+
+#include "editor/model/command_layer.h"
+#include "editor/model/script_runner.h"
+#include "editor/model/view_settings.h"
+
+namespace gloss::test {
+
+class QuietScriptHost : public ScriptHost {
+ public:
+  explicit QuietScriptHost(Scene scene) : m_layer(std::move(scene)) {}
+  CommandLayer& layer() override { return m_layer; }
+  ViewSettings& view() override { return m_view; }
+  void select(int object) override { m_selected = object; }
+  int selected_object() const override { return m_selected; }
+  LineResult wait(const WaitAction&, const std::string&) override { return LineResult::go_on(); }
+  LineResult screenshot(const ScreenshotAction&, const std::string&) override {
+    return LineResult::go_on();
+  }
+  LineResult stats() override { return LineResult::go_on(); }
+  LineResult sleep(const SleepAction&) override { return LineResult::go_on(); }
+  LineResult quality(const QualityAction&, const std::string&) override {
+    return LineResult::go_on();
+  }
+
+ private:
+  CommandLayer m_layer;
+  ViewSettings m_view;
+  int m_selected = 0;
+};
+
+}  // namespace gloss::test
