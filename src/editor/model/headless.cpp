@@ -53,6 +53,9 @@ class HeadlessHost : public ScriptHost {
   LineResult sleep(const SleepAction&) override { return LineResult::go_on(); }
   LineResult quality(const QualityAction& action, const std::string& where) override {
     try {
+      if (action.verb == QualityAction::Verb::raster) {
+        return failed(where, "quality raster draws with OpenGL: it needs the editor's window");
+      }
       if (action.verb == QualityAction::Verb::csv) {
         write_quality_csv(action.path, m_quality.rows());
         saved(action.path);

@@ -67,6 +67,24 @@ struct Tokens {
   }
 };
 
+// `quality raster PATH [WIDTH HEIGHT [REFERENCE_SPP]]` (issue 12: the raster path's rows).
+QualityAction parse_quality_raster(Tokens& t) {
+  QualityAction q{QualityAction::Verb::raster, t.word("csv path")};
+  if (t.done()) return q;
+  q.width = t.index("width");
+  q.height = t.index("height");
+  if (q.width < 1 || q.height < 1 || q.width > kMaxImageSide || q.height > kMaxImageSide) {
+    throw std::runtime_error("quality raster: width and height must be 1.." +
+                             std::to_string(kMaxImageSide));
+  }
+  if (t.done()) return q;
+  q.reference_spp = t.index("reference spp");
+  if (q.reference_spp < 1 || q.reference_spp > kMaxSpp) {
+    throw std::runtime_error("quality raster: reference spp must be 1.." + std::to_string(kMaxSpp));
+  }
+  return q;
+}
+
 // A value of field from the rest of the line: one number for a grey colour or three for R G B,
 // three for a vector, one number, a whole number, on/off, or a choice's name.
 template <class S>
@@ -283,8 +301,9 @@ ScriptAction parse_line(Tokens& t) {
     if (what == "start") return QualityAction{QualityAction::Verb::start, ""};
     if (what == "cancel") return QualityAction{QualityAction::Verb::cancel, ""};
     if (what == "csv") return QualityAction{QualityAction::Verb::csv, t.word("csv path")};
-    throw std::runtime_error("quality must be measure, start, cancel or 'csv PATH', got '" + what +
-                             "'");
+    if (what == "raster") return parse_quality_raster(t);
+    throw std::runtime_error(
+        "quality must be measure, start, cancel, 'csv PATH' or 'raster PATH', got '" + what + "'");
   }
   // Issue 14: the memory report.
   if (verb == "memory") return MemoryAction{};

@@ -57,11 +57,16 @@ struct QuitAction {};
 struct MemoryAction {};
 // The Quality panel's measurement (quality_measurement.h) at its quick settings: measure starts it
 // on the current scene and holds the script until it ends; start does not hold; cancel stops it;
-// csv writes the rows so far as tradeoff CSV to path, atomically.
+// csv writes the rows so far as tradeoff CSV to path, atomically. raster (`quality raster PATH
+// [WIDTH HEIGHT [REFERENCE_SPP]]`, issue 12) measures the raster path's rows
+// (editor/gl/raster_tradeoff.h) on the editor's GL thread and writes their CSV to path; the size
+// and reference default to the panel's quick settings. It needs the window's GL context.
 struct QualityAction {
-  enum class Verb { measure, start, cancel, csv };
+  enum class Verb { measure, start, cancel, csv, raster };
   Verb verb = Verb::measure;
-  std::string path;  // csv only
+  std::string path;           // csv and raster
+  int width = 0, height = 0;  // raster: image size, pixels; 0: the quick settings'
+  int reference_spp = 0;      // raster: the reference's samples per pixel; 0: the quick settings'
 };
 
 // Prints what the contract computed at the centre of pixel (x, y) of the document's render size

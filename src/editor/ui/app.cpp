@@ -12,6 +12,7 @@
 #include "base/process_memory.h"
 #include "editor/model/camera_controller.h"
 #include "editor/model/config_paths.h"
+#include "editor/ui/quality_parts.h"
 #include "editor/ui/script_player.h"
 
 namespace gloss {
@@ -281,6 +282,7 @@ void run_frame(App& app) {
   app.viewport.upload_frames(frame_start);
   app.swatches.poll();
   app.quality.poll();
+  app.raster_quality.step(kRasterQualitySliceMs);  // GL: this thread owns the context
   poll_exports(app);
   if (app.script) {
     app.script->step(app);
@@ -348,6 +350,10 @@ double idle_timeout(const App& app) {
   if (app.view.orbit_light) return 1.0 / 60.0;
   if (app.script || !app.exports.empty()) return 0.02;
   if (app.quality.running()) return 0.1;  // rows arrive and the elapsed time counts up
+  // Raster rows are drawn a slice per frame; while the worker renders their references, the
+  // progress only needs refreshing.
+  if (app.raster_quality.state() == RasterTradeoff::State::rendering) return 0.0;
+  if (app.raster_quality.running()) return 0.1;
   double timeout = 0.5;  // keeps hover states and the status bar fresh without spinning
   for (const Notice& n : app.notices.items) timeout = std::min(timeout, n.until_s - now);
   return std::max(timeout, 0.0);

@@ -14,6 +14,7 @@
 #include <GLFW/glfw3.h>
 #include <glad/gl.h>
 
+#include "editor/gl/raster_tradeoff.h"
 #include "editor/model/autosave.h"
 #include "editor/model/background_priority.h"
 #include "editor/model/command_layer.h"
@@ -94,7 +95,8 @@ struct App {
 
   Viewport viewport;
   Swatches swatches;
-  QualityMeasurement quality;  // the Quality window's speed/accuracy measurement
+  QualityMeasurement quality;     // the Quality window's speed/accuracy measurement
+  RasterTradeoff raster_quality;  // its raster (GLSL) rows, drawn on this thread (quality_parts.h)
   FileBrowser browser;
   Notices notices;
   RecentLists recent;    // scenes, models and material files, each its own list

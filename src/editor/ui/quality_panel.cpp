@@ -13,6 +13,7 @@
 
 #include "editor/ui/app.h"
 #include "editor/ui/panel_widgets.h"
+#include "editor/ui/quality_parts.h"
 
 namespace gloss {
 
@@ -186,6 +187,11 @@ void draw_quality_panel(App& app, ImVec2 pos, ImVec2 size) {
     ImGui::PopTextWrapPos();
   }
   draw_knobs(app);
+  draw_raster_quality_section(app);
+  if (!app.quality.rows().empty() || !app.raster_quality.rows().empty()) {
+    section_title("Error against time");
+    draw_quality_plot(app, 220.0f);
+  }
   if (!app.quality.notes().empty()) {
     section_title("Notes");
     ImGui::PushTextWrapPos(0.0f);

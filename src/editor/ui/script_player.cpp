@@ -1,12 +1,17 @@
 #include "editor/ui/script_player.h"
 
+#include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <thread>
 
+#include "base/atomic_file.h"
 #include "base/error.h"
 #include "editor/model/memory_report.h"
 #include "editor/model/quality_measurement.h"
 #include "editor/model/script_runner.h"
 #include "editor/ui/app.h"
+#include "editor/ui/quality_parts.h"
 
 namespace gloss {
 
@@ -124,6 +129,8 @@ class ScriptPlayer::Host : public ScriptHost {
       case QualityAction::Verb::cancel:
         m_app.quality.cancel();
         return LineResult::go_on();
+      case QualityAction::Verb::raster:
+        return quality_raster(action, where);
       case QualityAction::Verb::csv:
         try {
           write_quality_csv(action.path, m_app.quality.rows());
@@ -140,6 +147,33 @@ class ScriptPlayer::Host : public ScriptHost {
   }
 
  private:
+  // `quality raster`: measured at once on this thread (it owns the GL context), the UI paused
+  // meanwhile; the rows stay in the Quality window.
+  LineResult quality_raster(const QualityAction& action, const std::string& where) {
+    try {
+      start_raster_quality(m_app, action.width, action.height, action.reference_spp);
+      m_app.show_quality = true;
+      RasterTradeoff& r = m_app.raster_quality;
+      while (r.running()) {
+        if (!r.step(1e12)) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      }
+      if (r.state() == RasterTradeoff::State::failed) {
+        throw std::runtime_error("raster quality measurement failed: " + r.error());
+      }
+      std::printf("quality raster: %zu rows, %dx%d, reference %d spp, %d runs, %.2f s\n%s",
+                  r.rows().size(), r.width(), r.height(), r.options().reference_spp,
+                  r.options().runs, r.elapsed_s(), raster_tradeoff_table(r.rows()).c_str());
+      write_text_atomically(action.path, raster_tradeoff_to_csv(r.rows()));
+      std::printf("saved %s\n",
+                  std::filesystem::absolute(action.path).lexically_normal().string().c_str());
+      std::fflush(stdout);
+      return LineResult::go_on();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "error: %s%s\n", where.c_str(), e.what());
+      return LineResult::stop(1);
+    }
+  }
+
   LineResult hold(Waiting waiting, double deadline_s) {
     m_player.m_waiting = waiting;
     m_player.m_deadline_s = deadline_s;
