@@ -3,7 +3,11 @@
 median render time, one marker style per knob, every point labelled with its setting, and the
 Pareto front (no other point is both faster and more accurate) drawn as a step line.
 
-Usage: plot_tradeoff.py CSV OUT.png [--title TEXT] [--base spp=4,pow=exact,...]
+Several CSVs are drawn together: the raster path's rows (`quality raster PATH` in an editor
+script, editor/gl/raster_tradeoff.h) measure against the same reference as the CPU rows and are
+drawn as hollow markers of their own, with the cpu 1-spp row they carry.
+
+Usage: plot_tradeoff.py CSV [CSV ...] OUT.png [--title TEXT] [--base spp=4,pow=exact,...]
 Run with Debian's /usr/bin/python3 (python3-matplotlib). Writes OUT.png as given (gloss-cli
 passes a temporary name and renames it into place).
 """
@@ -27,12 +31,22 @@ KNOB_STYLE = {  # marker, colour (colour-blind-safe Okabe-Ito palette)
     "shading": ("v", "#D55E00"),
     "resolution": ("P", "#56B4E9"),
     "shadows": ("X", "#000000"),
+    # The raster (GLSL) path's rows: hollow markers, colours outside the palette above.
+    "cpu": ("p", "#444444"),
+    "raster-shading": ("<", "#7B3294"),
+    "raster-shadow-map": (">", "#1B7837"),
+    "raster-bias": ("d", "#B2182B"),
+    "raster-tessellation": ("8", "#8C510A"),
 }
+RASTER_LABEL = {"raster-shading": "gl", "raster-shadow-map": "gl map", "raster-bias": "gl bias",
+                "raster-tessellation": "gl tess"}
 
 
-def read_rows(path):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
+def read_rows(paths):
+    rows = []
+    for path in paths:
+        with open(path, newline="") as f:
+            rows += list(csv.DictReader(f))
     for r in rows:
         r["time_ms"] = float(r["time_ms"])
         r["rmse"] = float(r["rmse"])
@@ -54,6 +68,8 @@ def label_text(knob, setting):
     """Settings that do not name their knob get it in front ("pow fast", "tess 8")."""
     if knob in ("spp", "resolution"):
         return setting
+    if knob in RASTER_LABEL:
+        return RASTER_LABEL[knob] + " " + setting
     return ("tess" if knob == "tessellation" else knob) + " " + setting
 
 
@@ -91,9 +107,41 @@ def place_labels(fig, ax, labels):
                                                       alpha=0.7, shrinkA=0, shrinkB=3))
 
 
+def draw_raster_knob(ax, knob, knob_rows, marker, colour, floor, raster_base, drawn, labels,
+                     points):
+    """One raster knob: hollow markers; ordered settings joined (shadow map sizes; tessellation
+    levels per shading frequency); the raster base drawn once."""
+    series = {}
+    for r in knob_rows:
+        if knob == "raster-tessellation":
+            series.setdefault(r["setting"].split(" ")[0], []).append(r)
+        elif knob == "raster-shadow-map" and r["setting"] != "off":
+            series.setdefault("maps", []).append(r)
+    for s in series.values():
+        ax.plot([r["time_ms"] for r in s], [max(r["rmse"], floor) for r in s], color=colour,
+                linewidth=0.8, alpha=0.5, zorder=2,
+                linestyle="--" if s[0]["setting"].startswith("vertex") else "-")
+    own = []
+    for r in knob_rows:
+        key = (r["time_ms"], r["rmse"])
+        if key in raster_base:
+            if key in drawn:
+                continue
+            drawn.add(key)
+            text = "gl base"
+        else:
+            text = label_text(knob, r["setting"])
+        own.append((r["time_ms"], max(r["rmse"], floor), text))
+    ax.scatter([x for x, _, _ in own], [y for _, y, _ in own], marker=marker, s=52,
+               facecolors="white", edgecolors=colour, linewidths=1.4, label=knob, zorder=3)
+    for x, y, text in own:
+        labels.append((x, y, text, colour))
+        points.append((x, y))
+
+
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("csv")
+    parser.add_argument("csv", nargs="+")
     parser.add_argument("out")
     parser.add_argument("--title", default="gloss tradeoff")
     parser.add_argument("--base", default="",
@@ -121,9 +169,24 @@ def main():
     fig, ax = plt.subplots(figsize=(10, 6), dpi=100)
     points = []
     labels = []  # (x, y, text, colour), placed once every point is known
+    # The raster rows of the raster base (per pixel, the default map and bias, the finest teapot)
+    # are one measured configuration: the same time and error. Drawn once, as "gl base".
+    seen = set()
+    raster_base = set()
+    for i, r in enumerate(rows):
+        if r["knob"].startswith("raster-"):
+            key = (r["time_ms"], r["rmse"])
+            if key in seen:
+                raster_base.add(key)
+            seen.add(key)
+    drawn = set()
     for knob, (marker, colour) in KNOB_STYLE.items():
         knob_rows = [r for r in rows if r["knob"] == knob]
         if not knob_rows:
+            continue
+        if knob.startswith("raster-"):
+            draw_raster_knob(ax, knob, knob_rows, marker, colour, floor, raster_base, drawn,
+                             labels, points)
             continue
         xs = [r["time_ms"] for r in knob_rows]
         ys = [max(r["rmse"], floor) for r in knob_rows]
@@ -164,7 +227,11 @@ def main():
     ax.xaxis.set_major_locator(ticker.LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
     ax.xaxis.set_major_formatter(ticker.FuncFormatter(lambda v, _: "%g" % v))
     ax.xaxis.set_minor_formatter(ticker.NullFormatter())
-    ax.set_xlabel("median time of one render, BVH build included (ms, log scale)")
+    if any(r["knob"].startswith("raster-") for r in rows):
+        ax.set_xlabel("median time of one render, BVH build included; raster: one frame, meshes "
+                      "and shadow maps kept (ms, log scale)")
+    else:
+        ax.set_xlabel("median time of one render, BVH build included (ms, log scale)")
     ax.set_ylabel("RMSE of the total image against the reference (log scale)")
     ax.set_title(args.title, fontsize=10)
     ax.text(0.01, 0.01, "better: down and to the left", transform=ax.transAxes, fontsize=8,

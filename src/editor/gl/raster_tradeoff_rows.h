@@ -70,8 +70,8 @@ struct RasterTradeoffRow {
   // gloss-cli tradeoff times its rows.
   double time_ms = 0;
   double draw_ms = 0;    // raster: median of the draw phase alone; cpu: 0
-  double shadow_ms = 0;  // raster: median shadow pass of the frames that redrew the maps (what a
-                         // light drag adds to time_ms); 0 when none did or shadows are off
+  double shadow_ms = 0;  // raster: median shadow pass of a frame whose light moved (what a light
+                         // drag adds to time_ms); 0 when shadows are off
   ImageMetrics error;    // total image against the exact reference, every pixel
   // % of pixels whose total is within kRasterAgreementTolerance on every channel of
   // render_reference<double> at 1 spp of the row's scene (its teapot level, shadows as the scene

@@ -126,8 +126,9 @@ struct App {
   std::uint64_t released_at_upload = 0;  // viewport.uploads() when free memory was last released
   bool show_help = false;
   bool show_about = false;
-  bool show_quality = false;  // the Quality window
-  bool confirm_quit = false;  // the unsaved-changes question is open
+  bool show_quality = false;      // the Quality window
+  bool show_raster_rows = false;  // select the Quality window's raster tab on its next frame
+  bool confirm_quit = false;      // the unsaved-changes question is open
   bool quit = false;
   int exit_code = 0;
 

@@ -160,16 +160,8 @@ void draw_knobs(App& app) {
   }
 }
 
-}  // namespace
-
-void draw_quality_panel(App& app, ImVec2 pos, ImVec2 size) {
-  if (!app.show_quality) return;
-  ImGui::SetNextWindowPos(pos, ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(size, ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Quality: what each knob costs and buys", &app.show_quality)) {
-    ImGui::End();
-    return;
-  }
+// The ray tracer's knobs: Measure, the rows per knob with their verdicts, the notes.
+void draw_cpu_tab(App& app) {
   draw_controls(app);
   if (app.quality.state() == QualityMeasurement::State::idle) {
     ImGui::PushTextWrapPos(0.0f);
@@ -187,17 +179,50 @@ void draw_quality_panel(App& app, ImVec2 pos, ImVec2 size) {
     ImGui::PopTextWrapPos();
   }
   draw_knobs(app);
-  draw_raster_quality_section(app);
-  if (!app.quality.rows().empty() || !app.raster_quality.rows().empty()) {
-    section_title("Error against time");
-    draw_quality_plot(app, 220.0f);
-  }
   if (!app.quality.notes().empty()) {
     section_title("Notes");
     ImGui::PushTextWrapPos(0.0f);
     for (const std::string& note : app.quality.notes()) ImGui::TextDisabled("%s", note.c_str());
     ImGui::PopTextWrapPos();
   }
+}
+
+}  // namespace
+
+void draw_quality_panel(App& app, ImVec2 pos, ImVec2 size) {
+  if (!app.show_quality) return;
+  ImGui::SetNextWindowPos(pos, ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(size, ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Quality: what each knob costs and buys", &app.show_quality)) {
+    ImGui::End();
+    return;
+  }
+  // Three tabs: the ray tracer's knobs (the CPU rows), the raster path's rows (issue 12) and the
+  // plot of both. Starting a raster measurement (button or script) shows its tab.
+  if (!ImGui::BeginTabBar("quality tabs")) {
+    ImGui::End();
+    return;
+  }
+  if (ImGui::BeginTabItem("Ray tracer")) {
+    draw_cpu_tab(app);
+    ImGui::EndTabItem();
+  }
+  const ImGuiTabItemFlags raster_flags =
+      app.show_raster_rows ? ImGuiTabItemFlags_SetSelected : ImGuiTabItemFlags_None;
+  if (ImGui::BeginTabItem("Raster (GLSL)", nullptr, raster_flags)) {
+    app.show_raster_rows = false;  // shown (a new tab bar selects its first tab at first)
+    draw_raster_quality_section(app);
+    ImGui::EndTabItem();
+  }
+  if (ImGui::BeginTabItem("Plot")) {
+    if (app.quality.rows().empty() && app.raster_quality.rows().empty()) {
+      ImGui::TextDisabled("measure the ray tracer's knobs or the raster rows first");
+    } else {
+      draw_quality_plot(app, std::max(160.0f, ImGui::GetContentRegionAvail().y - 60.0f));
+    }
+    ImGui::EndTabItem();
+  }
+  ImGui::EndTabBar();
   ImGui::End();
 }
 

@@ -11,7 +11,7 @@ struct App;
 // (a few frames a second) while the raster rows are measured.
 inline constexpr double kRasterQualitySliceMs = 60.0;
 
-// The "Raster (GLSL) rows" section: its Measure / Cancel button, progress, table and notes.
+// The "Raster (GLSL)" tab: its Measure / Cancel button, progress, table, plot and notes.
 void draw_raster_quality_section(App& app);
 
 // Error (RMSE, log) against time (ms, log) of the CPU rows and the raster rows measured so far,

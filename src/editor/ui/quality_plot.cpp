@@ -61,11 +61,13 @@ void draw_quality_plot(App& app, float height) {
     if (p.rmse > 0) e0 = std::min(e0, p.rmse);
     e1 = std::max(e1, p.rmse);
   }
-  // Whole decades around the points; an exact match (rmse 0) sits on the bottom edge.
-  const double lt0 = std::floor(std::log10(std::max(t0, 1e-3)));
-  const double lt1 = std::max(std::ceil(std::log10(std::max(t1, 1e-3))), lt0 + 1);
-  const double le0 = std::floor(std::log10(e0 < 1e300 ? e0 : 1e-4));
-  const double le1 = std::max(std::ceil(std::log10(std::max(e1, 1e-6))), le0 + 1);
+  // Whole decades around the points, with a margin so that none sits on an edge; an exact
+  // match (rmse 0) sits on the bottom edge.
+  if (e0 >= 1e300) e0 = 1e-4;
+  const double lt0 = std::floor(std::log10(std::max(t0, 1e-3)) - 0.15);
+  const double lt1 = std::ceil(std::log10(std::max(t1, 1e-3)) + 0.15);
+  const double le0 = std::floor(std::log10(e0) - 0.15);
+  const double le1 = std::ceil(std::log10(std::max(e1, e0)) + 0.15);
 
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const float width = ImGui::GetContentRegionAvail().x;

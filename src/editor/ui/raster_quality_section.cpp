@@ -40,8 +40,8 @@ void draw_rows(const std::vector<RasterTradeoffRow>& rows) {
       ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV;
   if (!ImGui::BeginTable("raster rows", 8, flags)) return;
   auto width = [](const char* widest) { return ImGui::CalcTextSize(widest).x; };
-  ImGui::TableSetupColumn("knob", ImGuiTableColumnFlags_WidthFixed, width("shadow map"));
-  ImGui::TableSetupColumn("setting", ImGuiTableColumnFlags_WidthFixed, width("vertex 32"));
+  ImGui::TableSetupColumn("knob", ImGuiTableColumnFlags_WidthFixed, width("tessellation"));
+  ImGui::TableSetupColumn("setting", ImGuiTableColumnFlags_WidthFixed, width("pixel 32 (b)"));
   ImGui::TableSetupColumn("ms", ImGuiTableColumnFlags_WidthFixed, width("12345"));
   ImGui::TableSetupColumn("draw", ImGuiTableColumnFlags_WidthFixed, width("12345"));
   ImGui::TableSetupColumn("shadow", ImGuiTableColumnFlags_WidthFixed, width("shadow"));
@@ -93,11 +93,12 @@ void start_raster_quality(App& app, int width, int height, int reference_spp) {
   }
   if (reference_spp > 0) options.reference_spp = reference_spp;
   app.raster_quality.start(app.commands.scene(), options);
+  app.show_quality = true;
+  app.show_raster_rows = true;
 }
 
 void draw_raster_quality_section(App& app) {
   RasterTradeoff& r = app.raster_quality;
-  section_title("Raster (GLSL) rows");
   if (r.running()) {
     if (ImGui::Button("Cancel##raster", ImVec2(120, 0))) r.cancel();
   } else if (ImGui::Button("Measure raster", ImVec2(120, 0))) {
@@ -136,6 +137,8 @@ void draw_raster_quality_section(App& app) {
         "exact image; (b): the raster base.");
     ImGui::PopTextWrapPos();
     draw_rows(r.rows());
+    ImGui::Spacing();
+    draw_quality_plot(app, 200.0f);
   }
   if (r.state() != RasterTradeoff::State::idle) {
     ImGui::PushTextWrapPos(0.0f);

@@ -152,7 +152,6 @@ class ScriptPlayer::Host : public ScriptHost {
   LineResult quality_raster(const QualityAction& action, const std::string& where) {
     try {
       start_raster_quality(m_app, action.width, action.height, action.reference_spp);
-      m_app.show_quality = true;
       RasterTradeoff& r = m_app.raster_quality;
       while (r.running()) {
         if (!r.step(1e12)) std::this_thread::sleep_for(std::chrono::milliseconds(5));

@@ -171,7 +171,7 @@ TEST_F(RasterTradeoffRows, ShadowMapsCostLessErrorThanNoShadows) {
   EXPECT_LT(fine.error.rmse, off.error.rmse);
   EXPECT_GT(fine.pct_agree, off.pct_agree);
   EXPECT_EQ(off.shadow_ms, 0.0);
-  EXPECT_GT(fine.shadow_ms, 0.0) << "switching to it redraws the shadow maps";
+  EXPECT_GT(fine.shadow_ms, 0.0) << "a moved light redraws the shadow maps";
   EXPECT_EQ(
       std::count_if(rows.begin(), rows.end(),
                     [](const RasterTradeoffRow& r) { return r.knob == "raster-tessellation"; }),
