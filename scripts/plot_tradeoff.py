@@ -128,7 +128,7 @@ def draw_raster_knob(ax, knob, knob_rows, marker, colour, floor, raster_base, dr
             if key in drawn:
                 continue
             drawn.add(key)
-            text = "gl base"
+            text = raster_base[key]
         else:
             text = label_text(knob, r["setting"])
         own.append((r["time_ms"], max(r["rmse"], floor), text))
@@ -169,16 +169,16 @@ def main():
     fig, ax = plt.subplots(figsize=(10, 6), dpi=100)
     points = []
     labels = []  # (x, y, text, colour), placed once every point is known
-    # The raster rows of the raster base (per pixel, the default map and bias, the finest teapot)
-    # are one measured configuration: the same time and error. Drawn once, as "gl base".
-    seen = set()
-    raster_base = set()
-    for i, r in enumerate(rows):
+    # Raster rows of one measured configuration (the raster base: per pixel, the default map and
+    # bias, the finest teapot; per vertex at the finest teapot) have the same time and error:
+    # each is drawn once, the base (named by three knobs or more) as "gl base".
+    groups = {}
+    for r in rows:
         if r["knob"].startswith("raster-"):
-            key = (r["time_ms"], r["rmse"])
-            if key in seen:
-                raster_base.add(key)
-            seen.add(key)
+            groups.setdefault((r["time_ms"], r["rmse"]), []).append(r)
+    raster_base = {key: ("gl base" if len({r["knob"] for r in g}) >= 3 else
+                         label_text(g[0]["knob"], g[0]["setting"]))
+                   for key, g in groups.items() if len(g) > 1}
     drawn = set()
     for knob, (marker, colour) in KNOB_STYLE.items():
         knob_rows = [r for r in rows if r["knob"] == knob]
@@ -228,8 +228,8 @@ def main():
     ax.xaxis.set_major_formatter(ticker.FuncFormatter(lambda v, _: "%g" % v))
     ax.xaxis.set_minor_formatter(ticker.NullFormatter())
     if any(r["knob"].startswith("raster-") for r in rows):
-        ax.set_xlabel("median time of one render, BVH build included; raster: one frame, meshes "
-                      "and shadow maps kept (ms, log scale)")
+        ax.set_xlabel("median time of one render (ms, log scale; CPU: BVH build included, "
+                      "raster: one frame)")
     else:
         ax.set_xlabel("median time of one render, BVH build included (ms, log scale)")
     ax.set_ylabel("RMSE of the total image against the reference (log scale)")

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -13,6 +14,7 @@
 #include "base/error.h"
 #include "editor/gl/egl_context.h"
 #include "editor/gl/raster_tradeoff.h"
+#include "editor/model/headless.h"
 #include "editor/model/script.h"
 #include "io/scene_loader.h"
 
@@ -98,6 +100,17 @@ TEST(RasterTradeoffPure, QualityRasterScriptLineNamesTheCsvAndOptionalSize) {
   EXPECT_EQ(b.reference_spp, 256);
   EXPECT_THROW(parse_script("quality raster\n", "t"), InputError);
   EXPECT_THROW(parse_script("quality raster a.csv 640\n", "t"), InputError);
+}
+
+// Without a window there is no GL context to draw with: the line fails (status 1), naming why.
+TEST(RasterTradeoffPure, QualityRasterFailsWithoutADisplay) {
+  const Script script = parse_script("quality raster never-written.csv\n", "t");
+  testing::internal::CaptureStderr();
+  const int status = run_script_without_display(shipped("spheres.json"), script, "test");
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(status, 1);
+  EXPECT_NE(err.find("needs the editor's window"), std::string::npos) << err;
+  EXPECT_FALSE(std::ifstream("never-written.csv").good());
 }
 
 // The teapot at 2 segments per patch side has 8 triangles per patch: interpolated vertex colours
