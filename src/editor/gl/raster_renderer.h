@@ -10,7 +10,9 @@
 //
 // Needs a current GL 3.3 core context on the calling thread (the editor's window, or EGL in
 // tests) for its whole life.
+#include <functional>
 #include <memory>
+#include <string>
 
 #include "editor/model/raster_settings.h"
 #include "engine/progressive_renderer.h"
@@ -30,8 +32,12 @@ struct RasterTiming {
 
 class RasterRenderer {
  public:
+  // Applied to every shader's full text before it is compiled. Tests plant errors with it (a
+  // wrong attenuation, a missing term) to show that the agreement tests catch them.
+  using SourceEdit = std::function<std::string(const std::string&)>;
+
   // Builds the programs; throws std::runtime_error with the compiler's log when one fails.
-  RasterRenderer();
+  explicit RasterRenderer(SourceEdit edit = {});
   ~RasterRenderer();
   RasterRenderer(const RasterRenderer&) = delete;
   RasterRenderer& operator=(const RasterRenderer&) = delete;

@@ -248,16 +248,11 @@ std::vector<std::vector<float>> render_exported(const Scene& scene,
   return render_hits(scene, host_hits(scene), fragment, log);
 }
 
-Agreement measure_agreement(const Scene& scene, const std::function<std::string(int)>& fragment,
-                            double tolerance, std::string& log) {
+Agreement compare_with_reference(const Scene& scene,
+                                 const std::function<glm::vec3(int, std::size_t)>& at,
+                                 double tolerance, ReferenceOptions options,
+                                 std::vector<std::uint8_t>* edges_out) {
   Agreement a;
-  const std::vector<std::vector<float>> hits = host_hits(scene);
-  const std::vector<std::vector<float>> gl = render_hits(scene, hits, fragment, log);
-  if (gl.empty()) return a;
-  for (const std::vector<float>& object_hits : hits) {
-    a.covered += static_cast<int>(object_hits.size() / 8);
-  }
-  ReferenceOptions options;
   options.spp = 1;
   std::vector<std::uint8_t> edges;
   options.edges = &edges;
@@ -268,12 +263,12 @@ Agreement measure_agreement(const Scene& scene, const std::function<std::string(
     std::size_t good = 0;
     for (std::size_t i = 0; i < images[t]->pixels.size(); ++i) {
       const glm::vec3 r = images[t]->pixels[i];
+      const glm::vec3 g = at(t, i);
       double e = 0.0;
       for (int k = 0; k < 3; ++k) {
-        const double g = gl[t][4 * i + k];
         // A NaN or Inf from the shader counts as the largest possible difference (std::max
         // would drop a NaN).
-        e = std::max(e, std::isfinite(g) ? std::abs(g - double(r[k])) : kNone);
+        e = std::max(e, std::isfinite(g[k]) ? std::abs(double(g[k]) - double(r[k])) : kNone);
       }
       a.largest[t] = std::max(a.largest[t], e);
       if (e <= tolerance) {
@@ -283,6 +278,24 @@ Agreement measure_agreement(const Scene& scene, const std::function<std::string(
       }
     }
     a.share[t] = double(good) / double(images[t]->pixels.size());
+  }
+  if (edges_out != nullptr) *edges_out = std::move(edges);
+  return a;
+}
+
+Agreement measure_agreement(const Scene& scene, const std::function<std::string(int)>& fragment,
+                            double tolerance, std::string& log) {
+  const std::vector<std::vector<float>> hits = host_hits(scene);
+  const std::vector<std::vector<float>> gl = render_hits(scene, hits, fragment, log);
+  if (gl.empty()) return {};
+  Agreement a = compare_with_reference(
+      scene,
+      [&](int t, std::size_t i) {
+        return glm::vec3(gl[t][4 * i], gl[t][4 * i + 1], gl[t][4 * i + 2]);
+      },
+      tolerance);
+  for (const std::vector<float>& object_hits : hits) {
+    a.covered += static_cast<int>(object_hits.size() / 8);
   }
   return a;
 }

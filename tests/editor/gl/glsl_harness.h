@@ -11,6 +11,7 @@
 #include <glad/gl.h>
 
 #include "base/image.h"
+#include "reference/reference_renderer.h"
 #include "scene/scene.h"
 
 namespace gloss::test {
@@ -45,5 +46,14 @@ struct Agreement {
 };
 Agreement measure_agreement(const Scene& scene, const std::function<std::string(int)>& fragment,
                             double tolerance, std::string& log);
+
+// How five GL images (total, emissive, ambient, diffuse, specular: kGlslTermNames' order; one
+// RGB triple per pixel, read through at(term, pixel)) agree with render_reference<double>(scene,
+// options) (options.spp is forced to 1 and options.edges to a mask of its own). edges_out, when
+// given, receives that mask.
+Agreement compare_with_reference(const Scene& scene,
+                                 const std::function<glm::vec3(int, std::size_t)>& at,
+                                 double tolerance, ReferenceOptions options = {},
+                                 std::vector<std::uint8_t>* edges_out = nullptr);
 
 }  // namespace gloss::test

@@ -1,0 +1,119 @@
+// raster_common.glsl: what every raster program (src/editor/gl/raster_programs.h) shares: the
+// uniforms that phong_contract.glsl expects, the projections, the sphere intersection and the
+// shadow-map visibility. Placed after the program's #version and #defines, before the contract.
+// The program defines GLOSS_LIGHT_COUNT (0 allowed) and GLOSS_SHADOWS (0 or 1).
+
+// The contract's inputs (phong_contract.glsl, header), set per object and per frame.
+uniform vec3 gloss_ka, gloss_kd, gloss_ks, gloss_ke;
+uniform float gloss_alpha;
+uniform vec3 gloss_scene_ambient;
+uniform int gloss_model;
+uniform bool gloss_energy_normalize;
+#if GLOSS_LIGHT_COUNT > 0
+uniform vec3 gloss_light_position[GLOSS_LIGHT_COUNT];
+uniform vec3 gloss_light_ambient[GLOSS_LIGHT_COUNT];
+uniform vec3 gloss_light_diffuse[GLOSS_LIGHT_COUNT];
+uniform vec3 gloss_light_specular[GLOSS_LIGHT_COUNT];
+uniform vec3 gloss_light_attenuation[GLOSS_LIGHT_COUNT];
+#endif
+
+// The view this pass draws from: the camera (docs/spec/shading.md, "The camera": forward f,
+// right r, up u, and the image-plane scales tan(fov_y / 2) W / H and tan(fov_y / 2)), or one
+// face of a light's cube (scales 1: a 90 degree square frustum).
+uniform vec3 gloss_view_origin;
+uniform vec3 gloss_view_forward, gloss_view_right, gloss_view_up;
+uniform vec2 gloss_view_scale;
+uniform vec2 gloss_view_depth;  // (A, B): clip z = A w + B maps w = near..far to -1..1
+
+// Clip coordinates of world point p in the pass's view. w is the distance along forward, so the
+// rasterizer's perspective division gives the camera formula's (sx, sy) exactly: a pixel centre
+// the ray tracer shoots its ray through is the pixel centre GL covers. y is negated so that GL's
+// row 0 is the image's top row (frames are read back top row first, base/image.h).
+vec4 gloss_project(vec3 p) {
+  vec3 d = p - gloss_view_origin;
+  float w = dot(d, gloss_view_forward);
+  return vec4(dot(d, gloss_view_right) / gloss_view_scale.x,
+              -dot(d, gloss_view_up) / gloss_view_scale.y,
+              gloss_view_depth.x * w + gloss_view_depth.y, w);
+}
+
+// Window depth (glDepthRange 0..1) of world point p: what gloss_project gives it after the
+// division, for impostors that write gl_FragDepth.
+float gloss_window_depth(vec3 p) {
+  vec4 c = gloss_project(p);
+  return 0.5 * (c.z / c.w) + 0.5;
+}
+
+// Nearest t > 0 along the unit ray o + t d on the sphere (centre, radius), or -1. The
+// discriminant as r^2 - |oc - b d|^2 keeps its precision when the sphere is far away and small
+// (no difference of two large squares).
+float gloss_sphere_t(vec3 o, vec3 d, vec3 centre, float radius) {
+  vec3 oc = o - centre;
+  float b = dot(oc, d);
+  vec3 closest = oc - b * d;
+  float disc = radius * radius - dot(closest, closest);
+  if (disc < 0.0) return -1.0;
+  float root = sqrt(disc);
+  if (-b - root > 0.0) return -b - root;
+  return -b + root > 0.0 ? -b + root : -1.0;
+}
+
+// The cube face of direction d (from a light) and that face's frame: faces 0..5 look along
+// +x, -x, +y, -y, +z, -z. The shadow pass draws face k with this frame (gloss_view_*), so the
+// lookup below finds the texel that face's rasterizer wrote for d.
+int gloss_cube_face(vec3 d, out vec3 forward, out vec3 right, out vec3 up) {
+  vec3 a = abs(d);
+  int face;
+  if (a.x >= a.y && a.x >= a.z) {
+    face = d.x >= 0.0 ? 0 : 1;
+  } else if (a.y >= a.z) {
+    face = d.y >= 0.0 ? 2 : 3;
+  } else {
+    face = d.z >= 0.0 ? 4 : 5;
+  }
+  float s = (face == 0 || face == 2 || face == 4) ? 1.0 : -1.0;
+  if (face < 2) {
+    forward = vec3(s, 0.0, 0.0); right = vec3(0.0, 0.0, -s); up = vec3(0.0, 1.0, 0.0);
+  } else if (face < 4) {
+    forward = vec3(0.0, s, 0.0); right = vec3(1.0, 0.0, 0.0); up = vec3(0.0, 0.0, -s);
+  } else {
+    forward = vec3(0.0, 0.0, s); right = vec3(s, 0.0, 0.0); up = vec3(0.0, 1.0, 0.0);
+  }
+  return face;
+}
+
+#if GLOSS_SHADOWS && GLOSS_LIGHT_COUNT > 0
+// Layer 6 i + k holds face k of light i: per texel the distance from the light to the nearest
+// surface (the shadow pass writes it), world units.
+uniform sampler2DArray gloss_shadow_maps;
+uniform float gloss_shadow_size;  // texels per face side
+uniform float gloss_shadow_bias;  // texels' worth of depth (raster_settings.h)
+
+// The contract's vis (shadow rays replaced by a shadow map: docs/spec/shading.md, "A raster
+// (GLSL) path"): 1 when p is no farther from light i than the nearest surface the map saw in
+// p's direction, plus the bias. A texel spans about 2 dist / size world units across; a surface
+// at angle theta to the light changes depth by tan(theta) of that across it, so the bias grows
+// with the slope (capped at 10: at grazing light the diffuse term is near 0 anyway).
+float gloss_visibility(int light, vec3 p, vec3 n_g) {
+  vec3 d = p - gloss_light_position[light];
+  float dist = length(d);
+  if (!(dist > 0.0)) return 1.0;
+  vec3 forward, right, up;
+  int face = gloss_cube_face(d, forward, right, up);
+  float major = dot(d, forward);
+  vec2 uv = vec2(dot(d, right), dot(d, up)) / major * 0.5 + 0.5;
+  ivec2 texel = clamp(ivec2(floor(uv * gloss_shadow_size)), ivec2(0),
+                      ivec2(int(gloss_shadow_size) - 1));
+  // The pass drew with y negated (gloss_project): row 0 is the face's top.
+  texel.y = int(gloss_shadow_size) - 1 - texel.y;
+  float stored = texelFetch(gloss_shadow_maps, ivec3(texel, 6 * light + face), 0).r;
+  float cos_theta = abs(dot(n_g, d)) / dist;
+  float tan_theta = sqrt(max(1.0 - cos_theta * cos_theta, 0.0)) / max(cos_theta, 1e-6);
+  float bias = gloss_shadow_bias * (2.0 * dist / gloss_shadow_size) * min(1.0 + tan_theta, 10.0);
+  return dist <= stored + bias ? 1.0 : 0.0;
+}
+#else
+float gloss_visibility(int light, vec3 p, vec3 n_g) {
+  return 1.0;
+}
+#endif

@@ -1,0 +1,55 @@
+// raster_mesh.vert: triangles of a mesh object (world space, one vertex per triangle corner so
+// that each corner carries its triangle's geometric normal). Three variants, by #define:
+// GLOSS_SHADOW_PASS (distance to the light), GLOSS_PER_VERTEX (Gouraud: the contract at the
+// vertex), neither (per-pixel: position and normals passed on to raster_mesh.frag).
+layout(location = 0) in vec3 gloss_in_position;
+layout(location = 1) in vec3 gloss_in_normal;       // shading normal (= face normal when flat)
+layout(location = 2) in vec3 gloss_in_face_normal;  // n_g, as wound
+
+#if defined(GLOSS_SHADOW_PASS)
+out vec3 gloss_position;
+void main() {
+  gloss_position = gloss_in_position;
+  gl_Position = gloss_project(gloss_in_position);
+}
+#elif GLOSS_PER_VERTEX
+// Gouraud, as the reference path's gouraud option (reference/reference_renderer.h): each
+// corner's unshadowed per-light weights (diffuse: ndl att; specular: att c^alpha) at the
+// corner's position and normal, interpolated by the rasterizer (perspective-correct: the hit's
+// barycentrics), clamped at 0 and multiplied by the pixel's own shadow test in
+// raster_mesh.frag. Every corner of a triangle takes the same side (the eye is on one side of
+// its plane), as the reference flips all three by the pixel's side.
+out vec3 gloss_position;
+flat out vec3 gloss_face_normal;
+#if GLOSS_LIGHT_COUNT > 0
+out vec2 gloss_light_weights[GLOSS_LIGHT_COUNT];  // (diffuse, specular) of each light
+#endif
+void main() {
+  vec3 p = gloss_in_position;
+  vec3 n_g = gloss_in_face_normal;
+  vec3 n = normalize(gloss_in_normal);
+  vec3 v = normalize(gloss_view_origin - p);
+  gloss_two_sided(n_g, n, v);
+#if GLOSS_LIGHT_COUNT > 0
+  for (int i = 0; i < GLOSS_LIGHT_COUNT; ++i) {
+    GlossLightFactors f = gloss_light_factors(p, n, v, gloss_light_position[i],
+                                              gloss_light_attenuation[i], 1.0);
+    float c = gloss_model_cosine(f, gloss_model);
+    gloss_light_weights[i] =
+        vec2(f.diffuse_weight, f.spec_weight * gloss_specular_power(c, gloss_alpha));
+  }
+#endif
+  gloss_position = p;
+  gloss_face_normal = gloss_in_face_normal;
+  gl_Position = gloss_project(p);
+}
+#else
+out vec3 gloss_position, gloss_normal;
+flat out vec3 gloss_face_normal;
+void main() {
+  gloss_position = gloss_in_position;
+  gloss_normal = gloss_in_normal;
+  gloss_face_normal = gloss_in_face_normal;
+  gl_Position = gloss_project(gloss_in_position);
+}
+#endif

@@ -1,0 +1,43 @@
+// raster_sphere.frag: a sphere as an impostor. Shading passes cast the camera ray of this
+// pixel's centre (the camera formula of docs/spec/shading.md with the pixel's own coordinates,
+// as the ray tracer does), so silhouette and normal are the ray tracer's at pixel centres; the
+// hit's depth goes to gl_FragDepth so spheres and meshes hide each other correctly. The shadow
+// pass casts from the light through the box fragment and writes the hit's distance.
+in vec3 gloss_position;
+uniform vec3 gloss_sphere_centre;
+uniform float gloss_sphere_radius;
+
+#if defined(GLOSS_SHADOW_PASS)
+layout(location = 0) out float gloss_distance;
+void main() {
+  vec3 d = normalize(gloss_position - gloss_view_origin);
+  float t = gloss_sphere_t(gloss_view_origin, d, gloss_sphere_centre, gloss_sphere_radius);
+  if (t < 0.0) discard;
+  gl_FragDepth = gloss_window_depth(gloss_view_origin + t * d);
+  gloss_distance = t;
+}
+#else
+uniform vec2 gloss_image_size;  // W, H in pixels
+layout(location = 0) out vec4 gloss_out_total;
+layout(location = 1) out vec4 gloss_out_emissive;
+layout(location = 2) out vec4 gloss_out_ambient;
+layout(location = 3) out vec4 gloss_out_diffuse;
+layout(location = 4) out vec4 gloss_out_specular;
+void main() {
+  // gl_FragCoord is (x + 0.5, y + 0.5) for pixel (x, y), y from the top (gloss_project).
+  vec2 s = vec2(gl_FragCoord.x * (2.0 / gloss_image_size.x) - 1.0,
+                1.0 - gl_FragCoord.y * (2.0 / gloss_image_size.y)) * gloss_view_scale;
+  vec3 d = normalize(gloss_view_forward + s.x * gloss_view_right + s.y * gloss_view_up);
+  float t = gloss_sphere_t(gloss_view_origin, d, gloss_sphere_centre, gloss_sphere_radius);
+  if (t < 0.0) discard;
+  vec3 p = gloss_view_origin + t * d;
+  vec3 n = (p - gloss_sphere_centre) / gloss_sphere_radius;
+  gl_FragDepth = gloss_window_depth(p);
+  GlossTerms terms = gloss_shade(p, n, n, gloss_view_origin);
+  gloss_out_total = vec4(terms.total, 1.0);
+  gloss_out_emissive = vec4(terms.emissive, 1.0);
+  gloss_out_ambient = vec4(terms.ambient, 1.0);
+  gloss_out_diffuse = vec4(terms.diffuse, 1.0);
+  gloss_out_specular = vec4(terms.specular, 1.0);
+}
+#endif

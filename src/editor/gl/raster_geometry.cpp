@@ -1,0 +1,122 @@
+#include "editor/gl/raster_geometry.h"
+
+#include <set>
+#include <stdexcept>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+namespace gloss {
+
+namespace {
+
+// Per corner: position, shading normal, the triangle's geometric normal (9 floats). Corners are
+// not shared: each carries its triangle's n_g, which the two-sided rule and the shadow bias
+// need, and GL has no per-primitive attribute.
+constexpr int kFloatsPerVertex = 9;
+
+MeshBuffer upload(const Mesh& mesh) {
+  std::vector<float> data;
+  data.reserve(mesh.triangles.size() * 3 * kFloatsPerVertex);
+  for (const glm::uvec3& tri : mesh.triangles) {
+    const glm::vec3 p[3] = {mesh.positions[tri.x], mesh.positions[tri.y], mesh.positions[tri.z]};
+    // The ray tracer's n_g (engine/trace/surface_table.cpp): cross(p1 - p0, p2 - p0), unit.
+    const glm::vec3 face = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
+    for (int k = 0; k < 3; ++k) {
+      const glm::vec3 n = mesh.smooth() ? mesh.normals[tri[k]] : face;
+      const float corner[kFloatsPerVertex] = {p[k].x, p[k].y, p[k].z, n.x,   n.y,
+                                              n.z,    face.x, face.y, face.z};
+      data.insert(data.end(), corner, corner + kFloatsPerVertex);
+    }
+  }
+  MeshBuffer b;
+  b.vertices = static_cast<GLsizei>(mesh.triangles.size() * 3);
+  glGenVertexArrays(1, &b.vertex_array);
+  glBindVertexArray(b.vertex_array);
+  glGenBuffers(1, &b.buffer);
+  glBindBuffer(GL_ARRAY_BUFFER, b.buffer);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(),
+               GL_STATIC_DRAW);
+  const GLsizei stride = kFloatsPerVertex * sizeof(float);
+  for (GLuint a = 0; a < 3; ++a) {
+    glVertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<const void*>(a * 3 * sizeof(float)));
+    glEnableVertexAttribArray(a);
+  }
+  glBindVertexArray(0);
+  return b;
+}
+
+void release(MeshBuffer& b) {
+  glDeleteBuffers(1, &b.buffer);
+  glDeleteVertexArrays(1, &b.vertex_array);
+}
+
+}  // namespace
+
+RasterGeometry::RasterGeometry() {
+  // The 12 triangles of [-1, 1]^3; winding does not matter (culling is off).
+  static const int kFaces[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
+                                   {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+  std::vector<float> corners;
+  for (const auto& f : kFaces) {
+    for (int k : {0, 1, 2, 0, 2, 3}) {
+      const int c = f[k];  // bit 0: x, bit 1: y, bit 2: z
+      corners.push_back((c & 1) ? 1.0f : -1.0f);
+      corners.push_back((c & 2) ? 1.0f : -1.0f);
+      corners.push_back((c & 4) ? 1.0f : -1.0f);
+    }
+  }
+  glGenVertexArrays(1, &m_cube_array);
+  glBindVertexArray(m_cube_array);
+  glGenBuffers(1, &m_cube_buffer);
+  glBindBuffer(GL_ARRAY_BUFFER, m_cube_buffer);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(corners.size() * sizeof(float)),
+               corners.data(), GL_STATIC_DRAW);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+  glEnableVertexAttribArray(0);
+  glBindVertexArray(0);
+}
+
+RasterGeometry::~RasterGeometry() {
+  for (auto& [key, entry] : m_meshes) release(entry.buffer);
+  glDeleteBuffers(1, &m_cube_buffer);
+  glDeleteVertexArrays(1, &m_cube_array);
+}
+
+int RasterGeometry::sync(const Scene& scene) {
+  std::set<const Mesh*> used;
+  int uploaded = 0;
+  for (const Object& o : scene.objects) {
+    if (o.type == ObjectType::sphere || !o.mesh) continue;
+    used.insert(o.mesh.get());
+    if (m_meshes.count(o.mesh.get()) != 0) continue;
+    m_meshes.emplace(o.mesh.get(), Entry{o.mesh, upload(*o.mesh)});
+    ++uploaded;
+  }
+  for (auto it = m_meshes.begin(); it != m_meshes.end();) {
+    if (used.count(it->first) != 0) {
+      ++it;
+      continue;
+    }
+    release(it->second.buffer);
+    it = m_meshes.erase(it);
+  }
+  return uploaded;
+}
+
+const MeshBuffer& RasterGeometry::mesh(const Mesh& mesh) const {
+  const auto found = m_meshes.find(&mesh);
+  if (found == m_meshes.end()) throw std::logic_error("raster geometry: mesh not synced");
+  return found->second.buffer;
+}
+
+std::size_t RasterGeometry::bytes() const {
+  std::size_t total = 36 * 3 * sizeof(float);
+  for (const auto& [key, entry] : m_meshes) {
+    total += static_cast<std::size_t>(entry.buffer.vertices) * kFloatsPerVertex * sizeof(float);
+  }
+  return total;
+}
+
+}  // namespace gloss

@@ -1,0 +1,64 @@
+#pragma once
+// The raster path's GL programs (raster_renderer.h), built on first use from the shaders/ files:
+// a version line and #defines for the variant, shaders/raster_common.glsl, the shading contract
+// shaders/phong_contract.glsl, then the stage's own file. One program per variant, kept.
+#include <functional>
+#include <map>
+#include <string>
+#include <tuple>
+#include <utility>
+
+#include <glad/gl.h>
+
+namespace gloss {
+
+enum class RasterShape { mesh, sphere };
+// shadow: distances to a light for its shadow maps; pixel / vertex: the five term outputs with
+// the contract per pixel or per mesh vertex (spheres are per pixel in both).
+enum class RasterPass { shadow, pixel, vertex };
+
+struct RasterVariant {
+  RasterShape shape = RasterShape::mesh;
+  RasterPass pass = RasterPass::pixel;
+  int light_count = 0;   // GLOSS_LIGHT_COUNT
+  bool shadows = false;  // GLOSS_SHADOWS: the shading passes look up the shadow maps
+  bool operator<(const RasterVariant& o) const {
+    return std::tie(shape, pass, light_count, shadows) <
+           std::tie(o.shape, o.pass, o.light_count, o.shadows);
+  }
+};
+
+// The most lights a raster program takes: its uniform arrays (5 vec3 per light) and its
+// shadow-map layers (6 per light) stay within GL 3.3's guaranteed minimums (1024 fragment
+// uniform components, 256 array layers).
+inline constexpr int kMaxRasterLights = 32;
+
+class RasterPrograms {
+ public:
+  // edit, when set, rewrites each stage's text before it is compiled (raster_renderer.h).
+  explicit RasterPrograms(std::function<std::string(const std::string&)> edit = {})
+      : m_edit(std::move(edit)) {}
+  ~RasterPrograms();
+  RasterPrograms(const RasterPrograms&) = delete;
+  RasterPrograms& operator=(const RasterPrograms&) = delete;
+
+  // The program of variant, built now if it is new; throws std::runtime_error with the GL log
+  // (and the variant) when it does not compile or link.
+  GLuint get(const RasterVariant& variant);
+
+  // The GLSL text of one stage of variant (tests print it when a build fails).
+  static std::string source(const RasterVariant& variant, GLenum stage);
+
+ private:
+  std::function<std::string(const std::string&)> m_edit;
+  std::map<RasterVariant, GLuint> m_programs;
+};
+
+// Uniform setters by name on the program in use (glGetUniformLocation each time: a hash lookup,
+// a few dozen per frame). Unknown or optimised-away names are ignored, as GL does with -1.
+void set_uniform(GLuint program, const char* name, int value);
+void set_uniform(GLuint program, const char* name, float value);
+void set_uniform(GLuint program, const char* name, float x, float y);
+void set_uniform(GLuint program, const char* name, const float* xyz, int count = 1);
+
+}  // namespace gloss

@@ -1,0 +1,276 @@
+#include "editor/gl/raster_renderer.h"
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+#include "editor/gl/raster_geometry.h"
+#include "editor/gl/raster_programs.h"
+#include "editor/gl/raster_view.h"
+#include "editor/gl/shadow_maps.h"
+
+namespace gloss {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr int kTargets = 5;  // total, emissive, ambient, diffuse, specular (raster_mesh.frag)
+
+double finish_ms(Clock::time_point& since) {
+  glFinish();  // llvmpipe and GPUs alike: the phase's work is done when the clock stops
+  const Clock::time_point now = Clock::now();
+  const double ms = std::chrono::duration<double, std::milli>(now - since).count();
+  since = now;
+  return ms;
+}
+
+// The GL state the renderer changes, put back afterwards so the editor's own drawing is not
+// disturbed.
+struct SavedState {
+  GLint framebuffer = 0, program = 0, vertex_array = 0, viewport[4] = {};
+  GLboolean depth_test = GL_FALSE, blend = GL_FALSE, cull = GL_FALSE;
+  SavedState() {
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertex_array);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    depth_test = glIsEnabled(GL_DEPTH_TEST);
+    blend = glIsEnabled(GL_BLEND);
+    cull = glIsEnabled(GL_CULL_FACE);
+  }
+  ~SavedState() {
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
+    glUseProgram(static_cast<GLuint>(program));
+    glBindVertexArray(static_cast<GLuint>(vertex_array));
+    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    depth_test ? glEnable(GL_DEPTH_TEST) : glDisable(GL_DEPTH_TEST);
+    blend ? glEnable(GL_BLEND) : glDisable(GL_BLEND);
+    cull ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
+  }
+};
+
+void set_material_uniforms(GLuint program, const Material& m) {
+  set_uniform(program, "gloss_ka", &m.ambient.x);
+  set_uniform(program, "gloss_kd", &m.diffuse.x);
+  set_uniform(program, "gloss_ks", &m.specular.x);
+  set_uniform(program, "gloss_ke", &m.emission.x);
+  set_uniform(program, "gloss_alpha", m.shininess);
+}
+
+// Everything of the contract that is the same for every object of the frame.
+void set_scene_uniforms(GLuint program, const Scene& scene) {
+  set_uniform(program, "gloss_scene_ambient", &scene.ambient.x);
+  set_uniform(program, "gloss_model", scene.render.model == ShadingModel::phong ? 0 : 1);
+  set_uniform(program, "gloss_energy_normalize", scene.render.energy_normalize ? 1 : 0);
+  const int n = static_cast<int>(scene.lights.size());
+  if (n == 0) return;
+  std::vector<float> position, ambient, diffuse, specular, attenuation;
+  for (const PointLight& l : scene.lights) {
+    position.insert(position.end(), {l.position.x, l.position.y, l.position.z});
+    ambient.insert(ambient.end(), {l.ambient.x, l.ambient.y, l.ambient.z});
+    diffuse.insert(diffuse.end(), {l.diffuse.x, l.diffuse.y, l.diffuse.z});
+    specular.insert(specular.end(), {l.specular.x, l.specular.y, l.specular.z});
+    attenuation.insert(attenuation.end(), {l.attenuation.x, l.attenuation.y, l.attenuation.z});
+  }
+  set_uniform(program, "gloss_light_position", position.data(), n);
+  set_uniform(program, "gloss_light_ambient", ambient.data(), n);
+  set_uniform(program, "gloss_light_diffuse", diffuse.data(), n);
+  set_uniform(program, "gloss_light_specular", specular.data(), n);
+  set_uniform(program, "gloss_light_attenuation", attenuation.data(), n);
+}
+
+}  // namespace
+
+struct RasterRenderer::Impl {
+  explicit Impl(SourceEdit edit) : programs(std::move(edit)) {}
+
+  RasterPrograms programs;
+  RasterGeometry geometry;
+  ShadowMaps shadows;
+  RasterTiming timing;
+
+  // The five float targets and their depth buffer, resized with the image.
+  GLuint framebuffer = 0, targets[kTargets] = {}, depth = 0;
+  int width = 0, height = 0;
+
+  ~Impl() {
+    if (framebuffer != 0) glDeleteFramebuffers(1, &framebuffer);
+    if (targets[0] != 0) glDeleteTextures(kTargets, targets);
+    if (depth != 0) glDeleteRenderbuffers(1, &depth);
+  }
+
+  void size_targets(int w, int h) {
+    if (framebuffer != 0 && w == width && h == height) return;
+    if (framebuffer == 0) {
+      glGenFramebuffers(1, &framebuffer);
+      glGenTextures(kTargets, targets);
+      glGenRenderbuffers(1, &depth);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    GLenum buffers[kTargets];
+    for (int i = 0; i < kTargets; ++i) {
+      glBindTexture(GL_TEXTURE_2D, targets[i]);
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      buffers[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, buffers[i], GL_TEXTURE_2D, targets[i], 0);
+    }
+    glBindRenderbuffer(GL_RENDERBUFFER, depth);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, w, h);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    glDrawBuffers(kTargets, buffers);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      throw std::runtime_error("the raster path's float render targets are not supported here");
+    }
+    width = w;
+    height = h;
+  }
+
+  // Draws every object of scene into the current framebuffer from view, with the programs of
+  // pass (one per shape); material uniforms only for the shading passes.
+  void draw_objects(const Scene& scene, const RasterView& view, RasterPass pass, bool shadows) {
+    const int lights = static_cast<int>(scene.lights.size());
+    GLuint current = 0;
+    for (const Object& o : scene.objects) {
+      const bool sphere = o.type == ObjectType::sphere;
+      // Spheres are impostors: per pixel in both shading passes.
+      const RasterPass own = sphere && pass == RasterPass::vertex ? RasterPass::pixel : pass;
+      const GLuint program =
+          programs.get({sphere ? RasterShape::sphere : RasterShape::mesh, own, lights, shadows});
+      if (program != current) {
+        glUseProgram(program);
+        current = program;
+        set_view_uniforms(program, view);
+        if (pass != RasterPass::shadow) {
+          set_scene_uniforms(program, scene);
+          set_uniform(program, "gloss_image_size", float(width), float(height));
+          if (shadows) {
+            set_uniform(program, "gloss_shadow_maps", 0);
+            set_uniform(program, "gloss_shadow_size", float(this->shadows.size()));
+            set_uniform(program, "gloss_shadow_bias", shadow_bias);
+          }
+        }
+      }
+      if (pass != RasterPass::shadow) {
+        set_material_uniforms(program, scene.materials.at(static_cast<std::size_t>(o.material)));
+      }
+      if (sphere) {
+        set_uniform(program, "gloss_sphere_centre", &o.center.x);
+        set_uniform(program, "gloss_sphere_radius", o.radius);
+        glBindVertexArray(geometry.cube());
+        glDrawArrays(GL_TRIANGLES, 0, 36);
+      } else if (o.mesh && !o.mesh->triangles.empty()) {
+        const MeshBuffer& b = geometry.mesh(*o.mesh);
+        glBindVertexArray(b.vertex_array);
+        glDrawArrays(GL_TRIANGLES, 0, b.vertices);
+      }
+    }
+  }
+
+  float shadow_bias = 0.0f;
+};
+
+RasterRenderer::RasterRenderer(SourceEdit edit) : m_impl(std::make_unique<Impl>(std::move(edit))) {
+  // Build the programs a one-light scene with shadows needs now, so that a shader that does not
+  // compile on this driver is reported when the raster path is chosen, not mid-frame.
+  for (RasterShape shape : {RasterShape::mesh, RasterShape::sphere}) {
+    for (RasterPass pass : {RasterPass::shadow, RasterPass::pixel, RasterPass::vertex}) {
+      if (shape == RasterShape::sphere && pass == RasterPass::vertex) continue;
+      m_impl->programs.get({shape, pass, 1, pass != RasterPass::shadow});
+    }
+  }
+}
+
+RasterRenderer::~RasterRenderer() = default;
+
+const RasterTiming& RasterRenderer::timing() const {
+  return m_impl->timing;
+}
+
+std::shared_ptr<RenderedFrame> RasterRenderer::render(const Scene& scene,
+                                                      const RasterSettings& settings, bool terms) {
+  const int lights = static_cast<int>(scene.lights.size());
+  if (lights > kMaxRasterLights) {
+    throw std::runtime_error("the raster path takes at most " + std::to_string(kMaxRasterLights) +
+                             " lights; this scene has " + std::to_string(lights));
+  }
+  if (settings.shadow_map_size < kMinShadowMapSize ||
+      settings.shadow_map_size > kMaxShadowMapSize) {
+    throw std::invalid_argument("shadow map size " + std::to_string(settings.shadow_map_size) +
+                                " is outside " + std::to_string(kMinShadowMapSize) + ".." +
+                                std::to_string(kMaxShadowMapSize));
+  }
+  const int w = scene.render.width, h = scene.render.height;
+  const RasterView view = camera_view(scene, w, h);  // throws for a degenerate camera first
+  Impl& m = *m_impl;
+  const SavedState saved;
+  glDisable(GL_CULL_FACE);  // two-sided surfaces; impostor boxes are seen from inside too
+  RasterTiming& t = m.timing;
+  t = {};
+  Clock::time_point since = Clock::now();
+
+  m.geometry.sync(scene);
+  t.upload_ms = finish_ms(since);
+
+  const bool shadows = scene.render.shadows && lights > 0;
+  if (shadows) {
+    m.shadows.update(scene, settings.shadow_map_size, [&](const RasterView& face) {
+      m.draw_objects(scene, face, RasterPass::shadow, false);
+    });
+    t.shadow_ms = finish_ms(since);
+  }
+
+  m.size_targets(w, h);
+  glBindFramebuffer(GL_FRAMEBUFFER, m.framebuffer);
+  glViewport(0, 0, w, h);
+  // A miss: the background in the total, 0 in every term (docs/spec/shading.md, first section).
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  const float background[4] = {scene.background.x, scene.background.y, scene.background.z, 0.0f};
+  glClearBufferfv(GL_COLOR, 0, background);
+  for (int i = 1; i < kTargets; ++i) glClearBufferfv(GL_COLOR, i, zero);
+  const float far_depth = 1.0f;
+  glClearBufferfv(GL_DEPTH, 0, &far_depth);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_BLEND);
+  if (shadows) {
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, m.shadows.texture());
+  }
+  m.shadow_bias = settings.shadow_bias;
+  m.draw_objects(
+      scene, view,
+      settings.shading == ShadingFrequency::vertex ? RasterPass::vertex : RasterPass::pixel,
+      shadows);
+  t.draw_ms = finish_ms(since);
+
+  auto frame = std::make_shared<RenderedFrame>();
+  Image* images[kTargets] = {&frame->images.total, &frame->images.emissive, &frame->images.ambient,
+                             &frame->images.diffuse, &frame->images.specular};
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);  // rows of vec3 floats: 12 w bytes, a multiple of 4
+  for (int i = 0; i < (terms ? kTargets : 1); ++i) {
+    *images[i] = Image(w, h);
+    glReadBuffer(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i));
+    // gloss_project negates y: GL's row 0 is the image's top row, as Image stores it.
+    glReadPixels(0, 0, w, h, GL_RGB, GL_FLOAT, images[i]->pixels.data());
+  }
+  t.readback_ms = finish_ms(since);
+  const GLenum error = glGetError();
+  if (error != GL_NO_ERROR) {
+    throw std::runtime_error("the raster path hit GL error " + std::to_string(error));
+  }
+
+  FrameInfo& info = frame->info;
+  info.width = w;
+  info.height = h;
+  info.spp = 1;
+  info.target_spp = 1;
+  info.pass_ms = t.total_ms();
+  info.since_change_ms = t.total_ms();
+  info.converged = true;
+  return frame;
+}
+
+}  // namespace gloss
