@@ -93,7 +93,6 @@ void draw_view_mode(App& app) {
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip("A: the ray tracer at 1 spp (pixel centres), B: the raster path (GLSL)");
     }
-    ImGui::SameLine();
     ImGui::RadioButton("per pixel | per vertex", &source, static_cast<int>(AbSource::pixel_vertex));
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip("the raster path with Phong shading (A) and Gouraud shading (B)");
@@ -140,7 +139,6 @@ void draw_renderer(App& app) {
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("OpenGL, one sample per pixel, shadow maps; redrawn on every change");
   }
-  ImGui::SameLine();
   ImGui::RadioButton("Automatic", &renderer, static_cast<int>(RendererChoice::automatic));
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("raster while the camera or a light is dragged, ray traced when still");
@@ -233,10 +231,10 @@ void draw_view_panel(App& app, ImVec2 pos, ImVec2 size) {
     return;
   }
   ImGui::PushItemWidth(-130.0f);  // room for "samples per pixel"
-  section_title("View");
-  draw_view_mode(app);
   section_title("Renderer");
   draw_renderer(app);
+  section_title("View");
+  draw_view_mode(app);
   section_title("Quality");
   draw_quality(app);
   section_title("Screenshot");

@@ -127,18 +127,9 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
       snapshot != nullptr ? snapshot->revision + 1 : 0;  // 0: none
   AbSides sides{{raster_effective(view, now_s), view.raster.shading}, {}};
   if (ab) sides = ab_sides(view.ab_source, sides.a.raster, view.raster.shading);
-  const bool any_raster = sides.a.raster || sides.b.raster;
-  if (any_raster && !raster_available()) sides.a.raster = sides.b.raster = false;
-  m_pushed_renderer = view.renderer;
-  m_pushed_raster = view.raster;
-
-  const bool changed =
-      !m_pushed_any || revision != m_pushed_revision || width != m_render_width ||
-      height != m_render_height || terms != m_pushed_terms ||
-      ab != (m_pushed_mode == ViewMode::ab) || (ab && view.keep_highlight_size != m_pushed_keep) ||
-      (ab && view.ab_source != m_pushed_source) ||
-      (ab && view.ab_source == AbSource::snapshot && snapshot_revision != m_pushed_snapshot) ||
-      !(sides.a == m_sides.a) || !(sides.b == m_sides.b);
+  if ((sides.a.raster || sides.b.raster) && !raster_available()) {
+    sides.a.raster = sides.b.raster = false;
+  }
   RasterKey key{revision,
                 ab ? snapshot_revision : 0,
                 width,
@@ -150,6 +141,18 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
                 sides,
                 view.raster};
   key.settings.shading = ShadingFrequency::pixel;  // each side's frequency is in sides
+  // The raster path failed on exactly this state: the ray tracer draws it.
+  if (m_raster_render_failed && key == m_raster_key) sides.a.raster = sides.b.raster = false;
+  m_pushed_renderer = view.renderer;
+  m_pushed_raster = view.raster;
+
+  const bool changed =
+      !m_pushed_any || revision != m_pushed_revision || width != m_render_width ||
+      height != m_render_height || terms != m_pushed_terms ||
+      ab != (m_pushed_mode == ViewMode::ab) || (ab && view.keep_highlight_size != m_pushed_keep) ||
+      (ab && view.ab_source != m_pushed_source) ||
+      (ab && view.ab_source == AbSource::snapshot && snapshot_revision != m_pushed_snapshot) ||
+      !(sides.a == m_sides.a) || !(sides.b == m_sides.b);
   const bool raster_dirty =
       (sides.a.raster || sides.b.raster) && (!m_raster_shown || !(key == m_raster_key));
   if (!changed && !raster_dirty) {
@@ -199,7 +202,7 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
     } else {
       m_label_a = ab_label_a(view.ab_source, snapshot);
       m_label_b = ab_label_b(view.ab_source, view.keep_highlight_size, view.raster.shading);
-      if (m_raster_failed &&
+      if (!sides.b.raster &&
           (view.ab_source == AbSource::cpu_gl || view.ab_source == AbSource::pixel_vertex)) {
         m_label_b += " - raster unavailable, ray traced";
       }
@@ -225,8 +228,9 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
     m_latency.pending_first_s = m_latency.pending_full_s = -1.0;
   }
   if (raster_dirty) {
-    show_raster(pair, sides, view.raster, terms, ab, now_s);
     m_raster_key = key;
+    m_raster_render_failed = !show_raster(pair, sides, view.raster, terms, ab, now_s);
+    if (m_raster_render_failed) glfwPostEmptyEvent();  // the next sync hands it to the ray tracer
   } else if (!sides.a.raster && !sides.b.raster) {
     m_raster_shown = false;
   }

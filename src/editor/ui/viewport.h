@@ -120,8 +120,9 @@ class Viewport {
   // during a moving gesture) and it can run.
   bool raster_effective(const ViewSettings& view, double now_s);
   bool raster_available();  // builds the renderer on first use; false when that failed
-  // Renders the raster sides of a (and b in the A/B view) and shows them.
-  void show_raster(const AbScenes& scenes, const AbSides& sides, const RasterSettings& settings,
+  // Renders the raster sides of a (and b in the A/B view) and shows them; false when render()
+  // threw (the message goes to the notice).
+  bool show_raster(const AbScenes& scenes, const AbSides& sides, const RasterSettings& settings,
                    bool terms, bool ab, double now_s);
   static void reset_gl_state();  // what the display shader and ImGui expect after a raster pass
 
@@ -150,8 +151,9 @@ class Viewport {
 
   // The raster path: built on the UI thread when first needed.
   std::unique_ptr<RasterRenderer> m_raster;
-  bool m_raster_failed = false;  // its constructor threw: the ray tracer draws every side
-  std::string m_raster_notice;   // the failure, until take_raster_notice() hands it out
+  bool m_raster_failed = false;     // its constructor threw: the ray tracer draws every side
+  std::string m_raster_notice;      // a failure, until take_raster_notice() hands it out
+  std::string m_raster_last_error;  // the last render failure announced (no repeats)
   // What the shown raster frames were rendered from; a new render only when it changes.
   struct RasterKey {
     std::uint64_t revision = 0, snapshot = 0;
@@ -164,6 +166,9 @@ class Viewport {
   };
   RasterKey m_raster_key;
   bool m_raster_shown = false;  // m_raster_key describes frames on screen
+  // render() threw for m_raster_key (too many lights, a GL error): the ray tracer draws that
+  // state; the raster path is tried again when the key changes.
+  bool m_raster_render_failed = false;
   bool m_shown_raster_a = false, m_shown_raster_b = false;
 
   // Layout of the last draw (screen coordinates).

@@ -68,7 +68,7 @@ void Viewport::reset_gl_state() {
   glBindTexture(GL_TEXTURE_2D, 0);
 }
 
-void Viewport::show_raster(const AbScenes& scenes, const AbSides& sides,
+bool Viewport::show_raster(const AbScenes& scenes, const AbSides& sides,
                            const RasterSettings& settings, bool terms, bool ab, double now_s) {
   try {
     if (sides.a.raster) {
@@ -90,14 +90,16 @@ void Viewport::show_raster(const AbScenes& scenes, const AbSides& sides,
       m_shown_raster_b = true;
     }
   } catch (const std::exception& e) {
-    // The next sync hands every side to the ray tracer.
+    // The caller hands this state to the ray tracer; a repeated message is not announced again
+    // (a drag in automatic mode tries every frame).
     reset_gl_state();
-    m_raster.reset();
-    m_raster_failed = true;
-    m_raster_notice = std::string("the raster path failed, the ray tracer draws: ") + e.what();
+    const std::string message = std::string("raster path: ") + e.what() + "; ray traced instead";
+    if (message != m_raster_last_error) m_raster_notice = message;
+    m_raster_last_error = message;
     m_raster_shown = false;
-    return;
+    return false;
   }
+  m_raster_last_error.clear();
   m_raster_shown = true;
   max_difference_of_shown();
   if (m_latency.edit_s >= 0.0) {  // the edit's first image is also its full-size one
@@ -105,6 +107,7 @@ void Viewport::show_raster(const AbScenes& scenes, const AbSides& sides,
     m_latency.pending_first_s = m_latency.pending_full_s = now_s;
   }
   glfwPostEmptyEvent();  // the next frame draws the new textures
+  return true;
 }
 
 std::shared_ptr<const RenderedFrame> Viewport::render_raster(const Scene& scene,
