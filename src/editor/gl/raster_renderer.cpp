@@ -1,8 +1,13 @@
 #include "editor/gl/raster_renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/geometric.hpp>
 
 #include "editor/gl/raster_geometry.h"
 #include "editor/gl/raster_programs.h"
@@ -56,6 +61,26 @@ void set_material_uniforms(GLuint program, const Material& m) {
   set_uniform(program, "gloss_ks", &m.specular.x);
   set_uniform(program, "gloss_ke", &m.emission.x);
   set_uniform(program, "gloss_alpha", m.shininess);
+}
+
+// Meshes before spheres, each nearest first: the depth test then rejects hidden fragments
+// before they are shaded (early depth test; impostors write gl_FragDepth and get none).
+std::vector<const Object*> draw_order(const Scene& scene, const glm::vec3& eye) {
+  std::vector<std::pair<float, const Object*>> keyed;
+  for (const Object& o : scene.objects) {
+    glm::vec3 centre = o.center;
+    glm::vec3 lo, hi;
+    if (o.type != ObjectType::sphere && o.mesh && mesh_bounds(*o.mesh, lo, hi)) {
+      centre = 0.5f * (lo + hi);
+    }
+    const float distance = glm::length(centre - eye);
+    keyed.emplace_back(o.type == ObjectType::sphere ? distance + 1e30f : distance, &o);
+  }
+  std::stable_sort(keyed.begin(), keyed.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<const Object*> order;
+  for (const auto& k : keyed) order.push_back(k.second);
+  return order;
 }
 
 // Everything of the contract that is the same for every object of the frame.
@@ -133,7 +158,8 @@ struct RasterRenderer::Impl {
   void draw_objects(const Scene& scene, const RasterView& view, RasterPass pass, bool shadows) {
     const int lights = static_cast<int>(scene.lights.size());
     GLuint current = 0;
-    for (const Object& o : scene.objects) {
+    for (const Object* object : draw_order(scene, view.origin)) {
+      const Object& o = *object;
       const bool sphere = o.type == ObjectType::sphere;
       // Spheres are impostors: per pixel in both shading passes.
       const RasterPass own = sphere && pass == RasterPass::vertex ? RasterPass::pixel : pass;
@@ -228,8 +254,14 @@ std::shared_ptr<RenderedFrame> RasterRenderer::render(const Scene& scene,
   // A miss: the background in the total, 0 in every term (docs/spec/shading.md, first section).
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   const float background[4] = {scene.background.x, scene.background.y, scene.background.z, 0.0f};
+  // Without terms only the total is written: on llvmpipe every float target costs memory
+  // traffic per covered pixel (the unused outputs are dropped, not stored).
+  const int targets = terms ? kTargets : 1;
+  GLenum buffers[kTargets];
+  for (int i = 0; i < kTargets; ++i) buffers[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
+  glDrawBuffers(targets, buffers);
   glClearBufferfv(GL_COLOR, 0, background);
-  for (int i = 1; i < kTargets; ++i) glClearBufferfv(GL_COLOR, i, zero);
+  for (int i = 1; i < targets; ++i) glClearBufferfv(GL_COLOR, i, zero);
   const float far_depth = 1.0f;
   glClearBufferfv(GL_DEPTH, 0, &far_depth);
   glEnable(GL_DEPTH_TEST);
@@ -250,7 +282,7 @@ std::shared_ptr<RenderedFrame> RasterRenderer::render(const Scene& scene,
   Image* images[kTargets] = {&frame->images.total, &frame->images.emissive, &frame->images.ambient,
                              &frame->images.diffuse, &frame->images.specular};
   glPixelStorei(GL_PACK_ALIGNMENT, 4);  // rows of vec3 floats: 12 w bytes, a multiple of 4
-  for (int i = 0; i < (terms ? kTargets : 1); ++i) {
+  for (int i = 0; i < targets; ++i) {
     *images[i] = Image(w, h);
     glReadBuffer(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i));
     // gloss_project negates y: GL's row 0 is the image's top row, as Image stores it.

@@ -5,6 +5,11 @@
 // with MIN blending rather than a depth test, so the stored value is the nearest distance any
 // fragment found, as exact as the fragment's own arithmetic. Redrawn only when the lights, the
 // geometry or the size changed.
+//
+// Why not GL cube map textures: one samplerCube per light would need an array of samplers
+// indexed by the light loop's counter, which GLSL 3.30 allows only with constant indices, and
+// cube map arrays are GL 4.0. Six layers per light in one array texture, with the face chosen
+// by the same major-axis rule GL uses, is a cube map that a loop can index.
 #include <cstddef>
 #include <functional>
 #include <vector>
