@@ -264,6 +264,9 @@ ScriptAction parse_line(Tokens& t) {
     return Command(c);
   }
   if (verb == "light") return parse_light(t);
+  if (verb == "tessellation") {  // every teapot's segments per patch side; the command checks it
+    return Command(SetTessellation{static_cast<int>(t.whole("segments per patch side"))});
+  }
   if (verb == "camera") {
     const std::string& what = t.word("camera action or field");
     if (what != "orbit") return parse_field(t, camera_fields(), FieldPart::camera, 0, what);

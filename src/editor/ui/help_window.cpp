@@ -63,11 +63,11 @@ void draw_help_window(App& app) {
   ImGui::BulletText(
       "Automatic: raster while the camera or a light is dragged, ray traced when still");
   ImGui::BulletText(
-      "Per vertex (Gouraud) against per pixel: compare with the teapot's tessellation low");
+      "Per vertex (Gouraud) against per pixel: lower the teapot tessellation to see it break");
   ImGui::BulletText("A/B: ray traced | raster, per pixel | per vertex, with the heat map");
   ImGui::TextWrapped(
       "Scripts: renderer cpu|gl|auto, shading pixel|vertex, shadow-map SIZE (16..4096), "
-      "shadow-bias TEXELS (>= 0), view ab cpu-gl|pixel-vertex");
+      "shadow-bias TEXELS (>= 0), tessellation N (1..64), view ab cpu-gl|pixel-vertex");
   ImGui::Spacing();
   ImGui::TextDisabled("Layout and recent files: %s", app.config_folder.string().c_str());
   if (app.autosaver) {

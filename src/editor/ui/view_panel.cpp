@@ -128,6 +128,24 @@ void draw_view_mode(App& app) {
   draw_histogram(app);
 }
 
+// The teapots' tessellation, the mesh resolution that per-vertex shading depends on (and the
+// ray tracer's silhouettes too); shown when the document has a teapot.
+void draw_tessellation(App& app) {
+  const Scene& scene = app.commands.scene();
+  const auto teapot = std::find_if(scene.objects.begin(), scene.objects.end(),
+                                   [](const Object& o) { return o.type == ObjectType::teapot; });
+  if (teapot == scene.objects.end()) return;
+  int level = teapot->params.tessellation;
+  if (ImGui::SliderInt("teapot tessellation", &level, 1, 64)) {
+    execute(app, SetTessellation{level});
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "segments per patch side of every teapot: 32 x 2 x N^2 triangles.\n"
+        "Low: per-vertex (Gouraud) highlights break up; raise it and they recover.");
+  }
+}
+
 // The viewport's renderer and, where the raster path draws something, its knobs (issue 12).
 void draw_renderer(App& app) {
   ViewSettings& view = app.view;
@@ -149,6 +167,7 @@ void draw_renderer(App& app) {
   }
   const bool raster_ab = view.mode == ViewMode::ab && (view.ab_source == AbSource::cpu_gl ||
                                                        view.ab_source == AbSource::pixel_vertex);
+  draw_tessellation(app);
   if (view.renderer == RendererChoice::cpu && !raster_ab) return;
   RasterSettings& raster = view.raster;
   int shading = static_cast<int>(raster.shading);
@@ -157,8 +176,9 @@ void draw_renderer(App& app) {
   ImGui::RadioButton("Per vertex (Gouraud)", &shading, static_cast<int>(ShadingFrequency::vertex));
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
-        "meshes lit at their vertices and the terms interpolated; spheres stay per pixel.\n"
-        "The teapot's vertices come from its tessellation (scene file, 1..64).");
+        "meshes lit at their vertices, the per-light weights interpolated and the shadow\n"
+        "test made per pixel; spheres stay per pixel. The teapot's vertices come from its\n"
+        "tessellation (the slider above).");
   }
   raster.shading = static_cast<ShadingFrequency>(shading);
   char size_text[16];
