@@ -24,6 +24,11 @@ std::string scene_to_json_text(const Scene& scene);
 // The scene with every teapot tessellated at level (1..64), rebuilt through the scene reader so
 // placement and degenerate-triangle handling stay the loader's; render settings are kept.
 Scene with_teapot_tessellation(const Scene& scene, int level);
+
+// A teapot object's world-space triangles from its params (tessellation, smooth, scale,
+// rotate_y, position), as the scene reader makes them (defined in scene_object_reader.cpp), for
+// edits that re-tessellate one teapot in place. Degenerate triangles are dropped, unreported.
+Mesh teapot_mesh(const ShapeParams& params);
 void save_scene(const Scene& scene, const std::string& path);
 
 }  // namespace gloss

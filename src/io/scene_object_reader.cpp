@@ -17,6 +17,7 @@
 #include "io/model_loader.h"
 #include "io/name_escape.h"
 #include "io/scene_json_reader.h"
+#include "io/scene_loader.h"
 #include "io/teapot_reader.h"
 #include "scene/limits.h"
 #include "scene/memory_estimate.h"
@@ -321,6 +322,13 @@ void read_scene_object(const nlohmann::json& value, std::size_t index,
     claim_geometry(context, path, to_string(type), mesh.triangles.size());
   object.mesh = std::make_shared<const Mesh>(std::move(mesh));
   out.push_back({std::move(object), material, reader.path("material")});
+}
+
+Mesh teapot_mesh(const ShapeParams& params) {
+  Mesh mesh = tessellate_patches(teapot_patches(), params.tessellation, params.smooth);
+  transform_mesh(mesh, placement(params));
+  drop_degenerate_triangles(mesh);
+  return mesh;
 }
 
 }  // namespace gloss

@@ -6,6 +6,7 @@
 #include "base/overloaded.h"
 #include "base/text_distance.h"
 #include "io/preset_table.h"
+#include "io/scene_loader.h"
 #include "scene/validation.h"
 
 namespace gloss {
@@ -116,6 +117,23 @@ bool continuous(const SetField& c) {
   return false;
 }
 
+// Every teapot re-tessellated in place (io/scene_object_reader.h's teapot_mesh, the reader's
+// own construction); the other objects keep their shared meshes.
+void set_tessellation(int level, Scene& scene) {
+  if (level < 1 || level > 64) {
+    throw CommandError("tessellation " + std::to_string(level) + " is outside 1..64");
+  }
+  bool any = false;
+  for (Object& o : scene.objects) {
+    if (o.type != ObjectType::teapot) continue;
+    any = true;
+    if (o.params.tessellation == level) continue;
+    o.params.tessellation = level;
+    o.mesh = std::make_shared<const Mesh>(teapot_mesh(o.params));
+  }
+  if (!any) throw CommandError("the scene has no teapot to tessellate");
+}
+
 }  // namespace
 
 const char* to_string(FieldPart part) {
@@ -168,6 +186,7 @@ void apply_command(const Command& command, Scene& scene) {
                    }
                    next.camera = orbit_camera(next.camera, c.yaw_deg, c.pitch_deg);
                  },
+                 [&](const SetTessellation& c) { set_tessellation(c.level, next); },
                  [&](const ReplaceScene& c) {
                    if (!c.scene) throw CommandError("no scene to open");
                    next = *c.scene;
@@ -205,6 +224,9 @@ std::string command_label(const Command& command) {
           [](const RemoveLight& c) { return "remove light " + std::to_string(c.light); },
           [](const SetCamera&) { return std::string("move camera"); },
           [](const OrbitCamera&) { return std::string("orbit camera"); },
+          [](const SetTessellation& c) {
+            return "set teapot tessellation to " + std::to_string(c.level);
+          },
           [](const ReplaceScene& c) { return c.label; },
       },
       command);
@@ -218,6 +240,8 @@ std::string merge_key(const Command& command) {
                                  " " + c.key;
                         },
                         [](const SetCamera&) { return std::string("camera"); },
+                        // A slider drag through the levels is one undo step.
+                        [](const SetTessellation&) { return std::string("tessellation"); },
                         [](const auto&) { return std::string(); },
                     },
                     command);

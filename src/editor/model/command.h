@@ -66,6 +66,11 @@ struct OrbitCamera {
   float yaw_deg = 0.0f;
   float pitch_deg = 0.0f;
 };
+// Re-tessellates every teapot of the document at level segments per patch side (1..64): the
+// mesh resolution, the companion knob of the raster path's per-vertex shading.
+struct SetTessellation {
+  int level = 8;
+};
 // Replaces the whole document (open a scene, add an OBJ file's objects).
 struct ReplaceScene {
   std::shared_ptr<const Scene> scene;
@@ -73,7 +78,7 @@ struct ReplaceScene {
 };
 
 using Command = std::variant<SetField, ApplyPreset, SetMaterial, SetModel, AddLight, RemoveLight,
-                             SetCamera, OrbitCamera, ReplaceScene>;
+                             SetCamera, OrbitCamera, SetTessellation, ReplaceScene>;
 
 // Applies command to scene and validates the result (scene/validation.h, the document's one
 // validator). Throws CommandError naming the bad argument or field; scene is then unchanged.

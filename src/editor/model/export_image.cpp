@@ -114,16 +114,33 @@ TextChunks export_text(const Scene& scene, const ViewSettings& view, ScreenshotK
                 scene.render.srgb ? "srgb" : "clamp", scene.render.shadows ? "on" : "off",
                 scene.render.energy_normalize ? "on" : "off",
                 view.mode == ViewMode::single ? to_string(view.single) : "total");
+  std::string line = settings;
+  if (view.renderer == RendererChoice::gl) {
+    // One sample per pixel at the centre, whatever spp says (raster_renderer.h).
+    std::snprintf(settings, sizeof settings, " renderer=gl shading=%s shadow_map=%d shadow_bias=%g",
+                  to_string(view.raster.shading), view.raster.shadow_map_size,
+                  view.raster.shadow_bias);
+    line += settings;
+  } else {
+    line += " renderer=cpu";
+  }
   return {{"Software", "gloss editor"},
-          {"gloss:settings", settings},
+          {"gloss:settings", line},
           {kSceneChunkKeyword, embedded_scene_text(scene)}};
+}
+
+bool export_needs_terms(const ViewSettings& view, ScreenshotKind kind) {
+  return kind == ScreenshotKind::terms ||
+         (view.mode == ViewMode::single && view.single != TermView::total);
 }
 
 Image render_export(const Scene& scene, const ViewSettings& view, ScreenshotKind kind) {
   RenderOptions options;
-  options.terms = kind == ScreenshotKind::terms ||
-                  (view.mode == ViewMode::single && view.single != TermView::total);
-  const TermImages terms = render(scene, options);
+  options.terms = export_needs_terms(view, kind);
+  return export_image(render(scene, options), view, kind);
+}
+
+Image export_image(const TermImages& terms, const ViewSettings& view, ScreenshotKind kind) {
   if (kind == ScreenshotKind::terms) {
     if (view.exposure == 0.0f) return term_sheet(terms);
     // Exposure applies to the terms, not to the labels drawn between them.

@@ -1,7 +1,8 @@
 #pragma once
 // Screenshot and export files: what goes into them and names that never replace a file. The
-// viewport and term-sheet exports are rendered by the CPU renderer at the document's full
-// resolution (scene.render), so they do not depend on the window's size or preview quality.
+// viewport and term-sheet exports are rendered at the document's full resolution (scene.render),
+// so they do not depend on the window's size or preview quality: by the CPU renderer here, by
+// the raster path in the editor when it draws the viewport (editor/ui/app_actions.cpp).
 #include <ctime>
 #include <filesystem>
 #include <string>
@@ -35,11 +36,19 @@ int term_sheet_band(int pane_height);
 // The single image the viewport kind exports: the total, or the term a single-term view shows.
 Image viewport_image(const TermImages& terms, const ViewSettings& view);
 
-// PNG text chunks that reproduce an export: the scene JSON and the view settings.
+// PNG text chunks that reproduce an export: the scene JSON and the view settings. view.renderer
+// names the renderer that made the image (cpu or gl; with gl the raster knobs follow).
 TextChunks export_text(const Scene& scene, const ViewSettings& view, ScreenshotKind kind);
 
-// Renders scene at scene.render's size and spp and returns the exposed image of kind (viewport
-// or terms; window screenshots come from the GL back buffer). Throws like render().
+// Whether an export of kind under view needs the four term images (the term sheet, one term).
+bool export_needs_terms(const ViewSettings& view, ScreenshotKind kind);
+
+// The exposed image of kind (viewport or terms) from rendered terms (the raster path's frame,
+// or render()'s images).
+Image export_image(const TermImages& terms, const ViewSettings& view, ScreenshotKind kind);
+
+// Renders scene with the CPU renderer at scene.render's size and spp and returns
+// export_image() of it (window screenshots come from the GL back buffer). Throws like render().
 Image render_export(const Scene& scene, const ViewSettings& view, ScreenshotKind kind);
 
 // Writes image for a script's `screenshot PATH`: a PATH naming a folder (existing, or ending in

@@ -19,8 +19,9 @@ void say_no_display(const std::string& reason) {
 }
 
 // A script without frames: `wait` returns at once (every export renders to convergence),
-// viewport and term screenshots render with the CPU renderer, a window screenshot is an error,
-// a started quality measurement is measured to its end at once and cancel does nothing.
+// viewport and term screenshots render with the CPU renderer (`renderer gl` included), a window
+// screenshot is an error, a started quality measurement is measured to its end at once and cancel
+// does nothing.
 class HeadlessHost : public ScriptHost {
  public:
   explicit HeadlessHost(const Scene& scene) : m_layer(scene) {}
@@ -37,9 +38,13 @@ class HeadlessHost : public ScriptHost {
       return failed(where, "a window screenshot needs a display");
     try {
       const Scene& scene = m_layer.scene();
-      const Image image = render_export(scene, m_view, a.kind);
+      // Without a window there is no GL: every renderer choice exports the ray tracer's image,
+      // and the file says so.
+      ViewSettings view = m_view;
+      view.renderer = RendererChoice::cpu;
+      const Image image = render_export(scene, view, a.kind);
       const std::filesystem::path written =
-          write_export(a.path, image, scene.render.srgb, export_text(scene, m_view, a.kind));
+          write_export(a.path, image, scene.render.srgb, export_text(scene, view, a.kind));
       saved(written);
       return LineResult::go_on();
     } catch (const std::exception& e) {

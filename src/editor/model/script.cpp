@@ -183,10 +183,16 @@ bool parse_view_extra(Tokens& t, const std::string& mode, ScriptAction& out) {
     v.mode = ViewMode::ab;
     if (!t.done()) {
       const std::string& source = t.word("A/B source");
-      if (source != "snapshot") {
-        throw std::runtime_error("view ab takes nothing or 'snapshot', got '" + source + "'");
+      if (source == "snapshot") {
+        v.ab_source = AbSource::snapshot;
+      } else if (source == "cpu-gl") {
+        v.ab_source = AbSource::cpu_gl;
+      } else if (source == "pixel-vertex") {
+        v.ab_source = AbSource::pixel_vertex;
+      } else {
+        throw std::runtime_error(
+            "view ab takes nothing, 'snapshot', 'cpu-gl' or 'pixel-vertex', got '" + source + "'");
       }
-      v.ab_source = AbSource::snapshot;
     }
     out = v;
     return true;
@@ -209,6 +215,48 @@ ScriptAction parse_inspect(Tokens& t) {
   a.x = t.index("pixel x");
   a.y = t.index("pixel y");
   return a;
+}
+
+// ---- The GLSL path (issue 12): renderer choice and raster knobs ----
+// `renderer cpu|gl|auto`, `shading pixel|vertex`, `shadow-map SIZE`, `shadow-bias TEXELS`;
+// false when verb is none of them.
+bool parse_raster_line(Tokens& t, const std::string& verb, ScriptAction& out) {
+  if (verb == "renderer") {
+    RendererAction a;
+    const std::string& name = t.word("renderer");
+    if (!parse_renderer_choice(name, a.choice)) {
+      throw std::runtime_error("renderer must be cpu, gl or auto, got '" + name + "'");
+    }
+    out = a;
+    return true;
+  }
+  if (verb == "shading") {
+    ShadingAction a;
+    const std::string& name = t.word("shading frequency");
+    if (!parse_shading_frequency(name, a.frequency)) {
+      throw std::runtime_error("shading must be pixel or vertex, got '" + name + "'");
+    }
+    out = a;
+    return true;
+  }
+  if (verb == "shadow-map") {
+    const double size = t.whole("shadow map size");
+    if (size < kMinShadowMapSize || size > kMaxShadowMapSize) {
+      throw std::runtime_error("shadow-map must be " + std::to_string(kMinShadowMapSize) + ".." +
+                               std::to_string(kMaxShadowMapSize) + " texels");
+    }
+    out = ShadowMapAction{static_cast<int>(size)};
+    return true;
+  }
+  if (verb == "shadow-bias") {
+    const float texels = t.number("shadow bias in texels");
+    if (!(texels >= 0.0f) || !std::isfinite(texels)) {
+      throw std::runtime_error("shadow-bias must be a finite number of texels >= 0");
+    }
+    out = ShadowBiasAction{texels};
+    return true;
+  }
+  return false;
 }
 
 ScriptAction parse_line(Tokens& t) {
@@ -234,6 +282,9 @@ ScriptAction parse_line(Tokens& t) {
     return Command(c);
   }
   if (verb == "light") return parse_light(t);
+  if (verb == "tessellation") {  // every teapot's segments per patch side; the command checks it
+    return Command(SetTessellation{static_cast<int>(t.whole("segments per patch side"))});
+  }
   if (verb == "camera") {
     const std::string& what = t.word("camera action or field");
     if (what != "orbit") return parse_field(t, camera_fields(), FieldPart::camera, 0, what);
@@ -276,8 +327,8 @@ ScriptAction parse_line(Tokens& t) {
       if (!parse_term_view(term, v.term)) throw std::runtime_error("unknown term '" + term + "'");
     } else if (!parse_view_mode(mode, v.mode) || v.mode == ViewMode::single) {
       throw std::runtime_error(
-          "view must be render, terms, ab, lobe, 'term NAME', 'ab snapshot' or 'clipped on|off', "
-          "got '" +
+          "view must be render, terms, ab, lobe, 'term NAME', 'ab snapshot|cpu-gl|pixel-vertex' "
+          "or 'clipped on|off', got '" +
           mode + "'");
     }
     if (v.mode == ViewMode::lobe && !t.done()) return parse_lobe_elevation(t, v);
@@ -305,6 +356,7 @@ ScriptAction parse_line(Tokens& t) {
     throw std::runtime_error(
         "quality must be measure, start, cancel, 'csv PATH' or 'raster PATH', got '" + what + "'");
   }
+  if (ScriptAction raster; parse_raster_line(t, verb, raster)) return raster;
   // Issue 14: the memory report.
   if (verb == "memory") return MemoryAction{};
   // Issue 12: the GLSL path.

@@ -23,8 +23,9 @@ struct ScreenshotAction {
 };
 struct ViewAction {
   ViewMode mode = ViewMode::render;
-  TermView term = TermView::total;        // for ViewMode::single
-  AbSource ab_source = AbSource::models;  // for ViewMode::ab: `view ab` or `view ab snapshot`
+  TermView term = TermView::total;  // for ViewMode::single
+  // for ViewMode::ab: `view ab`, `view ab snapshot`, `view ab cpu-gl`, `view ab pixel-vertex`
+  AbSource ab_source = AbSource::models;
   float lobe_elevation_deg = -1.0f;  // for ViewMode::lobe: 0..90, or -1 to keep the current one
 };
 // ---- Exposure and snapshot comparison (issue 13, items 3 and 4) ----
@@ -83,11 +84,29 @@ struct ExportGlslAction {
   int object = -1;  // -1: the host's selected object
 };
 
+// `renderer cpu|gl|auto`: which renderer draws the viewport (raster_settings.h).
+struct RendererAction {
+  RendererChoice choice = RendererChoice::cpu;
+};
+// `shading pixel|vertex`: the raster path's shading frequency.
+struct ShadingAction {
+  ShadingFrequency frequency = ShadingFrequency::pixel;
+};
+// `shadow-map SIZE`: texels per cube face side, kMinShadowMapSize..kMaxShadowMapSize.
+struct ShadowMapAction {
+  int size = 1024;
+};
+// `shadow-bias TEXELS`: the raster shadow test's bias, >= 0.
+struct ShadowBiasAction {
+  float texels = 1.5f;
+};
+
 using ScriptAction =
     std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction, ViewAction,
                  ExposureAction, SelectAction, StatsAction, SleepAction, AnimateAction, QuitAction,
                  QualityAction, InspectAction, ClippedOverlayAction, SnapshotAction, MemoryAction,
-                 ExportGlslAction>;
+                 ExportGlslAction, RendererAction, ShadingAction, ShadowMapAction,
+                 ShadowBiasAction>;
 
 struct ScriptLine {
   int line = 0;  // 1-based line number in the file

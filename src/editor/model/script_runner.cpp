@@ -131,6 +131,22 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
             [&](const InspectAction& a) { return inspect(host, a, where); },
             [&](const MemoryAction&) { return host.memory(); },
             [&](const ExportGlslAction& a) { return export_glsl_line(host, a, where); },
+            [&](const RendererAction& a) {
+              host.view().renderer = a.choice;
+              return LineResult::go_on();
+            },
+            [&](const ShadingAction& a) {
+              host.view().raster.shading = a.frequency;
+              return LineResult::go_on();
+            },
+            [&](const ShadowMapAction& a) {
+              host.view().raster.shadow_map_size = a.size;
+              return LineResult::go_on();
+            },
+            [&](const ShadowBiasAction& a) {
+              host.view().raster.shadow_bias = a.texels;
+              return LineResult::go_on();
+            },
         },
         line.action);
   } catch (const CommandError& e) {

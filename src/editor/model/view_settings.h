@@ -5,6 +5,8 @@
 // exports all follow it.
 #include <string>
 
+#include "editor/model/raster_settings.h"
+
 namespace gloss {
 
 // render: the total image; terms: emissive+ambient, diffuse, specular and total in a 2x2 sheet;
@@ -20,9 +22,10 @@ const char* to_string(TermView term);
 const char* display_name(TermView term);  // "emissive + ambient"
 bool parse_term_view(const std::string& name, TermView& term);
 
-// What the A/B view compares (ab_compare.h): the document as Phong | Blinn-Phong, or the
-// snapshot taken with Snapshot | the live document.
-enum class AbSource { models, snapshot };
+// What the A/B view compares (ab_compare.h): the document as Phong | Blinn-Phong, the snapshot
+// taken with Snapshot | the live document, the ray tracer at 1 spp | the raster path (cpu_gl), or
+// the raster path per pixel | per vertex (pixel_vertex).
+enum class AbSource { models, snapshot, cpu_gl, pixel_vertex };
 
 enum class ScreenshotKind { viewport, terms, window };
 const char* to_string(ScreenshotKind kind);
@@ -34,6 +37,9 @@ enum class LobeEnergy { scene, on, off };
 
 struct ViewSettings {
   ViewMode mode = ViewMode::render;
+  // Which renderer draws the viewport (raster_settings.h) and the raster path's knobs.
+  RendererChoice renderer = RendererChoice::cpu;
+  RasterSettings raster;
   TermView single = TermView::specular;   // shown by ViewMode::single
   float exposure = 0.0f;                  // stops: displayed value = linear * 2^exposure
   bool heat_auto_scale = true;            // heat scale = largest difference of the shown pair

@@ -299,6 +299,9 @@ void run_frame(App& app) {
   }
   app.viewport.sync(app.commands.scene(), app.commands.revision(), app.view,
                     app.snapshot ? &*app.snapshot : nullptr, frame_start);
+  if (const std::string raster = app.viewport.take_raster_notice(); !raster.empty()) {
+    app.notices.error(raster, frame_start);
+  }
   // Once an edit's image has converged and is on screen the editor idles: the memory its passes
   // freed goes back to the system (a few ms, once per converged image).
   if (app.viewport.uploads() != app.released_at_upload &&

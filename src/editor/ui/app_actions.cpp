@@ -176,11 +176,28 @@ void start_screenshot(App& app, ScreenshotKind kind, const std::string& path, bo
     return;
   }
   const Scene scene = app.commands.scene();
-  const ViewSettings view = app.view;
+  ViewSettings view = app.view;
+  // The raster path draws the viewport: the export is its frame at the document's size, drawn
+  // here (it needs the GL context) and written on the worker. Automatic exports the still image,
+  // the ray tracer's.
+  std::shared_ptr<const RenderedFrame> raster;
+  std::string raster_error;
+  if (view.renderer == RendererChoice::gl) {
+    try {
+      raster = app.viewport.render_raster(scene, view.raster, export_needs_terms(view, kind));
+      if (!raster) raster_error = "the raster path is unavailable (see the notice)";
+    } catch (const std::exception& e) {
+      raster_error = std::string("the raster path failed: ") + e.what();
+    }
+  } else {
+    view.renderer = RendererChoice::cpu;
+  }
   PendingExport job;
   job.from_script = from_script;
-  job.path = std::async(std::launch::async, [scene, view, kind, path] {
-    const Image image = render_export(scene, view, kind);
+  job.path = std::async(std::launch::async, [scene, view, kind, path, raster, raster_error] {
+    if (!raster_error.empty()) throw std::runtime_error(raster_error);
+    const Image image =
+        raster ? export_image(raster->images, view, kind) : render_export(scene, view, kind);
     const TextChunks text = export_text(scene, view, kind);
     if (path.empty()) {
       return write_png_unique(view.screenshot_dir, std::string("gloss-") + to_string(kind), image,

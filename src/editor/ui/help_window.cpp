@@ -29,7 +29,8 @@ void draw_help_window(App& app) {
   }
   ImGui::TextWrapped(
       "gloss edits Phong materials live: the viewport shows the CPU ray tracer's image, "
-      "refined pass by pass. Every edit can be undone. The full guide: %s",
+      "refined pass by pass, or the same scene drawn by OpenGL shaders (Renderer, below). "
+      "Every edit can be undone. The full guide: %s",
       doc_path("editor.md").c_str());
   if (ImGui::BeginTable("##keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
     ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, 240.0f);
@@ -54,6 +55,19 @@ void draw_help_window(App& app) {
     row("Ctrl+click a slider", "type an exact value");
     ImGui::EndTable();
   }
+  ImGui::Spacing();
+  // The GLSL path (issue 12): docs/editor.md, "Raster (GLSL) path".
+  ImGui::TextUnformatted("Renderer (View & Quality panel)");
+  ImGui::BulletText("Ray traced: exact, refined to the scene's spp");
+  ImGui::BulletText("Raster (GLSL): one sample per pixel, hard shadows from shadow maps");
+  ImGui::BulletText(
+      "Automatic: raster while the camera or a light is dragged, ray traced when still");
+  ImGui::BulletText(
+      "Per vertex (Gouraud) against per pixel: lower the teapot tessellation to see it break");
+  ImGui::BulletText("A/B: ray traced | raster, per pixel | per vertex, with the heat map");
+  ImGui::TextWrapped(
+      "Scripts: renderer cpu|gl|auto, shading pixel|vertex, shadow-map SIZE (16..4096), "
+      "shadow-bias TEXELS (>= 0), tessellation N (1..64), view ab cpu-gl|pixel-vertex");
   ImGui::Spacing();
   ImGui::TextDisabled("Layout and recent files: %s", app.config_folder.string().c_str());
   if (app.autosaver) {

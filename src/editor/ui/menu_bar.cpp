@@ -121,6 +121,17 @@ void view_menu(App& app) {
     view.mode = ViewMode::ab;
     view.ab_source = AbSource::snapshot;
   }
+  // The GLSL path (issue 12): the two A/B comparisons the raster path adds.
+  if (ImGui::MenuItem("A/B ray traced vs raster (GLSL)", nullptr,
+                      view.mode == ViewMode::ab && view.ab_source == AbSource::cpu_gl)) {
+    view.mode = ViewMode::ab;
+    view.ab_source = AbSource::cpu_gl;
+  }
+  if (ImGui::MenuItem("A/B raster per pixel vs per vertex", nullptr,
+                      view.mode == ViewMode::ab && view.ab_source == AbSource::pixel_vertex)) {
+    view.mode = ViewMode::ab;
+    view.ab_source = AbSource::pixel_vertex;
+  }
   ImGui::MenuItem("Show clipped pixels", nullptr, &view.show_clipped);
   ImGui::Separator();
   const bool srgb = app.commands.scene().render.srgb;

@@ -33,7 +33,16 @@ std::string stats_text(App& app) {
                 app.frame_times.size, latency.first_image_ms, latency.full_image_ms, info.pass,
                 info.spp, info.target_spp, info.width, info.height, info.pass_ms,
                 info.since_change_ms, rays_per_s, 100.0 * clipped_share);
-  return text;
+  // Which renderer drew the shown frame (issue 12); in the A/B view both sides and the largest
+  // difference the heat map scales to.
+  std::string line = text;
+  line += app.viewport.shown_raster_a() ? " renderer=gl" : " renderer=cpu";
+  if (app.view.mode == ViewMode::ab) {
+    std::snprintf(text, sizeof text, " b_renderer=%s ab_max_difference=%.4g",
+                  app.viewport.shown_raster_b() ? "gl" : "cpu", app.viewport.max_difference());
+    line += text;
+  }
+  return line;
 }
 
 void ScriptPlayer::fail(App& app, const std::string& message, int status) {

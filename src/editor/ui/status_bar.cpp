@@ -1,5 +1,5 @@
-// The status bar: the renderer's progress and speed, the UI's own frame time, the measured delay
-// from an edit to its image, and the newest message.
+// The status bar: which renderer drew the shown frame, its progress and speed, the UI's own frame
+// time, the measured delay from an edit to its image, and the newest message.
 #include <cstdio>
 
 #include <imgui.h>
@@ -27,7 +27,12 @@ void draw_status_bar(App& app, ImVec2 pos, ImVec2 size) {
                        autosave_notice(*app.autosaver).c_str());
     ImGui::SameLine();
   }
-  if (const RenderedFrame* frame = app.viewport.shown_frame()) {
+  const RenderedFrame* frame = app.viewport.shown_frame();
+  if (frame != nullptr && app.viewport.shown_raster_a()) {
+    // One pass at one sample per pixel: its time is the whole frame's (raster_renderer.h).
+    const FrameInfo& info = frame->info;
+    ImGui::Text("raster (GLSL) | %dx%d | %.1f ms/frame", info.width, info.height, info.pass_ms);
+  } else if (frame != nullptr) {
     const FrameInfo& info = frame->info;
     const double rays_per_s =
         info.pass_ms > 0.0 ? static_cast<double>(info.rays) / (info.pass_ms * 1e-3) : 0.0;
@@ -37,11 +42,22 @@ void draw_status_bar(App& app, ImVec2 pos, ImVec2 size) {
     } else {
       std::snprintf(speed, sizeof speed, "re-shade, no rays");  // shade/exponent-class edits
     }
-    ImGui::Text("pass %d | %d/%d spp | %dx%d | %.1f ms/pass | %s | %s", info.pass, info.spp,
-                info.target_spp, info.width, info.height, info.pass_ms, speed,
+    ImGui::Text("ray traced | pass %d | %d/%d spp | %dx%d | %.1f ms/pass | %s | %s", info.pass,
+                info.spp, info.target_spp, info.width, info.height, info.pass_ms, speed,
                 info.converged ? "converged" : "rendering");
   } else {
     ImGui::TextUnformatted("waiting for the first frame");
+  }
+  // In the A/B view the B side may come from the other renderer (ab_compare.h).
+  const RenderedFrame* b = app.viewport.shown_frame_b();
+  if (app.view.mode == ViewMode::ab && b != nullptr &&
+      app.viewport.shown_raster_b() != app.viewport.shown_raster_a()) {
+    ImGui::SameLine();
+    if (app.viewport.shown_raster_b()) {
+      ImGui::Text("| B: raster (GLSL) %.1f ms/frame", b->info.pass_ms);
+    } else {
+      ImGui::Text("| B: ray traced %d/%d spp", b->info.spp, b->info.target_spp);
+    }
   }
   ImGui::SameLine();
   const LatencyProbe& latency = app.viewport.latency();

@@ -1,9 +1,11 @@
-// The View & Quality panel: view mode, exposure, heat-map scale, the document's render settings
-// (scene/fields.h's render table), the preview scale, and screenshots. View settings are window
-// preferences (not undone); render settings are the document's and go through commands.
+// The View & Quality panel: view mode, exposure, heat-map scale, the renderer and the raster
+// path's knobs (issue 12), the document's render settings (scene/fields.h's render table), the
+// preview scale, and screenshots. View settings are window preferences (not undone); render
+// settings are the document's and go through commands.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -87,6 +89,14 @@ void draw_view_mode(App& app) {
     if (!app.snapshot) ImGui::BeginDisabled();
     ImGui::RadioButton("snapshot | live", &source, static_cast<int>(AbSource::snapshot));
     if (!app.snapshot) ImGui::EndDisabled();
+    ImGui::RadioButton("ray traced | raster", &source, static_cast<int>(AbSource::cpu_gl));
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("A: the ray tracer at 1 spp (pixel centres), B: the raster path (GLSL)");
+    }
+    ImGui::RadioButton("per pixel | per vertex", &source, static_cast<int>(AbSource::pixel_vertex));
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("the raster path with Phong shading (A) and Gouraud shading (B)");
+    }
     view.ab_source = static_cast<AbSource>(source);
     ImGui::Checkbox("automatic heat scale", &view.heat_auto_scale);
     if (!view.heat_auto_scale) {
@@ -116,6 +126,80 @@ void draw_view_mode(App& app) {
   ImGui::SameLine();
   if (ImGui::SmallButton("0")) view.exposure = 0.0f;
   draw_histogram(app);
+}
+
+// The teapots' tessellation, the mesh resolution that per-vertex shading depends on (and the
+// ray tracer's silhouettes too); shown when the document has a teapot.
+void draw_tessellation(App& app) {
+  const Scene& scene = app.commands.scene();
+  const auto teapot = std::find_if(scene.objects.begin(), scene.objects.end(),
+                                   [](const Object& o) { return o.type == ObjectType::teapot; });
+  if (teapot == scene.objects.end()) return;
+  int level = teapot->params.tessellation;
+  if (ImGui::SliderInt("teapot tessellation", &level, 1, 64)) {
+    execute(app, SetTessellation{level});
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "segments per patch side of every teapot: 32 x 2 x N^2 triangles.\n"
+        "Low: per-vertex (Gouraud) highlights break up; raise it and they recover.");
+  }
+}
+
+// The viewport's renderer and, where the raster path draws something, its knobs (issue 12).
+void draw_renderer(App& app) {
+  ViewSettings& view = app.view;
+  int renderer = static_cast<int>(view.renderer);
+  ImGui::RadioButton("Ray traced", &renderer, static_cast<int>(RendererChoice::cpu));
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("exact, refined pass by pass to the scene's spp");
+  ImGui::SameLine();
+  ImGui::RadioButton("Raster (GLSL)", &renderer, static_cast<int>(RendererChoice::gl));
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("OpenGL, one sample per pixel, shadow maps; redrawn on every change");
+  }
+  ImGui::RadioButton("Automatic", &renderer, static_cast<int>(RendererChoice::automatic));
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("raster while the camera or a light is dragged, ray traced when still");
+  }
+  view.renderer = static_cast<RendererChoice>(renderer);
+  if (app.viewport.raster_unavailable()) {
+    ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.35f, 1.0f), "raster unavailable: ray traced");
+  }
+  const bool raster_ab = view.mode == ViewMode::ab && (view.ab_source == AbSource::cpu_gl ||
+                                                       view.ab_source == AbSource::pixel_vertex);
+  draw_tessellation(app);
+  if (view.renderer == RendererChoice::cpu && !raster_ab) return;
+  RasterSettings& raster = view.raster;
+  int shading = static_cast<int>(raster.shading);
+  ImGui::RadioButton("Per pixel", &shading, static_cast<int>(ShadingFrequency::pixel));
+  ImGui::SameLine();
+  ImGui::RadioButton("Per vertex (Gouraud)", &shading, static_cast<int>(ShadingFrequency::vertex));
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "meshes lit at their vertices, the per-light weights interpolated and the shadow\n"
+        "test made per pixel; spheres stay per pixel. The teapot's vertices come from its\n"
+        "tessellation (the slider above).");
+  }
+  raster.shading = static_cast<ShadingFrequency>(shading);
+  char size_text[16];
+  std::snprintf(size_text, sizeof size_text, "%d", raster.shadow_map_size);
+  if (ImGui::BeginCombo("shadow map", size_text)) {
+    for (int size = 256; size <= 4096; size *= 2) {
+      std::snprintf(size_text, sizeof size_text, "%d", size);
+      if (ImGui::Selectable(size_text, size == raster.shadow_map_size)) {
+        raster.shadow_map_size = size;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("texels per side of each light's cube shadow map (scene shadows on)");
+  }
+  ImGui::DragFloat("shadow bias", &raster.shadow_bias, 0.05f, 0.0f, 16.0f, "%.2f texels");
+  raster.shadow_bias = std::max(raster.shadow_bias, 0.0f);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("too small: shadow acne; too large: light leaks under contact shadows");
+  }
 }
 
 void draw_quality(App& app) {
@@ -167,6 +251,8 @@ void draw_view_panel(App& app, ImVec2 pos, ImVec2 size) {
     return;
   }
   ImGui::PushItemWidth(-130.0f);  // room for "samples per pixel"
+  section_title("Renderer");
+  draw_renderer(app);
   section_title("View");
   draw_view_mode(app);
   section_title("Quality");

@@ -21,19 +21,19 @@ bool needs_terms(const ViewSettings& view) {
          (view.mode == ViewMode::single && view.single != TermView::total);
 }
 
-float shown_heat_scale(const ViewSettings& view, float max_difference) {
-  return view.heat_auto_scale ? std::max(max_difference, 1e-4f) : view.heat_scale;
+// terms: publish the four term images too (the term views only: four more images per pass).
+std::unique_ptr<ProgressiveRenderer> make_cpu_renderer(bool terms) {
+  ProgressiveOptions options;
+  options.terms = terms;
+  auto renderer = std::make_unique<ProgressiveRenderer>(options);
+  // Runs on a render worker: wakes the event loop, which uploads the frame.
+  renderer->set_on_publish([] { glfwPostEmptyEvent(); });
+  return renderer;
 }
 
 }  // namespace
 
-Viewport::Viewport() {
-  ProgressiveOptions options;
-  options.terms = false;  // turned on by the term views only: four more images per pass
-  m_a = std::make_unique<ProgressiveRenderer>(options);
-  // Runs on a render worker: wakes the event loop, which uploads the frame.
-  m_a->set_on_publish([] { glfwPostEmptyEvent(); });
-}
+Viewport::Viewport() : m_a(make_cpu_renderer(false)) {}
 
 Viewport::~Viewport() = default;
 
@@ -52,17 +52,35 @@ void Viewport::upload(const RenderedFrame& frame, bool b_side) {
   }
 }
 
-void Viewport::upload_frames(double now_s) {
-  bool new_a = false, new_b = false;
-  if (std::shared_ptr<const RenderedFrame> a = m_a->latest(); a && a != m_frame_a) {
-    upload(*a, false);
-    m_frame_a = std::move(a);
-    new_a = true;
+void Viewport::max_difference_of_shown() {
+  if (m_image_a && m_image_b) {
+    m_max_difference = gloss::max_difference(m_image_a->images.total, m_image_b->images.total);
   }
-  if (m_b) {
-    if (std::shared_ptr<const RenderedFrame> b = m_b->latest(); b && b != m_frame_b) {
+}
+
+void Viewport::upload_frames(double now_s) {
+  // A side the ray tracer took over from the raster path keeps the raster frame until the ray
+  // tracer's first full-size frame: its coarse previews would be a step back.
+  auto takes = [&](const RenderedFrame& frame, bool shown_raster) {
+    return !shown_raster ||
+           (frame.info.width == m_render_width && frame.info.height == m_render_height);
+  };
+  bool new_a = false, new_b = false;
+  if (m_a && !m_sides.a.raster) {
+    if (std::shared_ptr<const RenderedFrame> a = m_a->latest();
+        a && a != m_frame_a && takes(*a, m_shown_raster_a)) {
+      upload(*a, false);
+      m_frame_a = std::move(a);
+      m_shown_raster_a = false;
+      new_a = true;
+    }
+  }
+  if (m_b && !m_sides.b.raster) {
+    if (std::shared_ptr<const RenderedFrame> b = m_b->latest();
+        b && b != m_frame_b && takes(*b, m_shown_raster_b)) {
       upload(*b, true);
       m_frame_b = std::move(b);
+      m_shown_raster_b = false;
       new_b = true;
     }
   }
@@ -71,9 +89,7 @@ void Viewport::upload_frames(double now_s) {
   // the adaptive-AA merge) leaves the texture, and these, as they were.
   if (new_a && m_frame_a->images.total.width > 0) m_image_a = m_frame_a;
   if (new_b && m_frame_b->images.total.width > 0) m_image_b = m_frame_b;
-  if ((new_a || new_b) && m_image_a && m_image_b) {
-    m_max_difference = gloss::max_difference(m_image_a->images.total, m_image_b->images.total);
-  }
+  if (new_a || new_b) max_difference_of_shown();
   if (new_a && m_latency.edit_s >= 0.0 && m_frame_a->info.generation > m_latency.generation) {
     if (!m_latency.first_shown) {
       m_latency.first_shown = true;
@@ -109,68 +125,115 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
   const bool ab = view.mode == ViewMode::ab;
   const std::uint64_t snapshot_revision =
       snapshot != nullptr ? snapshot->revision + 1 : 0;  // 0: none
+  AbSides sides{{raster_effective(view, now_s), view.raster.shading}, {}};
+  if (ab) sides = ab_sides(view.ab_source, sides.a.raster, view.raster.shading);
+  if ((sides.a.raster || sides.b.raster) && !raster_available()) {
+    sides.a.raster = sides.b.raster = false;
+  }
+  RasterKey key{revision,
+                ab ? snapshot_revision : 0,
+                width,
+                height,
+                terms,
+                ab,
+                ab && view.keep_highlight_size,
+                ab ? view.ab_source : AbSource::models,
+                sides,
+                view.raster};
+  key.settings.shading = ShadingFrequency::pixel;  // each side's frequency is in sides
+  // The raster path failed on exactly this state: the ray tracer draws it.
+  if (m_raster_render_failed && key == m_raster_key) sides.a.raster = sides.b.raster = false;
+  m_pushed_renderer = view.renderer;
+  m_pushed_raster = view.raster;
+
   const bool changed =
       !m_pushed_any || revision != m_pushed_revision || width != m_render_width ||
       height != m_render_height || terms != m_pushed_terms ||
       ab != (m_pushed_mode == ViewMode::ab) || (ab && view.keep_highlight_size != m_pushed_keep) ||
       (ab && view.ab_source != m_pushed_source) ||
-      (ab && view.ab_source == AbSource::snapshot && snapshot_revision != m_pushed_snapshot);
-  if (!changed) {
+      (ab && view.ab_source == AbSource::snapshot && snapshot_revision != m_pushed_snapshot) ||
+      !(sides.a == m_sides.a) || !(sides.b == m_sides.b);
+  const bool raster_dirty =
+      (sides.a.raster || sides.b.raster) && (!m_raster_shown || !(key == m_raster_key));
+  if (!changed && !raster_dirty) {
     // A mode switch that needs no new render (render, total alone, lobe) still counts as shown
     // in the new mode (converged_and_shown compares it).
     m_pushed_mode = view.mode;
     return;
   }
 
-  if (m_pushed_any && revision != m_pushed_revision) {
-    // now_s is the start of the frame in which the edit happened.
-    const std::shared_ptr<const RenderedFrame> newest = m_a->latest();
+  const bool new_edit = m_pushed_any && revision != m_pushed_revision;
+  Scene scene = document;
+  scene.render.width = width;
+  scene.render.height = height;
+  AbScenes pair = ab ? ab_scenes(scene, view.ab_source, snapshot, view.keep_highlight_size)
+                     : AbScenes{std::move(scene), Scene{}};
+  pair.a.render.width = pair.b.render.width = width;  // the snapshot has its own size
+  pair.a.render.height = pair.b.render.height = height;
+  if (changed) {
+    if (!terms) {
+      // Textures the view no longer shows: llvmpipe keeps each in RAM (12 B per pixel).
+      m_emissive = GlTexture();
+      m_ambient = GlTexture();
+      m_diffuse = GlTexture();
+      m_specular = GlTexture();
+    }
+    if (sides.a.raster) {
+      m_a.reset();  // cancels and joins its worker: the raster path draws A
+    } else {
+      if (!m_a) {
+        m_a = make_cpu_renderer(terms);
+      } else if (terms != m_pushed_terms || !m_pushed_any) {
+        m_a->set_terms(terms);
+      }
+      m_a->set_scene(pair.a);
+    }
+    if (ab && !sides.b.raster) {
+      if (!m_b) m_b = make_cpu_renderer(false);
+      m_b->set_scene(pair.b);
+    } else {
+      m_b.reset();
+    }
+    if (!ab) {
+      m_frame_b.reset();
+      m_b_total = GlTexture();
+      m_image_b.reset();
+      m_shown_raster_b = false;
+    } else {
+      m_label_a = ab_label_a(view.ab_source, snapshot);
+      m_label_b = ab_label_b(view.ab_source, view.keep_highlight_size, view.raster.shading);
+      if (!sides.b.raster &&
+          (view.ab_source == AbSource::cpu_gl || view.ab_source == AbSource::pixel_vertex)) {
+        m_label_b += " - raster unavailable, ray traced";
+      }
+    }
+    m_pushed_any = true;
+    m_pushed_revision = revision;
+    m_render_width = width;
+    m_render_height = height;
+    m_pushed_terms = terms;
+    m_pushed_mode = view.mode;
+    m_pushed_keep = view.keep_highlight_size;
+    m_pushed_source = view.ab_source;
+    m_pushed_snapshot = snapshot_revision;
+    m_sides = sides;
+  }
+  if (new_edit) {
+    // now_s is the start of the frame in which the edit happened. A renderer just handed the
+    // edit has not published it yet: its newest frame is the generation before it.
+    const std::shared_ptr<const RenderedFrame> newest = m_a ? m_a->latest() : nullptr;
     m_latency.edit_s = now_s;
     m_latency.generation = newest ? newest->info.generation : 0;
     m_latency.first_shown = false;
     m_latency.pending_first_s = m_latency.pending_full_s = -1.0;
   }
-  Scene scene = document;
-  scene.render.width = width;
-  scene.render.height = height;
-  if (terms != m_pushed_terms || !m_pushed_any) m_a->set_terms(terms);
-  if (!terms) {
-    // Textures the view no longer shows: llvmpipe keeps each in RAM (12 B per pixel).
-    m_emissive = GlTexture();
-    m_ambient = GlTexture();
-    m_diffuse = GlTexture();
-    m_specular = GlTexture();
+  if (raster_dirty) {
+    m_raster_key = key;
+    m_raster_render_failed = !show_raster(pair, sides, view.raster, terms, ab, now_s);
+    if (m_raster_render_failed) glfwPostEmptyEvent();  // the next sync hands it to the ray tracer
+  } else if (!sides.a.raster && !sides.b.raster) {
+    m_raster_shown = false;
   }
-  if (ab) {
-    if (!m_b) {
-      ProgressiveOptions options;
-      options.terms = false;
-      m_b = std::make_unique<ProgressiveRenderer>(options);
-      m_b->set_on_publish([] { glfwPostEmptyEvent(); });
-    }
-    AbScenes pair = ab_scenes(scene, view.ab_source, snapshot, view.keep_highlight_size);
-    pair.a.render.width = pair.b.render.width = width;  // the snapshot has its own size
-    pair.a.render.height = pair.b.render.height = height;
-    m_a->set_scene(pair.a);
-    m_b->set_scene(pair.b);
-    m_label_a = ab_label_a(view.ab_source, snapshot);
-    m_label_b = ab_label_b(view.ab_source, view.keep_highlight_size);
-  } else {
-    m_b.reset();  // cancels and joins its worker
-    m_frame_b.reset();
-    m_b_total = GlTexture();
-    m_image_b.reset();
-    m_a->set_scene(scene);
-  }
-  m_pushed_any = true;
-  m_pushed_revision = revision;
-  m_render_width = width;
-  m_render_height = height;
-  m_pushed_terms = terms;
-  m_pushed_mode = view.mode;
-  m_pushed_keep = view.keep_highlight_size;
-  m_pushed_source = view.ab_source;
-  m_pushed_snapshot = snapshot_revision;
 }
 
 void Viewport::blit(int framebuffer_height) const {
@@ -182,182 +245,25 @@ void Viewport::blit(int framebuffer_height) const {
 
 bool Viewport::converged_and_shown(std::uint64_t revision, const ViewSettings& view) const {
   if (!m_pushed_any || revision != m_pushed_revision || view.mode != m_pushed_mode ||
-      needs_terms(view) != m_pushed_terms) {
+      needs_terms(view) != m_pushed_terms || view.renderer != m_pushed_renderer ||
+      view.raster != m_pushed_raster ||
+      (view.mode == ViewMode::ab && view.ab_source != m_pushed_source)) {
     return false;
   }
-  if (!m_a->wait_converged(0.0) || m_a->latest() != m_frame_a) return false;
-  if (m_pushed_mode == ViewMode::ab) {
-    return m_b && m_b->wait_converged(0.0) && m_b->latest() == m_frame_b;
-  }
-  return m_frame_a != nullptr;
+  // A raster frame is final once it is on screen; the ray tracer's when it has converged.
+  auto side_done = [&](const AbSide& side, const ProgressiveRenderer* renderer,
+                       const std::shared_ptr<const RenderedFrame>& frame, bool shown_raster) {
+    if (frame == nullptr) return false;
+    if (side.raster) return m_raster_shown && shown_raster;
+    return renderer != nullptr && renderer->wait_converged(0.0) && renderer->latest() == frame;
+  };
+  if (!side_done(m_sides.a, m_a.get(), m_frame_a, m_shown_raster_a)) return false;
+  return m_pushed_mode != ViewMode::ab ||
+         side_done(m_sides.b, m_b.get(), m_frame_b, m_shown_raster_b);
 }
 
 bool Viewport::gesture_active(double now_s) const {
   return m_drag_button >= 0 || (m_last_wheel_s >= 0.0 && now_s - m_last_wheel_s < 0.6);
-}
-
-bool Viewport::TargetKey::operator==(const TargetKey& o) const {
-  return uploads == o.uploads && width == o.width && height == o.height &&
-         pane_count == o.pane_count && pane_x == o.pane_x && pane_y == o.pane_y &&
-         pane_w == o.pane_w && pane_h == o.pane_h && mode == o.mode && single == o.single &&
-         exposure == o.exposure && heat_scale == o.heat_scale && srgb == o.srgb &&
-         show_clipped == o.show_clipped;
-}
-
-void Viewport::draw_panes(const ViewSettings& view, bool srgb) {
-  const int fw = std::max(1, static_cast<int>(m_size.x * m_framebuffer_scale));
-  const int fh = std::max(1, static_cast<int>(m_size.y * m_framebuffer_scale));
-  DisplayParams params;
-  params.exposure = view.exposure;
-  params.srgb = srgb;
-  params.heat_scale = shown_heat_scale(view, m_max_difference);
-  const TargetKey key{m_uploads,
-                      fw,
-                      fh,
-                      m_pane_count,
-                      m_panes[0].min.x - m_pos.x,
-                      m_panes[0].min.y - m_pos.y,
-                      m_panes[0].size.x,
-                      m_panes[0].size.y,
-                      view.mode,
-                      view.single,
-                      view.exposure,
-                      params.heat_scale,
-                      srgb,
-                      view.show_clipped};
-  if (key == m_target_key && m_target.texture() != 0) return;
-  m_target_key = key;
-  // Texels map 1:1 to screen pixels at preview scale 1: nearest sampling is exact and cheaper.
-  const bool one_to_one =
-      m_total.width() == static_cast<int>(m_panes[0].size.x * m_framebuffer_scale) &&
-      m_total.height() == static_cast<int>(m_panes[0].size.y * m_framebuffer_scale);
-  for (GlTexture* t : {&m_total, &m_emissive, &m_ambient, &m_diffuse, &m_specular, &m_b_total}) {
-    t->set_nearest(one_to_one);
-  }
-  m_target.resize(fw, fh);
-  m_target.bind();
-  glClearColor(0.11f, 0.11f, 0.12f, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT);
-  for (int i = 0; i < m_pane_count; ++i) {
-    const Pane& pane = m_panes[i];
-    const int x = static_cast<int>((pane.min.x - m_pos.x) * m_framebuffer_scale);
-    const int y_top = static_cast<int>((pane.min.y - m_pos.y) * m_framebuffer_scale);
-    const int w = static_cast<int>(pane.size.x * m_framebuffer_scale);
-    const int h = static_cast<int>(pane.size.y * m_framebuffer_scale);
-    glViewport(x, fh - y_top - h, w, h);  // GL counts rows from the bottom
-    const GlTexture* a = &m_total;
-    const GlTexture* b = nullptr;
-    params.mode = DisplayMode::image;
-    params.clip_overlay = view.show_clipped;
-    TermView term = TermView::total;
-    if (view.mode == ViewMode::single) term = view.single;
-    if (view.mode == ViewMode::terms) {
-      const TermView sheet[4] = {TermView::emissive_ambient, TermView::diffuse, TermView::specular,
-                                 TermView::total};
-      term = sheet[i];
-    }
-    switch (term) {
-      case TermView::emissive_ambient:
-        a = &m_emissive;
-        b = &m_ambient;
-        params.mode = DisplayMode::sum;
-        break;
-      case TermView::emissive:
-        a = &m_emissive;
-        break;
-      case TermView::ambient:
-        a = &m_ambient;
-        break;
-      case TermView::diffuse:
-        a = &m_diffuse;
-        break;
-      case TermView::specular:
-        a = &m_specular;
-        break;
-      case TermView::total:
-        break;
-    }
-    if (view.mode == ViewMode::ab) {
-      if (i == 3) continue;  // the legend, drawn by ImGui
-      a = i == 1 ? &m_b_total : &m_total;
-      if (i == 2) {
-        b = &m_b_total;
-        params.mode = DisplayMode::heat;
-      }
-    }
-    if (a->empty() || (b != nullptr && b->empty())) continue;
-    m_shader.draw(a->id(), b != nullptr ? b->id() : 0, params);
-  }
-  RenderTarget::unbind();
-}
-
-void Viewport::draw_labels(const ViewSettings& view, ImDrawList* list) const {
-  const char* labels[4] = {nullptr, nullptr, nullptr, nullptr};
-  std::string single;
-  if (view.mode == ViewMode::terms) {
-    labels[0] = "emissive + ambient";
-    labels[1] = "diffuse";
-    labels[2] = "specular";
-    labels[3] = "total";
-  } else if (view.mode == ViewMode::single) {
-    single = std::string(display_name(view.single)) + " only";
-    labels[0] = single.c_str();
-  } else if (view.mode == ViewMode::ab) {
-    labels[0] = m_label_a.c_str();
-    labels[1] = m_label_b.c_str();
-    labels[2] = "|A - B| heat map";
-  }
-  for (int i = 0; i < m_pane_count; ++i) {
-    const ImVec2 at(m_panes[i].min.x + 6.0f, m_panes[i].min.y + 4.0f);
-    if (i > 0) {
-      list->AddRect(
-          m_panes[i].min,
-          ImVec2(m_panes[i].min.x + m_panes[i].size.x, m_panes[i].min.y + m_panes[i].size.y),
-          IM_COL32(60, 60, 66, 255));
-    }
-    if (labels[i] == nullptr) continue;
-    const ImVec2 text = ImGui::CalcTextSize(labels[i]);
-    list->AddRectFilled(ImVec2(at.x - 3, at.y - 1), ImVec2(at.x + text.x + 3, at.y + text.y + 1),
-                        IM_COL32(0, 0, 0, 160), 3.0f);
-    list->AddText(at, IM_COL32(235, 235, 235, 255), labels[i]);
-  }
-}
-
-void Viewport::draw_legend(const ViewSettings& view, ImDrawList* list, const Pane& pane) const {
-  const float scale = shown_heat_scale(view, m_max_difference);
-  const float x0 = pane.min.x + 16.0f, x1 = pane.min.x + pane.size.x - 16.0f;
-  float y = pane.min.y + 12.0f;
-  const ImU32 text = IM_COL32(225, 225, 225, 255);
-  list->AddText(ImVec2(x0, y), text, "Heat map scale");
-  y += 20.0f;
-  list->AddText(ImVec2(x0, y), text, "largest |A - B| channel, linear");
-  y += 22.0f;
-  const float bar_h = 18.0f;
-  for (int i = 0; i + 1 < kHeatRampSize; ++i) {
-    const float a = x0 + (x1 - x0) * static_cast<float>(i) / (kHeatRampSize - 1);
-    const float b = x0 + (x1 - x0) * static_cast<float>(i + 1) / (kHeatRampSize - 1);
-    const glm::vec3 ca = kHeatRamp[i], cb = kHeatRamp[i + 1];
-    const ImU32 ua = ImGui::ColorConvertFloat4ToU32(ImVec4(ca.x, ca.y, ca.z, 1.0f));
-    const ImU32 ub = ImGui::ColorConvertFloat4ToU32(ImVec4(cb.x, cb.y, cb.z, 1.0f));
-    list->AddRectFilledMultiColor(ImVec2(a, y), ImVec2(b, y + bar_h), ua, ub, ub, ua);
-  }
-  list->AddRect(ImVec2(x0, y), ImVec2(x1, y + bar_h), IM_COL32(120, 120, 120, 255));
-  y += bar_h + 4.0f;
-  char tick[48];
-  for (int i = 0; i <= 2; ++i) {
-    std::snprintf(tick, sizeof tick, "%.3g", scale * 0.5f * static_cast<float>(i));
-    const float x = x0 + (x1 - x0) * 0.5f * static_cast<float>(i);
-    const float w = ImGui::CalcTextSize(tick).x;
-    list->AddText(ImVec2(std::clamp(x - w * 0.5f, x0, x1 - w), y), text, tick);
-  }
-  y += 26.0f;
-  char line[96];
-  std::snprintf(line, sizeof line, "largest difference: %.4g", m_max_difference);
-  list->AddText(ImVec2(x0, y), text, line);
-  y += 20.0f;
-  list->AddText(ImVec2(x0, y), text,
-                view.heat_auto_scale ? "scale: automatic (the largest difference)"
-                                     : "scale: fixed (View panel)");
 }
 
 }  // namespace gloss

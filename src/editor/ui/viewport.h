@@ -1,7 +1,9 @@
 #pragma once
 // The viewport: the progressive renderer's frames as GL textures, drawn by the display shader
 // into an off-screen target that an ImGui window shows, in one of the view modes (one image, the
-// 2x2 term sheet, or A/B with a heat map). Owns the renderers; never waits for them.
+// 2x2 term sheet, or A/B with a heat map). Owns the renderers; never waits for the ray tracer.
+// The raster path (issue 12, editor/gl/raster_renderer.h) renders synchronously on the UI thread
+// when view.renderer picks it (viewport_raster.cpp); its frames take the same way to the screen.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -10,6 +12,7 @@
 
 #include "editor/gl/display_shader.h"
 #include "editor/gl/gl_texture.h"
+#include "editor/gl/raster_renderer.h"
 #include "editor/gl/render_target.h"
 #include "editor/model/ab_compare.h"
 #include "editor/model/exposure_histogram.h"
@@ -61,8 +64,25 @@ class Viewport {
   bool converged_and_shown(std::uint64_t revision, const ViewSettings& view) const;
   // A mouse gesture (drag, recent wheel) is in progress: its commands form one undo step.
   bool gesture_active(double now_s) const;
+  // A gesture that moves the camera or a light (not a click): RendererChoice::automatic draws
+  // with the raster path meanwhile.
+  bool moving_gesture(double now_s) const;
 
   const RenderedFrame* shown_frame() const { return m_frame_a.get(); }
+  const RenderedFrame* shown_frame_b() const { return m_frame_b.get(); }
+  // Which renderer drew the frame shown on each side: true for the raster path.
+  bool shown_raster_a() const { return m_shown_raster_a; }
+  bool shown_raster_b() const { return m_shown_raster_b; }
+
+  // viewport_raster.cpp. The raster path's frame of scene at scene.render's size (screenshots
+  // while the raster path draws the viewport), or null when the raster path cannot run here.
+  // Needs the GL context current (the UI thread).
+  std::shared_ptr<const RenderedFrame> render_raster(const Scene& scene,
+                                                     const RasterSettings& settings, bool terms);
+  // Why the raster path cannot run (its programs failed to build), once: empty afterwards and
+  // when it runs.
+  std::string take_raster_notice();
+  bool raster_unavailable() const { return m_raster_failed; }
   const LatencyProbe& latency() const { return m_latency; }
   float max_difference() const { return m_max_difference; }
   // Counts texture uploads: a new value means a new image reached the screen.
@@ -93,9 +113,21 @@ class Viewport {
   void draw_labels(const ViewSettings& view, ImDrawList* list) const;
   void draw_legend(const ViewSettings& view, ImDrawList* list, const Pane& pane) const;
   void upload(const RenderedFrame& frame, bool b_side);
+  void max_difference_of_shown();
 
-  std::unique_ptr<ProgressiveRenderer> m_a;
-  std::unique_ptr<ProgressiveRenderer> m_b;  // Blinn-Phong side of the A/B view, when shown
+  // viewport_raster.cpp: the raster path.
+  // Whether view wants the raster path for the viewport's own renderer now (gl, or automatic
+  // during a moving gesture) and it can run.
+  bool raster_effective(const ViewSettings& view, double now_s);
+  bool raster_available();  // builds the renderer on first use; false when that failed
+  // Renders the raster sides of a (and b in the A/B view) and shows them; false when render()
+  // threw (the message goes to the notice).
+  bool show_raster(const AbScenes& scenes, const AbSides& sides, const RasterSettings& settings,
+                   bool terms, bool ab, double now_s);
+  static void reset_gl_state();  // what the display shader and ImGui expect after a raster pass
+
+  std::unique_ptr<ProgressiveRenderer> m_a;  // null while the raster path draws the A side
+  std::unique_ptr<ProgressiveRenderer> m_b;  // B side of the A/B view when the ray tracer draws it
   std::shared_ptr<const RenderedFrame> m_frame_a, m_frame_b;
   std::shared_ptr<const RenderedFrame> m_image_a, m_image_b;  // the newest with a total image
 
@@ -113,6 +145,31 @@ class Viewport {
   AbSource m_pushed_source = AbSource::models;
   std::uint64_t m_pushed_snapshot = 0;  // revision of the snapshot pushed as A
   std::string m_label_a, m_label_b;     // A/B pane labels of what was pushed
+  AbSides m_sides;                      // which renderer draws each side (A alone outside A/B)
+  RendererChoice m_pushed_renderer = RendererChoice::cpu;
+  RasterSettings m_pushed_raster;
+
+  // The raster path: built on the UI thread when first needed.
+  std::unique_ptr<RasterRenderer> m_raster;
+  bool m_raster_failed = false;     // its constructor threw: the ray tracer draws every side
+  std::string m_raster_notice;      // a failure, until take_raster_notice() hands it out
+  std::string m_raster_last_error;  // the last render failure announced (no repeats)
+  // What the shown raster frames were rendered from; a new render only when it changes.
+  struct RasterKey {
+    std::uint64_t revision = 0, snapshot = 0;
+    int width = 0, height = 0;
+    bool terms = false, ab = false, keep = false;
+    AbSource source = AbSource::models;
+    AbSides sides;
+    RasterSettings settings;
+    bool operator==(const RasterKey& o) const;
+  };
+  RasterKey m_raster_key;
+  bool m_raster_shown = false;  // m_raster_key describes frames on screen
+  // render() threw for m_raster_key (too many lights, a GL error): the ray tracer draws that
+  // state; the raster path is tried again when the key changes.
+  bool m_raster_render_failed = false;
+  bool m_shown_raster_a = false, m_shown_raster_b = false;
 
   // Layout of the last draw (screen coordinates).
   ImVec2 m_pos{0, 0}, m_size{0, 0};

@@ -98,6 +98,11 @@ void Viewport::draw_inspected_pixel(const App& app, ImDrawList* list) const {
   }
 }
 
+bool Viewport::moving_gesture(double now_s) const {
+  if (m_drag_button < 0) return gesture_active(now_s);  // a recent wheel zoom
+  return m_drag_light >= 0 || (m_drag_distance > kClickSlop && !m_marker_pressed);
+}
+
 void Viewport::draw(App& app, ImVec2 pos, ImVec2 size) {
   m_pos = pos;
   m_size = size;

@@ -94,6 +94,54 @@ TEST(AbCompare, PlainViewAbGoesBackToModels) {
   EXPECT_EQ(host.view().ab_source, AbSource::models);
 }
 
+TEST(AbCompare, CpuGlIsTheDocumentAtOneSampleAgainstTheRasterPath) {
+  Scene doc = test::two_sphere_scene();
+  doc.render.spp = 16;
+  const AbScenes pair = ab_scenes(doc, AbSource::cpu_gl, nullptr, true);
+  // A is traced at the pixel centre only (where the raster path samples); nothing else changes.
+  EXPECT_EQ(pair.a.render.spp, 1);
+  EXPECT_EQ(pair.b.render.spp, 16);
+  EXPECT_EQ(pair.a.render.model, doc.render.model);
+  EXPECT_FLOAT_EQ(pair.a.materials[0].shininess, doc.materials[0].shininess);
+  EXPECT_FLOAT_EQ(pair.b.materials[0].shininess, doc.materials[0].shininess);
+  const AbSides sides = ab_sides(AbSource::cpu_gl, false, ShadingFrequency::vertex);
+  EXPECT_FALSE(sides.a.raster);
+  EXPECT_TRUE(sides.b.raster);
+  EXPECT_EQ(sides.b.shading, ShadingFrequency::vertex);  // the panel's frequency
+  EXPECT_EQ(ab_label_a(AbSource::cpu_gl, nullptr), "A: ray traced, 1 spp");
+  EXPECT_EQ(ab_label_b(AbSource::cpu_gl, true, ShadingFrequency::pixel),
+            "B: raster (GLSL), per pixel");
+  EXPECT_EQ(ab_label_b(AbSource::cpu_gl, true, ShadingFrequency::vertex),
+            "B: raster (GLSL), per vertex");
+}
+
+TEST(AbCompare, PixelVertexIsTheRasterPathAtBothFrequencies) {
+  const Scene doc = test::two_sphere_scene();
+  const AbScenes pair = ab_scenes(doc, AbSource::pixel_vertex, nullptr, true);
+  EXPECT_EQ(pair.a.render.spp, doc.render.spp);
+  EXPECT_EQ(pair.b.render.model, doc.render.model);
+  EXPECT_FLOAT_EQ(pair.b.materials[0].shininess, doc.materials[0].shininess);
+  // Whatever the panel's frequency and renderer: A per pixel, B per vertex, both raster.
+  for (bool raster : {false, true}) {
+    const AbSides sides = ab_sides(AbSource::pixel_vertex, raster, ShadingFrequency::vertex);
+    EXPECT_EQ(sides.a, (AbSide{true, ShadingFrequency::pixel}));
+    EXPECT_EQ(sides.b, (AbSide{true, ShadingFrequency::vertex}));
+  }
+  EXPECT_EQ(ab_label_a(AbSource::pixel_vertex, nullptr), "A: raster, per pixel");
+  EXPECT_EQ(ab_label_b(AbSource::pixel_vertex, true), "B: raster, per vertex (Gouraud)");
+}
+
+TEST(AbCompare, ModelsAndSnapshotFollowTheViewportsRenderer) {
+  for (AbSource source : {AbSource::models, AbSource::snapshot}) {
+    const AbSides cpu = ab_sides(source, false, ShadingFrequency::pixel);
+    EXPECT_FALSE(cpu.a.raster);
+    EXPECT_FALSE(cpu.b.raster);
+    const AbSides gl = ab_sides(source, true, ShadingFrequency::vertex);
+    EXPECT_EQ(gl.a, (AbSide{true, ShadingFrequency::vertex}));
+    EXPECT_EQ(gl.b, (AbSide{true, ShadingFrequency::vertex}));
+  }
+}
+
 TEST(AbCompare, ParsesTheNewViewLines) {
   const Script s =
       parse_script("view clipped on\nview clipped off\nview ab snapshot\nsnapshot\n", "v.txt");

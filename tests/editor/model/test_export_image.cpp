@@ -117,6 +117,29 @@ TEST(ExportImage, ViewportKindFollowsTheSingleTermView) {
   EXPECT_NEAR(viewport_image(terms, view).at(0, 0).x, 0.3f, 1e-6f);
 }
 
+// The raster path's screenshots go through export_image with its own frame's terms.
+TEST(ExportImage, ExportImageExposesTheChosenTermOfGivenTerms) {
+  TermImages terms;
+  terms.emissive = Image(1, 1, glm::vec3(0.1f));
+  terms.ambient = Image(1, 1, glm::vec3(0.2f));
+  terms.diffuse = Image(1, 1, glm::vec3(0.3f));
+  terms.specular = Image(1, 1, glm::vec3(0.25f));
+  terms.total = Image(1, 1, glm::vec3(0.85f));
+  ViewSettings view;
+  view.exposure = 1.0f;  // x2
+  EXPECT_EQ(export_image(terms, view, ScreenshotKind::viewport).at(0, 0).x, 1.7f);
+  view.mode = ViewMode::single;
+  view.single = TermView::specular;
+  EXPECT_TRUE(export_needs_terms(view, ScreenshotKind::viewport));
+  EXPECT_EQ(export_image(terms, view, ScreenshotKind::viewport).at(0, 0).x, 0.5f);
+  view.single = TermView::total;
+  EXPECT_FALSE(export_needs_terms(view, ScreenshotKind::viewport));
+  EXPECT_TRUE(export_needs_terms(view, ScreenshotKind::terms));
+  const Image sheet = export_image(terms, view, ScreenshotKind::terms);
+  EXPECT_EQ(sheet.width, 2);
+  EXPECT_EQ(sheet.height, 2 * (1 + term_sheet_band(1)));
+}
+
 TEST(ExportImage, ScriptPathsNameAFileOrAFolder) {
   const std::filesystem::path dir = temp_folder("paths");
   const Image image(2, 2, glm::vec3(0.5f));
@@ -143,6 +166,23 @@ TEST(ExportImage, TextChunksCarryTheScene) {
   EXPECT_EQ(scene_to_json_text(parse_scene(scene_text, "chunk.json")), scene_to_json_text(scene));
   EXPECT_NE(settings.find("model=phong"), std::string::npos) << settings;
   EXPECT_NE(settings.find("encoding=clamp"), std::string::npos) << settings;
+  EXPECT_NE(settings.find("renderer=cpu"), std::string::npos) << settings;
+}
+
+TEST(ExportImage, RasterExportsNameTheRasterKnobs) {
+  ViewSettings view;
+  view.renderer = RendererChoice::gl;
+  view.raster.shading = ShadingFrequency::vertex;
+  view.raster.shadow_map_size = 256;
+  view.raster.shadow_bias = 0.5f;
+  const TextChunks text = export_text(test::two_sphere_scene(), view, ScreenshotKind::viewport);
+  std::string settings;
+  for (const auto& [key, value] : text) {
+    if (key == "gloss:settings") settings = value;
+  }
+  EXPECT_NE(settings.find("renderer=gl shading=vertex shadow_map=256 shadow_bias=0.5"),
+            std::string::npos)
+      << settings;
 }
 
 }  // namespace

@@ -223,6 +223,62 @@ TEST(Script, UndoWithNothingToUndoIsAnError) {
   EXPECT_NE(errors.find("nothing to undo"), std::string::npos) << errors;
 }
 
+TEST(Script, ParsesTheRendererAndRasterKnobs) {
+  const Script s = parse_script(
+      "renderer gl\nrenderer cpu\nrenderer auto\nshading vertex\nshading pixel\n"
+      "shadow-map 16\nshadow-map 4096\nshadow-bias 0\nshadow-bias 2.5\n"
+      "view ab cpu-gl\nview ab pixel-vertex\n",
+      "r.txt");
+  ASSERT_EQ(s.lines.size(), 11u);
+  EXPECT_EQ(std::get<RendererAction>(s.lines[0].action).choice, RendererChoice::gl);
+  EXPECT_EQ(std::get<RendererAction>(s.lines[1].action).choice, RendererChoice::cpu);
+  EXPECT_EQ(std::get<RendererAction>(s.lines[2].action).choice, RendererChoice::automatic);
+  EXPECT_EQ(std::get<ShadingAction>(s.lines[3].action).frequency, ShadingFrequency::vertex);
+  EXPECT_EQ(std::get<ShadingAction>(s.lines[4].action).frequency, ShadingFrequency::pixel);
+  EXPECT_EQ(std::get<ShadowMapAction>(s.lines[5].action).size, 16);
+  EXPECT_EQ(std::get<ShadowMapAction>(s.lines[6].action).size, 4096);
+  EXPECT_EQ(std::get<ShadowBiasAction>(s.lines[7].action).texels, 0.0f);
+  EXPECT_EQ(std::get<ShadowBiasAction>(s.lines[8].action).texels, 2.5f);
+  EXPECT_EQ(std::get<ViewAction>(s.lines[9].action).mode, ViewMode::ab);
+  EXPECT_EQ(std::get<ViewAction>(s.lines[9].action).ab_source, AbSource::cpu_gl);
+  EXPECT_EQ(std::get<ViewAction>(s.lines[10].action).ab_source, AbSource::pixel_vertex);
+}
+
+TEST(Script, BadRendererAndRasterValuesNameTheLine) {
+  expect_error_on_line("renderer\n", 1, "missing renderer");
+  expect_error_on_line("wait\nrenderer vulkan\n", 2, "renderer must be cpu, gl or auto");
+  expect_error_on_line("renderer gl now\n", 1, "unexpected 'now'");
+  expect_error_on_line("shading gouraud\n", 1, "shading must be pixel or vertex");
+  expect_error_on_line("shadow-map 15\n", 1, "shadow-map must be 16..4096 texels");
+  expect_error_on_line("shadow-map 4097\n", 1, "shadow-map must be 16..4096 texels");
+  expect_error_on_line("shadow-map 1e9\n", 1, "shadow-map must be 16..4096 texels");
+  expect_error_on_line("shadow-map 512.5\n", 1, "whole number");
+  expect_error_on_line("shadow-bias -0.5\n", 1, "shadow-bias must be a finite number");
+  expect_error_on_line("shadow-bias inf\n", 1, "shadow-bias must be a finite number");
+  expect_error_on_line("shadow-bias nan\n", 1, "shadow-bias must be a finite number");
+  expect_error_on_line("view ab gl\n", 1, "'snapshot', 'cpu-gl' or 'pixel-vertex'");
+}
+
+TEST(Script, RendererAndRasterLinesSetTheViewSettings) {
+  RecordingHost host(test::two_sphere_scene());
+  std::string errors;
+  const LineResult r =
+      run_all("renderer auto\nshading vertex\nshadow-map 256\nshadow-bias 0.75\nview ab cpu-gl\n",
+              host, errors);
+  EXPECT_EQ(r.next, LineResult::Next::go_on) << errors;
+  EXPECT_EQ(host.view().renderer, RendererChoice::automatic);
+  EXPECT_EQ(host.view().raster.shading, ShadingFrequency::vertex);
+  EXPECT_EQ(host.view().raster.shadow_map_size, 256);
+  EXPECT_EQ(host.view().raster.shadow_bias, 0.75f);
+  EXPECT_EQ(host.view().mode, ViewMode::ab);
+  EXPECT_EQ(host.view().ab_source, AbSource::cpu_gl);
+  run_all("view ab pixel-vertex\nrenderer cpu\n", host, errors);
+  EXPECT_EQ(host.view().ab_source, AbSource::pixel_vertex);
+  EXPECT_EQ(host.view().renderer, RendererChoice::cpu);
+  // View settings are not document edits: nothing to undo.
+  EXPECT_EQ(host.layer().undo_count(), 0u);
+}
+
 TEST(Script, QuitStopsWithStatusZero) {
   RecordingHost host(test::two_sphere_scene());
   std::string errors;
