@@ -14,11 +14,6 @@ std::string number_text(double value) {
   return text;
 }
 
-// The rows' names of the shading frequencies (those of the `shading` script verb).
-const char* frequency_name(ShadingFrequency f) {
-  return f == ShadingFrequency::pixel ? "pixel" : "vertex";
-}
-
 std::string psnr_text(double psnr_db) {
   char text[32];
   if (std::isinf(psnr_db)) return psnr_db > 0 ? "inf" : "-inf";
@@ -67,12 +62,7 @@ RasterTradeoffOptions raster_options_like(const TradeoffOptions& options) {
 }
 
 bool operator==(const RasterConfig& a, const RasterConfig& b) {
-  // Field by field: RasterSettings' own operator== lives with the editor's settings code, which
-  // these rows do not otherwise need.
-  return a.tessellation == b.tessellation && a.shadows == b.shadows &&
-         a.settings.shading == b.settings.shading &&
-         a.settings.shadow_map_size == b.settings.shadow_map_size &&
-         a.settings.shadow_bias == b.settings.shadow_bias;
+  return a.tessellation == b.tessellation && a.shadows == b.shadows && a.settings == b.settings;
 }
 
 std::vector<RasterTradeoffSetting> raster_tradeoff_settings(const Scene& scene,
@@ -99,7 +89,7 @@ std::vector<RasterTradeoffSetting> raster_tradeoff_settings(const Scene& scene,
   cpu.cpu = true;
   out.push_back(cpu);
   for (const ShadingFrequency f : {ShadingFrequency::pixel, ShadingFrequency::vertex}) {
-    add("raster-shading", frequency_name(f), [f](RasterConfig& c) { c.settings.shading = f; });
+    add("raster-shading", to_string(f), [f](RasterConfig& c) { c.settings.shading = f; });
   }
   // The scene's shadows stay as it says: in a scene without shadows every size draws the same
   // image as "off".
@@ -115,7 +105,7 @@ std::vector<RasterTradeoffSetting> raster_tradeoff_settings(const Scene& scene,
   if (finest > 0) {
     for (const ShadingFrequency f : {ShadingFrequency::pixel, ShadingFrequency::vertex}) {
       for (int level : options.tessellation_levels) {
-        add("raster-tessellation", std::string(frequency_name(f)) + " " + std::to_string(level),
+        add("raster-tessellation", std::string(to_string(f)) + " " + std::to_string(level),
             [f, level](RasterConfig& c) {
               c.settings.shading = f;
               c.tessellation = level;

@@ -11,7 +11,8 @@
 // drifts over minutes and a pair sees the same state of it. Raster frames keep their meshes and
 // shadow maps (a camera drag) except the "light drag" row, whose light moves by 1e-3 every frame
 // so that each frame redraws the shadow maps. Built by default, not run by ctest except once at
-// a tiny size (tests/CMakeLists.txt), since the full run takes about a minute.
+// a tiny size (tests/CMakeLists.txt): the full run takes about 5 s here, but its figures mean
+// something only on a quiet machine, not beside other tests under ctest -j.
 #include <glad/gl.h>
 
 #include <chrono>
