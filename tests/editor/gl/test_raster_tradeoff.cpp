@@ -4,11 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "analysis/tradeoff.h"
 #include "base/error.h"
@@ -189,6 +191,41 @@ TEST_F(RasterTradeoffRows, ShadowMapsCostLessErrorThanNoShadows) {
       std::count_if(rows.begin(), rows.end(),
                     [](const RasterTradeoffRow& r) { return r.knob == "raster-tessellation"; }),
       0);
+}
+
+// The Quality window draws the raster frames in slices between UI frames: a slice of 1 ms draws
+// one configuration's frames at a time, and the rows come out as measured in one go.
+TEST_F(RasterTradeoffRows, SlicesGiveTheRowsOfOneGoAndCancelStopsWithNone) {
+  const Scene scene = shipped("spheres.json");
+  const std::vector<RasterTradeoffRow> whole = measure_raster_tradeoff(scene, small_options());
+  RasterTradeoff sliced;
+  sliced.start(scene, small_options());
+  EXPECT_TRUE(sliced.running());
+  double last = 0.0;
+  int slices = 0;
+  while (sliced.running()) {
+    if (!sliced.step(1.0)) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    EXPECT_GE(sliced.progress(), last);
+    last = sliced.progress();
+    slices += sliced.state() == RasterTradeoff::State::rendering ? 1 : 0;
+  }
+  ASSERT_EQ(sliced.state(), RasterTradeoff::State::done) << sliced.error();
+  EXPECT_EQ(sliced.progress(), 1.0);
+  EXPECT_GT(slices, 1);
+  ASSERT_EQ(sliced.rows().size(), whole.size());
+  for (std::size_t i = 0; i < whole.size(); ++i) {
+    EXPECT_EQ(sliced.rows()[i].setting, whole[i].setting);
+    EXPECT_EQ(sliced.rows()[i].error.rmse, whole[i].error.rmse) << whole[i].setting;
+    EXPECT_EQ(sliced.rows()[i].pct_agree, whole[i].pct_agree) << whole[i].setting;
+  }
+  RasterTradeoff cancelled;
+  cancelled.start(scene, small_options());
+  cancelled.cancel();
+  while (cancelled.running()) {
+    if (!cancelled.step(1.0)) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  EXPECT_EQ(cancelled.state(), RasterTradeoff::State::cancelled);
+  EXPECT_TRUE(cancelled.rows().empty());
 }
 
 TEST_F(RasterTradeoffRows, CsvHasTheTradeoffColumnsFirstAndOneLinePerRow) {
