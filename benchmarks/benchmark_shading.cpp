@@ -13,7 +13,7 @@
 #include "engine/trace/embree_scene.h"
 #include "engine/trace/sample_cache.h"
 #include "engine/trace/single_sample_pass.h"
-#include "io/scene_loader.h"
+#include "io/scene/scene_loader.h"
 #include "shading/shading.h"
 
 namespace gloss {

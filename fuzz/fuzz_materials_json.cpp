@@ -1,11 +1,11 @@
-// libFuzzer target: the materials JSON reader (io/material_io.h, load_materials_json), and what
-// it accepts written back as JSON and as MTL and read again (names and values must survive).
+// libFuzzer target: the materials JSON reader (io/material/material_io.h, load_materials_json), and
+// what it accepts written back as JSON and as MTL and read again (names and values must survive).
 #include <cstdint>
 #include <string>
 
 #include "base/error.h"
 #include "fuzz_input.h"
-#include "io/material_io.h"
+#include "io/material/material_io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string path = gloss_fuzz::write_file("materials.json", data, size);

@@ -1,9 +1,9 @@
 #pragma once
-// The model loader the OBJ, MTL and model-format targets call, in one place: io/model_loader.h's
-// load_model, the one import path (assimp) of every model format.
+// The model loader the OBJ, MTL and model-format targets call, in one place:
+// io/model/model_loader.h's load_model, the one import path (assimp) of every model format.
 #include <string>
 
-#include "io/model_loader.h"
+#include "io/model/model_loader.h"
 
 namespace gloss_fuzz {
 

@@ -1,13 +1,14 @@
-// libFuzzer target: a Wavefront MTL file, two ways: gloss's own MTL reader (io/material_io.h,
-// load_mtl, the editor's material import) with what it accepts written back and read again, and
-// the model loader (fuzz_model.h) on a fixed OBJ that names the fuzzed file as its mtllib.
+// libFuzzer target: a Wavefront MTL file, two ways: gloss's own MTL reader
+// (io/material/material_io.h, load_mtl, the editor's material import) with what it accepts written
+// back and read again, and the model loader (fuzz_model.h) on a fixed OBJ that names the fuzzed
+// file as its mtllib.
 #include <cstdint>
 #include <string>
 
 #include "base/error.h"
 #include "fuzz_input.h"
 #include "fuzz_model.h"
-#include "io/material_io.h"
+#include "io/material/material_io.h"
 
 namespace {
 

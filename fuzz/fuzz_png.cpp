@@ -1,13 +1,14 @@
-// libFuzzer target: reading a PNG with its text chunks (io/image_io.h, read_png), the metadata
-// path of gloss's renders: the CLI and the editor embed the scene as the `gloss:scene` text chunk,
-// so a scene found there goes through the scene reader as any reader of that metadata would.
+// libFuzzer target: reading a PNG with its text chunks (io/image/image_io.h, read_png), the
+// metadata path of gloss's renders: the CLI and the editor embed the scene as the `gloss:scene`
+// text chunk, so a scene found there goes through the scene reader as any reader of that metadata
+// would.
 #include <cstdint>
 #include <string>
 
 #include "base/error.h"
 #include "fuzz_input.h"
-#include "io/image_io.h"
-#include "io/scene_loader.h"
+#include "io/image/image_io.h"
+#include "io/scene/scene_loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string path = gloss_fuzz::write_file("image.png", data, size);

@@ -1,12 +1,12 @@
-// libFuzzer target: the editor's crash-recovery file (io/recovery_file.h, parse_recovery), read at
-// every start of the editor; what it accepts is written back and read again, as the next
+// libFuzzer target: the editor's crash-recovery file (io/scene/recovery_file.h, parse_recovery),
+// read at every start of the editor; what it accepts is written back and read again, as the next
 // autosave would.
 #include <cstdint>
 #include <string>
 
 #include "base/error.h"
 #include "fuzz_input.h"
-#include "io/recovery_file.h"
+#include "io/scene/recovery_file.h"
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   // Scenes in the recovery file resolve meshes against its folder, as in the scene target.

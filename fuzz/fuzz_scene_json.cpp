@@ -1,5 +1,5 @@
-// libFuzzer target: the scene reader (io/scene_loader.h) on arbitrary text. The scene "file" sits
-// in a temporary folder next to two small OBJ files (cube.obj, tetra.obj, named in the
+// libFuzzer target: the scene reader (io/scene/scene_loader.h) on arbitrary text. The scene "file"
+// sits in a temporary folder next to two small OBJ files (cube.obj, tetra.obj, named in the
 // dictionary), so mesh objects reach the model loader too; presets and the teapot come from the
 // shipped assets.
 #include <cstdint>
@@ -8,7 +8,7 @@
 
 #include "base/error.h"
 #include "fuzz_input.h"
-#include "io/scene_loader.h"
+#include "io/scene/scene_loader.h"
 
 namespace {
 

@@ -1,5 +1,5 @@
-// libFuzzer target: the editor's script language (editor/model/script.h, script_runner.h). The
-// text is parsed, then every line runs through run_script_line on a host without GL (the editor
+// libFuzzer target: the editor's script language (editor/model/script/script.h, script_runner.h).
+// The text is parsed, then every line runs through run_script_line on a host without GL (the editor
 // model is GL-free) against a small scene: spheres, a quad and a teapot. The host's waits,
 // screenshots, stats, sleeps and quality measurements do nothing (no renders, no files); what is
 // fuzzed is the parser, the dispatcher and the command layer with its undo. At the end the edited
@@ -8,11 +8,11 @@
 #include <string>
 
 #include "base/error.h"
-#include "editor/model/command_layer.h"
-#include "editor/model/script.h"
-#include "editor/model/script_runner.h"
+#include "editor/model/document/command_layer.h"
+#include "editor/model/script/script.h"
+#include "editor/model/script/script_runner.h"
 #include "fuzz_input.h"
-#include "io/scene_loader.h"
+#include "io/scene/scene_loader.h"
 
 namespace {
 

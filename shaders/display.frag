@@ -4,7 +4,8 @@
 // Modes: 0 shows u_a; 1 shows u_a + u_b (emissive + ambient); 2 shows the largest per-channel
 // |u_a - u_b| on the heat ramp, where u_heat_scale (linear units) maps to the ramp's top.
 // With u_clip_overlay, modes 0 and 1 show pixels with any exposed channel above 1 (what the clamp
-// cuts; editor/model/exposure_histogram.h counts the same) as magenta and dark zebra stripes.
+// cuts; editor/model/measure/exposure_histogram.h counts the same) as magenta and dark zebra
+// stripes.
 in vec2 v_uv;
 out vec4 frag_colour;
 

@@ -6,8 +6,8 @@
 // double. float arithmetic throughout (the CPU path computes the per-light factors in double;
 // docs/spec/shading.md, "A raster (GLSL) path", counts float arithmetic as a measured knob).
 //
-// What a program must define BEFORE this code (an exported shader, editor/model/glsl_export.h,
-// defines all of them as constants):
+// What a program must define BEFORE this code (an exported shader,
+// editor/model/export/glsl_export.h, defines all of them as constants):
 //   GLOSS_LIGHT_COUNT                  a #define, number of point lights (0 allowed)
 //   vec3 gloss_ka, gloss_kd, gloss_ks, gloss_ke   material constants ("The terms and the total")
 //   float gloss_alpha                  shininess exponent, >= 0

@@ -1,6 +1,7 @@
 // raster_mesh.frag: the fragment half of raster_mesh.vert's three variants. The shading passes
 // write the total and the four term buffers to colour attachments 0..4 (the order of the
-// exported shader, editor/model/glsl_export.h); the shadow pass writes the distance to the light.
+// exported shader, editor/model/export/glsl_export.h); the shadow pass writes the distance to the
+// light.
 #if defined(GLOSS_SHADOW_PASS)
 in vec3 gloss_position;
 layout(location = 0) out float gloss_distance;

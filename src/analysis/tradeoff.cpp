@@ -11,7 +11,7 @@
 #include "analysis/image_resample.h"
 #include "base/timing.h"
 #include "engine/renderer.h"
-#include "io/scene_loader.h"
+#include "io/scene/scene_loader.h"
 #include "reference/reference_renderer.h"
 
 namespace gloss {

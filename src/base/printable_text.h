@@ -1,6 +1,6 @@
 #pragma once
 // Text from input files (names, paths, tokens) shown to a person: nothing in it may drive the
-// terminal. Also the UTF-8 test that the name escape of io/name_escape.h is built on.
+// terminal. Also the UTF-8 test that the name escape of io/json/name_escape.h is built on.
 #include <cstddef>
 #include <string>
 
@@ -12,7 +12,7 @@ namespace gloss {
 std::size_t utf8_sequence_length(const std::string& text, std::size_t i);
 
 // Appends byte as \xHH (two uppercase hex digits), the escape of printable_text and of
-// io/name_escape.h alike.
+// io/json/name_escape.h alike.
 void append_hex_escape(std::string& out, unsigned char byte);
 
 // text with every byte that could reach a terminal as a control written as \xHH (two uppercase

@@ -16,7 +16,7 @@
 #include "base/assets.h"
 #include "base/atomic_file.h"
 #include "cli/commands.h"
-#include "io/scene_loader.h"
+#include "io/scene/scene_loader.h"
 #include "scene/isa_variant.h"
 
 namespace gloss {

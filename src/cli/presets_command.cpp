@@ -5,7 +5,7 @@
 #include <string>
 
 #include "cli/commands.h"
-#include "io/preset_table.h"
+#include "io/material/preset_table.h"
 
 namespace gloss {
 

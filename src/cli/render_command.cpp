@@ -21,9 +21,9 @@
 #include "base/version.h"
 #include "cli/commands.h"
 #include "engine/renderer.h"
-#include "io/image_io.h"
-#include "io/scene_in_png.h"
-#include "io/scene_loader.h"
+#include "io/image/image_io.h"
+#include "io/image/scene_in_png.h"
+#include "io/scene/scene_loader.h"
 #include "reference/reference_renderer.h"
 
 namespace gloss {

@@ -23,7 +23,7 @@
 #include "base/atomic_file.h"
 #include "base/error.h"
 #include "cli/commands.h"
-#include "io/scene_loader.h"
+#include "io/scene/scene_loader.h"
 
 extern char** environ;
 

@@ -1,10 +1,10 @@
 #pragma once
 // The one place that decides what an edit invalidates (the edit path is widget -> command ->
 // document -> change class -> renderer): the largest change class among the fields that differ
-// (scene/scene_diff.h), raised to `light` when the render plan differs.
-#include "scene/change.h"
+// (scene/fields/scene_diff.h), raised to `light` when the render plan differs.
+#include "scene/fields/change.h"
+#include "scene/fields/scene_diff.h"
 #include "scene/scene.h"
-#include "scene/scene_diff.h"
 
 namespace gloss {
 

@@ -15,7 +15,7 @@
 #include "engine/trace/refined_samples.h"
 #include "engine/trace/sample_cache.h"
 #include "engine/trace/single_sample_pass.h"
-#include "scene/scene_diff.h"
+#include "scene/fields/scene_diff.h"
 
 namespace gloss {
 

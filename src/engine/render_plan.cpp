@@ -3,7 +3,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
 
-#include "scene/mesh.h"
+#include "scene/geometry/mesh.h"
 
 namespace gloss {
 

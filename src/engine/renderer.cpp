@@ -10,8 +10,8 @@
 #include "engine/trace/refined_samples.h"
 #include "engine/trace/sample_cache.h"
 #include "engine/trace/single_sample_pass.h"
-#include "scene/memory_estimate.h"
-#include "scene/validation.h"
+#include "scene/fields/validation.h"
+#include "scene/memory/memory_estimate.h"
 
 namespace gloss {
 
@@ -34,7 +34,7 @@ TermImages render(const Scene& scene, const RenderOptions& options) {
 
   const int w = scene.render.width, h = scene.render.height, spp = scene.render.spp;
   // Larger images go band by band, each band's sample cache about kSampleBandBytes; validation
-  // counted the same (scene/memory_estimate.h).
+  // counted the same (scene/memory/memory_estimate.h).
   const int band_rows = sample_band_rows(w, h, spp, ctx.plan.lights.size());
 
   TermImages out;

@@ -16,7 +16,7 @@
 #include "reference/pixel_inspection.h"
 #include "reference/reference_hit.h"
 #include "scene/camera.h"
-#include "scene/validation.h"
+#include "scene/fields/validation.h"
 #include "shading/sampling.h"
 #include "shading/shading.h"
 #include "shading/surface.h"

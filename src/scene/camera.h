@@ -15,7 +15,7 @@ struct Camera {
   float fov_y = 40.0f;  // degrees, 0 < fov_y < 180
 };
 
-// Equal in every field of its table (scene/fields.h).
+// Equal in every field of its table (scene/fields/fields.h).
 bool operator==(const Camera& a, const Camera& b);
 inline bool operator!=(const Camera& a, const Camera& b) {
   return !(a == b);

@@ -13,7 +13,7 @@ struct PointLight {
   glm::vec3 attenuation{1.0f, 0.0f, 0.0f};  // (c0, c1, c2), non-negative, not all zero
 };
 
-// Equal in every field of its table (scene/fields.h).
+// Equal in every field of its table (scene/fields/fields.h).
 bool operator==(const PointLight& a, const PointLight& b);
 inline bool operator!=(const PointLight& a, const PointLight& b) {
   return !(a == b);

@@ -15,7 +15,7 @@ struct Material {
   std::string preset;        // preset the constants came from, empty when custom
 };
 
-// Equal in every field of its table (scene/fields.h) and in preset.
+// Equal in every field of its table (scene/fields/fields.h) and in preset.
 bool operator==(const Material& a, const Material& b);
 inline bool operator!=(const Material& a, const Material& b) {
   return !(a == b);

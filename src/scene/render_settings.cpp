@@ -1,6 +1,6 @@
 #include "scene/render_settings.h"
 
-#include "scene/fields.h"
+#include "scene/fields/fields.h"
 
 namespace gloss {
 

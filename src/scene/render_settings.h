@@ -8,8 +8,8 @@ namespace gloss {
 
 enum class ShadingModel { phong, blinn_phong };
 
-// "phong" / "blinn-phong" (the names of scene/fields.h's render table); parse returns false for
-// any other name.
+// "phong" / "blinn-phong" (the names of scene/fields/fields.h's render table); parse returns false
+// for any other name.
 const char* to_string(ShadingModel model);
 bool parse_shading_model(const std::string& name, ShadingModel& model);
 

@@ -8,9 +8,9 @@
 #include <glm/vec3.hpp>
 
 #include "scene/camera.h"
+#include "scene/geometry/mesh.h"
 #include "scene/light.h"
 #include "scene/material.h"
-#include "scene/mesh.h"
 #include "scene/render_settings.h"
 
 namespace gloss {
@@ -33,8 +33,9 @@ struct ShapeParams {
   float rotate_y = 0.0f;                    // box/teapot/mesh: degrees about +y
   int tessellation = 8;                     // teapot: segments per patch side, 1..64
   bool smooth = true;                       // teapot/mesh: interpolate vertex normals
-  float crease_angle = kDefaultCreaseAngle;  // mesh without file normals: degrees, 0..180, edges
-                                             // sharper than this stay hard (io/model_loader.h)
+  float crease_angle = kDefaultCreaseAngle;  // mesh without file normals: degrees, 0..180,
+                                             // edges sharper than this stay hard
+                                             // (io/model/model_loader.h)
 };
 
 struct Object {

@@ -14,9 +14,9 @@
 
 #include <gtest/gtest.h>
 
-#include "io/image_io.h"
-#include "io/preset_table.h"
-#include "io/scene_loader.h"
+#include "io/image/image_io.h"
+#include "io/material/preset_table.h"
+#include "io/scene/scene_loader.h"
 #include "support/scratch_folder.h"
 
 namespace gloss {

@@ -15,8 +15,8 @@
 
 #include <gtest/gtest.h>
 
-#include "io/image_io.h"
-#include "io/scene_loader.h"
+#include "io/image/image_io.h"
+#include "io/scene/scene_loader.h"
 #include "support/scratch_folder.h"
 
 namespace gloss {

@@ -18,7 +18,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "base/error.h"
-#include "io/model_loader.h"
+#include "io/model/model_loader.h"
 #include "support/scratch_folder.h"
 
 namespace gloss {

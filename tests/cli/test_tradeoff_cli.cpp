@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/image_io.h"
+#include "io/image/image_io.h"
 #include "support/scratch_folder.h"
 
 namespace gloss {

@@ -9,7 +9,7 @@
 
 #include "engine/renderer.h"
 #include "engine/trace/single_sample_pass.h"
-#include "scene/memory_estimate.h"
+#include "scene/memory/memory_estimate.h"
 #include "support/image_compare.h"
 #include "support/scene_fixtures.h"
 

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/trace/embree_scene.h"
-#include "io/scene_loader.h"
+#include "io/scene/scene_loader.h"
 #include "support/scene_fixtures.h"
 
 namespace gloss {

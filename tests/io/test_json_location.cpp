@@ -1,4 +1,4 @@
-#include "io/json_location.h"
+#include "io/json/json_location.h"
 
 #include <gtest/gtest.h>
 

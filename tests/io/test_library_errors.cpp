@@ -9,10 +9,10 @@
 #include <gtest/gtest.h>
 
 #include "base/error.h"
-#include "io/image_io.h"
-#include "io/material_io.h"
-#include "io/recovery_file.h"
-#include "io/scene_loader.h"
+#include "io/image/image_io.h"
+#include "io/material/material_io.h"
+#include "io/scene/recovery_file.h"
+#include "io/scene/scene_loader.h"
 #include "support/scratch_folder.h"
 
 namespace gloss {

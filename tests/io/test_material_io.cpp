@@ -1,5 +1,5 @@
-#include "io/material_io.h"
-#include "io/material_json.h"
+#include "io/json/material_json.h"
+#include "io/material/material_io.h"
 
 #include <cmath>
 #include <fstream>
@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/error.h"
-#include "io/preset_table.h"
+#include "io/material/preset_table.h"
 #include "support/scratch_folder.h"
 
 namespace gloss {

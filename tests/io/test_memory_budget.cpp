@@ -7,7 +7,7 @@
 
 #include "base/error.h"
 #include "base/memory_budget.h"
-#include "io/scene_loader.h"
+#include "io/scene/scene_loader.h"
 
 namespace gloss {
 namespace {

@@ -1,4 +1,4 @@
-#include "io/model_loader.h"
+#include "io/model/model_loader.h"
 
 #include <algorithm>
 #include <cmath>

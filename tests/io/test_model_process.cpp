@@ -1,7 +1,7 @@
-// The model import runs in a child process (io/model_process.h): what the child makes comes back
-// bit for bit, its InputErrors come back as they were, and a child that crashes or dies is a
+// The model import runs in a child process (io/model/model_process.h): what the child makes comes
+// back bit for bit, its InputErrors come back as they were, and a child that crashes or dies is a
 // clean InputError naming the file, with this process unharmed.
-#include "io/model_process.h"
+#include "io/model/model_process.h"
 
 #include <unistd.h>
 

@@ -1,5 +1,5 @@
 // Names are bytes: whatever a reader accepts, both JSON writers write back, and the readers give
-// the same bytes again (io/name_escape.h, docs/spec/scene-and-cli.md "Names").
+// the same bytes again (io/json/name_escape.h, docs/spec/scene-and-cli.md "Names").
 #include <fstream>
 #include <string>
 #include <vector>
@@ -7,11 +7,11 @@
 #include <gtest/gtest.h>
 
 #include "base/error.h"
-#include "io/image_io.h"
-#include "io/material_io.h"
-#include "io/name_escape.h"
-#include "io/recovery_file.h"
-#include "io/scene_loader.h"
+#include "io/image/image_io.h"
+#include "io/json/name_escape.h"
+#include "io/material/material_io.h"
+#include "io/scene/recovery_file.h"
+#include "io/scene/scene_loader.h"
 #include "support/scratch_folder.h"
 
 namespace gloss {

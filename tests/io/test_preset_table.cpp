@@ -1,4 +1,4 @@
-#include "io/preset_table.h"
+#include "io/material/preset_table.h"
 
 #include <cstdlib>
 #include <fstream>

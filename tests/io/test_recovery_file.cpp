@@ -1,6 +1,6 @@
-// The crash-recovery file's own fields (io/recovery_file.h): the selected object is a whole number
-// that fits an int, checked before any conversion; the scene inside is the scene reader's.
-#include "io/recovery_file.h"
+// The crash-recovery file's own fields (io/scene/recovery_file.h): the selected object is a whole
+// number that fits an int, checked before any conversion; the scene inside is the scene reader's.
+#include "io/scene/recovery_file.h"
 
 #include <string>
 

@@ -1,4 +1,4 @@
-// Reopening a PNG as its scene (io/scene_in_png.h): the round trip, the one-line refusal of a
+// Reopening a PNG as its scene (io/image/scene_in_png.h): the round trip, the one-line refusal of a
 // PNG without a scene, errors inside the embedded JSON naming the PNG and the place, model paths,
 // and the hint for a materials file opened as a scene.
 #include <filesystem>
@@ -8,9 +8,9 @@
 #include <gtest/gtest.h>
 
 #include "base/error.h"
-#include "io/image_io.h"
-#include "io/scene_in_png.h"
-#include "io/scene_loader.h"
+#include "io/image/image_io.h"
+#include "io/image/scene_in_png.h"
+#include "io/scene/scene_loader.h"
 #include "support/scratch_folder.h"
 
 namespace gloss {

@@ -1,6 +1,6 @@
 // Scene files that load: shipped scenes, documented defaults, presets, geometry placement, OBJ
 // meshes with and without their MTL, and the exact save -> load round trip.
-#include "io/scene_loader.h"
+#include "io/scene/scene_loader.h"
 
 #include <filesystem>
 #include <fstream>
@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "base/error.h"
-#include "io/preset_table.h"
+#include "io/material/preset_table.h"
 #include "support/scratch_folder.h"
 
 namespace gloss {

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "base/error.h"
-#include "io/scene_loader.h"
+#include "io/scene/scene_loader.h"
 #include "support/scratch_folder.h"
 
 namespace gloss {

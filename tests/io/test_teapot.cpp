@@ -1,4 +1,4 @@
-#include "io/teapot_reader.h"
+#include "io/model/teapot_reader.h"
 
 #include <cmath>
 #include <fstream>

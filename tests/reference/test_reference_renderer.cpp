@@ -11,7 +11,7 @@
 
 #include "analysis/image_metrics.h"
 #include "engine/renderer.h"
-#include "io/scene_loader.h"
+#include "io/scene/scene_loader.h"
 #include "support/scene_fixtures.h"
 
 namespace gloss {

@@ -1,4 +1,4 @@
-#include "scene/mesh.h"
+#include "scene/geometry/mesh.h"
 
 #include <cmath>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "scene/shapes.h"
+#include "scene/geometry/shapes.h"
 
 #include <algorithm>
 

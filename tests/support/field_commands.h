@@ -1,8 +1,8 @@
 #pragma once
-// Short forms of the editor's SetField command (editor/model/command.h) for tests.
+// Short forms of the editor's SetField command (editor/model/document/command.h) for tests.
 #include <string>
 
-#include "editor/model/command.h"
+#include "editor/model/document/command.h"
 
 namespace gloss::test {
 

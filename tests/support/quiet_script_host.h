@@ -4,9 +4,9 @@
 #include <string>
 #include <utility>
 
-#include "editor/model/command_layer.h"
-#include "editor/model/script_runner.h"
-#include "editor/model/view_settings.h"
+#include "editor/model/document/command_layer.h"
+#include "editor/model/script/script_runner.h"
+#include "editor/model/view/view_settings.h"
 
 namespace gloss::test {
 

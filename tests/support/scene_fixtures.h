@@ -2,8 +2,8 @@
 // Small scenes built in code for the renderer's tests (no loader involved).
 #include <memory>
 
+#include "scene/geometry/shapes.h"
 #include "scene/scene.h"
-#include "scene/shapes.h"
 
 namespace gloss::test {
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "editor/gl/shader_sources.h"
-#include "editor/model/heat_map.h"
+#include "editor/model/view/heat_map.h"
 
 namespace gloss {
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "editor/gl/shader_sources.h"
-#include "editor/model/glsl_export.h"
+#include "editor/model/export/glsl_export.h"
 
 namespace gloss {
 

@@ -14,7 +14,7 @@
 #include <memory>
 #include <string>
 
-#include "editor/model/raster_settings.h"
+#include "editor/model/view/raster_settings.h"
 #include "engine/progressive_renderer.h"
 #include "scene/scene.h"
 

@@ -11,7 +11,7 @@
 
 #include "analysis/image_metrics.h"
 #include "analysis/tradeoff.h"
-#include "editor/model/raster_settings.h"
+#include "editor/model/view/raster_settings.h"
 #include "scene/scene.h"
 
 namespace gloss {

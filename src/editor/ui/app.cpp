@@ -10,9 +10,9 @@
 
 #include "base/error.h"
 #include "base/process_memory.h"
-#include "editor/model/camera_controller.h"
-#include "editor/model/config_paths.h"
-#include "editor/ui/quality_parts.h"
+#include "editor/model/session/config_paths.h"
+#include "editor/model/view/camera_controller.h"
+#include "editor/ui/panels/quality_parts.h"
 #include "editor/ui/script_player.h"
 
 namespace gloss {

@@ -15,18 +15,18 @@
 #include <glad/gl.h>
 
 #include "editor/gl/raster_tradeoff.h"
-#include "editor/model/autosave.h"
-#include "editor/model/background_priority.h"
-#include "editor/model/command_layer.h"
-#include "editor/model/quality_measurement.h"
-#include "editor/model/recent_files.h"
-#include "editor/model/unsaved_guard.h"
-#include "editor/model/view_settings.h"
+#include "editor/model/document/command_layer.h"
+#include "editor/model/measure/quality_measurement.h"
+#include "editor/model/session/autosave.h"
+#include "editor/model/session/background_priority.h"
+#include "editor/model/session/recent_files.h"
+#include "editor/model/session/unsaved_guard.h"
+#include "editor/model/view/view_settings.h"
 #include "editor/ui/file_browser.h"
 #include "editor/ui/notices.h"
-#include "editor/ui/swatches.h"
-#include "editor/ui/viewport.h"
-#include "io/material_io.h"
+#include "editor/ui/panels/swatches.h"
+#include "editor/ui/viewport/viewport.h"
+#include "io/material/material_io.h"
 #include "reference/pixel_inspection.h"
 
 namespace gloss {
@@ -156,7 +156,8 @@ void add_model(App& app, const std::string& path);
 void save_scene_as(App& app, const std::string& path);
 void load_materials(App& app, const std::string& path);
 void save_materials(App& app, const std::string& path);
-// Writes the selected object's material as a GLSL fragment shader (editor/model/glsl_export.h).
+// Writes the selected object's material as a GLSL fragment shader
+// (editor/model/export/glsl_export.h).
 void export_glsl_shader(App& app, const std::string& path);
 // Starts an export; path empty = timestamped name in view.screenshot_dir.
 void start_screenshot(App& app, ScreenshotKind kind, const std::string& path, bool from_script);

@@ -8,13 +8,13 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "base/error.h"
-#include "editor/model/document.h"
-#include "editor/model/export_image.h"
-#include "editor/model/glsl_export.h"
-#include "editor/model/script_runner.h"
+#include "editor/model/document/document.h"
+#include "editor/model/export/export_image.h"
+#include "editor/model/export/glsl_export.h"
+#include "editor/model/script/script_runner.h"
 #include "editor/ui/app.h"
-#include "io/model_loader.h"
-#include "io/scene_loader.h"
+#include "io/model/model_loader.h"
+#include "io/scene/scene_loader.h"
 
 namespace gloss {
 

@@ -7,7 +7,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
-#include "io/model_loader.h"
+#include "io/model/model_loader.h"
 
 namespace gloss {
 

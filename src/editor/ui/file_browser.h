@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "editor/model/recent_files.h"
+#include "editor/model/session/recent_files.h"
 
 namespace gloss {
 

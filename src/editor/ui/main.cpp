@@ -16,12 +16,12 @@
 #include "base/assets.h"
 #include "base/error.h"
 #include "base/process_memory.h"
-#include "editor/model/config_paths.h"
-#include "editor/model/document.h"
-#include "editor/model/headless.h"
+#include "editor/model/document/document.h"
+#include "editor/model/script/headless.h"
+#include "editor/model/session/config_paths.h"
 #include "editor/ui/app.h"
 #include "editor/ui/script_player.h"
-#include "io/scene_loader.h"
+#include "io/scene/scene_loader.h"
 
 namespace {
 

@@ -7,11 +7,11 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
-#include "editor/model/memory_report.h"
-#include "editor/model/quality_measurement.h"
-#include "editor/model/script_runner.h"
+#include "editor/model/measure/memory_report.h"
+#include "editor/model/measure/quality_measurement.h"
+#include "editor/model/script/script_runner.h"
 #include "editor/ui/app.h"
-#include "editor/ui/quality_parts.h"
+#include "editor/ui/panels/quality_parts.h"
 
 namespace gloss {
 

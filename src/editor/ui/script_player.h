@@ -1,12 +1,13 @@
 #pragma once
 // Plays a Script inside the running editor, a few lines per frame, through the one dispatcher
-// (editor/model/script_runner.h): document lines go through the command layer at once; `wait`,
-// `screenshot`, `sleep` and `quality measure` hold the script until the renderer has converged
-// and its frame is on screen, the file is written, the time has passed or the measurement ended.
+// (editor/model/script/script_runner.h): document lines go through the command layer at once;
+// `wait`, `screenshot`, `sleep` and `quality measure` hold the script until the renderer has
+// converged and its frame is on screen, the file is written, the time has passed or the measurement
+// ended.
 #include <cstddef>
 #include <string>
 
-#include "editor/model/script.h"
+#include "editor/model/script/script.h"
 
 namespace gloss {
 

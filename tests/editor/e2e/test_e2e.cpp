@@ -13,7 +13,7 @@
 #include <string>
 
 #include "editor/e2e/editor_process.h"
-#include "io/image_io.h"
+#include "io/image/image_io.h"
 
 namespace gloss {
 namespace {

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "editor/e2e/editor_process.h"
-#include "io/image_io.h"
+#include "io/image/image_io.h"
 
 namespace gloss {
 namespace {

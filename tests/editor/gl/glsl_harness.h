@@ -1,7 +1,7 @@
 #pragma once
-// A host program for exported GLSL shaders (editor/model/glsl_export.h) in the EGL tests: the
-// CPU finds each pixel's primary hit exactly, in double (docs/spec/shading.md's camera formula at
-// the pixel centre, the nearest sphere or triangle), and hands its point and normal to the
+// A host program for exported GLSL shaders (editor/model/export/glsl_export.h) in the EGL tests:
+// the CPU finds each pixel's primary hit exactly, in double (docs/spec/shading.md's camera formula
+// at the pixel centre, the nearest sphere or triangle), and hands its point and normal to the
 // exported shader as one GL point at that pixel's centre; the five outputs are read back as
 // floats. Shadows are not modelled (the export has none): compare with shadows off.
 #include <functional>

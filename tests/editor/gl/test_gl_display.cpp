@@ -11,7 +11,7 @@
 #include "editor/gl/egl_context.h"
 #include "editor/gl/gl_texture.h"
 #include "editor/gl/render_target.h"
-#include "editor/model/heat_map.h"
+#include "editor/model/view/heat_map.h"
 
 namespace gloss {
 namespace {

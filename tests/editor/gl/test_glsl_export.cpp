@@ -1,4 +1,4 @@
-// Export GLSL (editor/model/glsl_export.h) run through GL 3.3 core without a display: the
+// Export GLSL (editor/model/export/glsl_export.h) run through GL 3.3 core without a display: the
 // exported fragment shader, fed exact hit points and normals per pixel (glsl_harness.h),
 // against the double-precision reference renderer of the same scene at one sample per pixel.
 // docs/spec/shading.md ("A raster (GLSL) path", issue 12): with shadows off, at least 99.5 % of
@@ -16,7 +16,7 @@
 
 #include "editor/gl/egl_context.h"
 #include "editor/gl/glsl_harness.h"
-#include "editor/model/glsl_export.h"
+#include "editor/model/export/glsl_export.h"
 #include "support/scene_fixtures.h"
 
 namespace gloss {

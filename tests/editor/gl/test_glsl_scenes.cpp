@@ -1,8 +1,8 @@
-// Every shipped scene through its exported shaders (one per material, editor/model/glsl_export.h)
-// against render_reference<double> at 1 spp, shadows off (the export has no shadow test), at
-// 160 x 120: at least 99.5 % of pixels within 1e-3 on every term (issue 12, item 4, the
-// shadow-free half), and none of the others off the reference's silhouette / edge mask. The host
-// finds the hits (glsl_harness.h); the shader does all the shading.
+// Every shipped scene through its exported shaders (one per material,
+// editor/model/export/glsl_export.h) against render_reference<double> at 1 spp, shadows off (the
+// export has no shadow test), at 160 x 120: at least 99.5 % of pixels within 1e-3 on every term
+// (issue 12, item 4, the shadow-free half), and none of the others off the reference's silhouette /
+// edge mask. The host finds the hits (glsl_harness.h); the shader does all the shading.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -10,8 +10,8 @@
 
 #include "editor/gl/egl_context.h"
 #include "editor/gl/glsl_harness.h"
-#include "editor/model/glsl_export.h"
-#include "io/scene_loader.h"
+#include "editor/model/export/glsl_export.h"
+#include "io/scene/scene_loader.h"
 
 namespace gloss {
 namespace {

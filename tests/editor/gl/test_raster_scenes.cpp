@@ -12,7 +12,7 @@
 #include "editor/gl/egl_context.h"
 #include "editor/gl/glsl_harness.h"
 #include "editor/gl/raster_renderer.h"
-#include "io/scene_loader.h"
+#include "io/scene/scene_loader.h"
 
 namespace gloss {
 namespace {

@@ -16,9 +16,9 @@
 #include "base/error.h"
 #include "editor/gl/egl_context.h"
 #include "editor/gl/raster_tradeoff.h"
-#include "editor/model/headless.h"
-#include "editor/model/script.h"
-#include "io/scene_loader.h"
+#include "editor/model/script/headless.h"
+#include "editor/model/script/script.h"
+#include "io/scene/scene_loader.h"
 
 namespace gloss {
 namespace {

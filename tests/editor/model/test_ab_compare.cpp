@@ -5,10 +5,10 @@
 #include <gtest/gtest.h>
 
 #include "base/error.h"
-#include "editor/model/ab_compare.h"
-#include "editor/model/heat_map.h"
-#include "editor/model/script.h"
-#include "editor/model/script_runner.h"
+#include "editor/model/script/script.h"
+#include "editor/model/script/script_runner.h"
+#include "editor/model/view/ab_compare.h"
+#include "editor/model/view/heat_map.h"
 #include "engine/renderer.h"
 #include "support/quiet_script_host.h"
 #include "support/test_scene.h"

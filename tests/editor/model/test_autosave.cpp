@@ -6,9 +6,9 @@
 #include <fstream>
 
 #include "base/error.h"
-#include "editor/model/autosave.h"
-#include "editor/model/command_layer.h"
-#include "io/scene_loader.h"
+#include "editor/model/document/command_layer.h"
+#include "editor/model/session/autosave.h"
+#include "io/scene/scene_loader.h"
 #include "support/field_commands.h"
 #include "support/test_scene.h"
 

@@ -7,7 +7,7 @@
 #include <atomic>
 #include <thread>
 
-#include "editor/model/background_priority.h"
+#include "editor/model/session/background_priority.h"
 
 namespace gloss {
 namespace {

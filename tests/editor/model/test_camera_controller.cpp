@@ -6,8 +6,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "editor/model/camera_controller.h"
-#include "editor/model/heat_map.h"
+#include "editor/model/view/camera_controller.h"
+#include "editor/model/view/heat_map.h"
 
 namespace gloss {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "editor/model/command_layer.h"
+#include "editor/model/document/command_layer.h"
 #include "support/field_commands.h"
 #include "support/test_scene.h"
 

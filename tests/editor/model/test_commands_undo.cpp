@@ -5,9 +5,9 @@
 
 #include <memory>
 
-#include "editor/model/command_layer.h"
-#include "io/preset_table.h"
-#include "io/scene_loader.h"
+#include "editor/model/document/command_layer.h"
+#include "io/material/preset_table.h"
+#include "io/scene/scene_loader.h"
 #include "support/field_commands.h"
 #include "support/test_scene.h"
 

@@ -4,10 +4,10 @@
 
 #include <filesystem>
 
-#include "editor/model/export_image.h"
-#include "editor/model/sheet_labels.h"
-#include "io/image_io.h"
-#include "io/scene_loader.h"
+#include "editor/model/export/export_image.h"
+#include "editor/model/export/sheet_labels.h"
+#include "io/image/image_io.h"
+#include "io/scene/scene_loader.h"
 #include "support/test_scene.h"
 
 namespace gloss {

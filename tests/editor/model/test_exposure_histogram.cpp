@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "editor/model/exposure_histogram.h"
+#include "editor/model/measure/exposure_histogram.h"
 
 namespace gloss {
 namespace {

@@ -1,6 +1,6 @@
-// Export GLSL's text (editor/model/glsl_export.h) and its script verb `export glsl PATH [OBJECT]`.
-// Whether the shader computes the contract is tested through GL in tests/editor/gl.
-#include "editor/model/glsl_export.h"
+// Export GLSL's text (editor/model/export/glsl_export.h) and its script verb `export glsl PATH
+// [OBJECT]`. Whether the shader computes the contract is tested through GL in tests/editor/gl.
+#include "editor/model/export/glsl_export.h"
 
 #include <cstdio>
 #include <fstream>
@@ -10,8 +10,8 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
-#include "editor/model/script.h"
-#include "editor/model/script_runner.h"
+#include "editor/model/script/script.h"
+#include "editor/model/script/script_runner.h"
 #include "support/quiet_script_host.h"
 #include "support/scratch_folder.h"
 #include "support/test_scene.h"

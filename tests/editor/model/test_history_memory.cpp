@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "editor/model/command_layer.h"
-#include "scene/scene_bytes.h"
+#include "editor/model/document/command_layer.h"
+#include "scene/memory/scene_bytes.h"
 #include "support/field_commands.h"
 #include "support/test_scene.h"
 

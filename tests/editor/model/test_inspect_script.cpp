@@ -9,9 +9,9 @@
 #include <gtest/gtest.h>
 
 #include "base/error.h"
-#include "editor/model/command_layer.h"
-#include "editor/model/script.h"
-#include "editor/model/script_runner.h"
+#include "editor/model/document/command_layer.h"
+#include "editor/model/script/script.h"
+#include "editor/model/script/script_runner.h"
 #include "reference/reference_renderer.h"
 #include "support/quiet_script_host.h"
 #include "support/test_scene.h"

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "editor/model/log_drag.h"
+#include "editor/model/view/log_drag.h"
 
 namespace gloss {
 namespace {

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "editor/model/recent_files.h"
-#include "editor/model/unsaved_guard.h"
+#include "editor/model/session/recent_files.h"
+#include "editor/model/session/unsaved_guard.h"
 #include "support/scratch_folder.h"
 
 namespace gloss {

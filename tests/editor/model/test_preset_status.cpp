@@ -2,8 +2,8 @@
 // them, read as the preset. Needs the shipped preset table (GLOSS_ASSETS).
 #include <gtest/gtest.h>
 
-#include "editor/model/preset_status.h"
-#include "io/preset_table.h"
+#include "editor/model/document/preset_status.h"
+#include "io/material/preset_table.h"
 
 namespace gloss {
 namespace {

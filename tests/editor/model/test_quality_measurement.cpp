@@ -13,10 +13,10 @@
 #include <thread>
 
 #include "base/error.h"
-#include "editor/model/document.h"
-#include "editor/model/quality_measurement.h"
-#include "editor/model/script.h"
-#include "io/scene_loader.h"
+#include "editor/model/document/document.h"
+#include "editor/model/measure/quality_measurement.h"
+#include "editor/model/script/script.h"
+#include "io/scene/scene_loader.h"
 #include "support/test_scene.h"
 
 namespace gloss {

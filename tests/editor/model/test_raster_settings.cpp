@@ -1,11 +1,11 @@
-// The raster path's settings (editor/model/raster_settings.h): the names scripts and the
+// The raster path's settings (editor/model/view/raster_settings.h): the names scripts and the
 // settings line use for the renderer choice and the shading frequency, and the equality the
 // viewport uses to decide whether a raster frame is out of date.
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "editor/model/raster_settings.h"
+#include "editor/model/view/raster_settings.h"
 
 namespace gloss {
 namespace {

@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 
 #include "base/error.h"
-#include "editor/model/command_layer.h"
-#include "editor/model/script.h"
-#include "editor/model/script_runner.h"
+#include "editor/model/document/command_layer.h"
+#include "editor/model/script/script.h"
+#include "editor/model/script/script_runner.h"
 #include "support/test_scene.h"
 
 namespace gloss {

@@ -1,14 +1,14 @@
-// SetTessellation (editor/model/command.h): the teapot's mesh resolution as a live, undoable
-// edit. The mesh it makes must be the one the scene reader makes from a file that asks for the
-// same tessellation (an independent path: JSON through io/scene_loader), undo must bring back
-// the very mesh it replaced, and bad requests must leave the document alone.
+// SetTessellation (editor/model/document/command.h): the teapot's mesh resolution as a live,
+// undoable edit. The mesh it makes must be the one the scene reader makes from a file that asks for
+// the same tessellation (an independent path: JSON through io/scene/scene_loader), undo must bring
+// back the very mesh it replaced, and bad requests must leave the document alone.
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "editor/model/command_layer.h"
-#include "editor/model/script.h"
-#include "io/scene_loader.h"
+#include "editor/model/document/command_layer.h"
+#include "editor/model/script/script.h"
+#include "io/scene/scene_loader.h"
 
 namespace gloss {
 namespace {

@@ -1,0 +1,128 @@
+#include "editor/model/export/glsl_export.h"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "base/atomic_file.h"
+#include "base/printable_text.h"
+
+namespace gloss {
+
+namespace {
+
+// A GLSL float literal that reads back as the same float: 9 significant digits, and always a
+// '.' or an exponent (GLSL ES 3.00 has no implicit int-to-float conversion).
+std::string literal(float value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", static_cast<double>(value));
+  std::string s = text;
+  if (s.find_first_of(".eE") == std::string::npos) s += ".0";
+  return s;
+}
+
+std::string vec3_literal(const glm::vec3& v) {
+  return "vec3(" + literal(v.x) + ", " + literal(v.y) + ", " + literal(v.z) + ")";
+}
+
+// `const vec3 NAME[N] = vec3[N](...);` with one entry per light and its source on each line.
+std::string light_array(const Scene& scene, const char* name, const char* field,
+                        glm::vec3 PointLight::*member) {
+  const std::string n = std::to_string(scene.lights.size());
+  std::string out = "const vec3 " + std::string(name) + "[" + n + "] = vec3[" + n + "](\n";
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    out += "    " + vec3_literal(scene.lights[i].*member) +
+           (i + 1 < scene.lights.size() ? "," : " ") + "  // lights[" + std::to_string(i) + "]." +
+           field + "\n";
+  }
+  return out + ");\n";
+}
+
+}  // namespace
+
+std::string export_glsl(const Scene& scene, int material) {
+  if (material < 0 || material >= static_cast<int>(scene.materials.size())) {
+    throw std::out_of_range("no material " + std::to_string(material));
+  }
+  const Material& m = scene.materials[static_cast<std::size_t>(material)];
+  // Names and paths come from files: a newline in one would end the GLSL comment it is in.
+  const std::string name =
+      printable_text(static_cast<std::size_t>(material) < scene.material_names.size()
+                         ? scene.material_names[static_cast<std::size_t>(material)]
+                         : "material " + std::to_string(material));
+  const std::string where = "materials[" + std::to_string(material) + "] \"" + name + "\"";
+  std::string s;
+  s += "#version 330 core\n";
+  s += "// For GLSL ES 3.00 / WebGL 2, make the line above `#version 300 es`; nothing else "
+       "changes.\n";
+  s += "// Exported by gloss (Export GLSL): the shading contract of docs/spec/shading.md for\n";
+  s += "// " + where + " under the scene's " + std::to_string(scene.lights.size()) +
+       " point light(s)" + (scene.path.empty() ? "" : ", from " + printable_text(scene.path)) +
+       ".\n";
+  s += "//\n";
+  s += "// The host program supplies, per fragment, in world space:\n";
+  s += "//   gloss_position  the surface point p\n";
+  s += "//   gloss_normal    the surface normal; used as both the shading normal n and the\n";
+  s +=
+      "//                   geometric normal n_g of the two-sided rule (pass the face normal for\n";
+  s += "//                   flat meshes); normalised here\n";
+  s += "//   gloss_eye       the camera position\n";
+  s +=
+      "// Outputs: location 0 the total; 1..4 the emissive, ambient, diffuse and specular terms.\n";
+  s += "// Linear RGB, not clamped: use a float render target, or apply your display encoding.\n";
+  s += "#ifdef GL_ES\nprecision highp float;\n#endif\n\n";
+  s += "in vec3 gloss_position;\nin vec3 gloss_normal;\nuniform vec3 gloss_eye;\n";
+  s += "layout(location = 0) out vec4 gloss_total;\n";
+  s += "layout(location = 1) out vec4 gloss_emissive;\n";
+  s += "layout(location = 2) out vec4 gloss_ambient;\n";
+  s += "layout(location = 3) out vec4 gloss_diffuse;\n";
+  s += "layout(location = 4) out vec4 gloss_specular;\n\n";
+  s += "// The material: " + where +
+       (m.preset.empty() ? "" : ", preset \"" + printable_text(m.preset) + "\"") + ".\n";
+  s += "const vec3 gloss_ka = " + vec3_literal(m.ambient) + ";  // " + where + ".ambient\n";
+  s += "const vec3 gloss_kd = " + vec3_literal(m.diffuse) + ";  // " + where + ".diffuse\n";
+  s += "const vec3 gloss_ks = " + vec3_literal(m.specular) + ";  // " + where + ".specular\n";
+  s += "const vec3 gloss_ke = " + vec3_literal(m.emission) + ";  // " + where + ".emission\n";
+  s += "const float gloss_alpha = " + literal(m.shininess) + ";  // " + where + ".shininess\n\n";
+  s += "// The scene and its render settings.\n";
+  s += "const vec3 gloss_scene_ambient = " + vec3_literal(scene.ambient) + ";  // scene ambient\n";
+  s += std::string("const int gloss_model = ") +
+       (scene.render.model == ShadingModel::phong ? "0" : "1") + ";  // render.model \"" +
+       to_string(scene.render.model) + "\" (0 GLOSS_PHONG, 1 GLOSS_BLINN_PHONG)\n";
+  s += std::string("const bool gloss_energy_normalize = ") +
+       (scene.render.energy_normalize ? "true" : "false") + ";  // render.energy_normalize\n\n";
+  s += "// The point lights, in the scene's order.\n";
+  s += "#define GLOSS_LIGHT_COUNT " + std::to_string(scene.lights.size()) + "\n";
+  if (!scene.lights.empty()) {
+    s += light_array(scene, "gloss_light_position", "position", &PointLight::position);
+    s += light_array(scene, "gloss_light_ambient", "ambient (La)", &PointLight::ambient);
+    s += light_array(scene, "gloss_light_diffuse", "diffuse (Ld)", &PointLight::diffuse);
+    s += light_array(scene, "gloss_light_specular", "specular (Ls)", &PointLight::specular);
+    s += light_array(scene, "gloss_light_attenuation", "attenuation (c0, c1, c2)",
+                     &PointLight::attenuation);
+  }
+  s += "\n// Visibility of light i from p: 1 lit, 0 shadowed.\n";
+  s += scene.render.shadows
+           ? "// The scene has shadows on (render.shadows); this shader has no shadow\n"
+             "// test: replace the body with your shadow-map lookup.\n"
+           : "// The scene has shadows off (render.shadows).\n";
+  s += "float gloss_visibility(int light, vec3 p, vec3 n_g) {\n  return 1.0;\n}\n\n";
+  s += "// ---- shaders/phong_contract.glsl ----\n";
+  s += kPhongContractGlsl;
+  s += "// ---- end of shaders/phong_contract.glsl ----\n\n";
+  s += "void main() {\n";
+  s += "  vec3 n = normalize(gloss_normal);\n";
+  s += "  GlossTerms t = gloss_shade(gloss_position, n, n, gloss_eye);\n";
+  s += "  gloss_total = vec4(t.total, 1.0);\n";
+  s += "  gloss_emissive = vec4(t.emissive, 1.0);\n";
+  s += "  gloss_ambient = vec4(t.ambient, 1.0);\n";
+  s += "  gloss_diffuse = vec4(t.diffuse, 1.0);\n";
+  s += "  gloss_specular = vec4(t.specular, 1.0);\n";
+  s += "}\n";
+  return s;
+}
+
+void write_glsl_export(const std::string& path, const Scene& scene, int material) {
+  write_text_atomically(path, export_glsl(scene, material));
+}
+
+}  // namespace gloss

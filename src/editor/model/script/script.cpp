@@ -1,0 +1,402 @@
+#include "editor/model/script/script.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "base/atomic_file.h"
+#include "base/error.h"
+
+namespace gloss {
+
+namespace {
+
+// Tokens of one line and the parsing helpers that turn them into values, throwing plain
+// messages that parse_script turns into InputErrors with the line number.
+struct Tokens {
+  std::vector<std::string> words;
+  std::size_t next = 1;  // words[0] is the command
+
+  bool done() const { return next >= words.size(); }
+  const std::string& word(const char* what) {
+    if (done()) throw std::runtime_error(std::string("missing ") + what);
+    return words[next++];
+  }
+  float number(const char* what) {
+    const std::string& w = word(what);
+    char* end = nullptr;
+    const float value = std::strtof(w.c_str(), &end);
+    if (end == w.c_str() || *end != '\0') {
+      throw std::runtime_error(std::string("expected a number for ") + what + ", got '" + w + "'");
+    }
+    return value;
+  }
+  double whole(const char* what) {
+    const std::string& w = word(what);
+    char* end = nullptr;
+    const double value = std::strtod(w.c_str(), &end);
+    if (end == w.c_str() || *end != '\0' || value != std::floor(value)) {
+      throw std::runtime_error(std::string("expected a whole number for ") + what + ", got '" + w +
+                               "'");
+    }
+    return value;
+  }
+  int index(const char* what) {
+    const std::string& w = word(what);
+    char* end = nullptr;
+    const long value = std::strtol(w.c_str(), &end, 10);
+    if (end == w.c_str() || *end != '\0' || value < 0 || value > 1000000) {
+      throw std::runtime_error(std::string("expected an index for ") + what + ", got '" + w + "'");
+    }
+    return static_cast<int>(value);
+  }
+  glm::vec3 vec3(const char* what) {
+    const float x = number(what);
+    const float y = number(what);
+    const float z = number(what);
+    return {x, y, z};
+  }
+  bool on_off(const char* what) {
+    const std::string& w = word(what);
+    if (w == "on") return true;
+    if (w == "off") return false;
+    throw std::runtime_error(std::string(what) + " must be on or off, got '" + w + "'");
+  }
+  void end() {
+    if (!done()) throw std::runtime_error("unexpected '" + words[next] + "'");
+  }
+};
+
+// `quality raster PATH [WIDTH HEIGHT [REFERENCE_SPP]]` (issue 12: the raster path's rows).
+QualityAction parse_quality_raster(Tokens& t) {
+  QualityAction q{QualityAction::Verb::raster, t.word("csv path")};
+  if (t.done()) return q;
+  q.width = t.index("width");
+  q.height = t.index("height");
+  if (q.width < 1 || q.height < 1 || q.width > kMaxImageSide || q.height > kMaxImageSide) {
+    throw std::runtime_error("quality raster: width and height must be 1.." +
+                             std::to_string(kMaxImageSide));
+  }
+  if (t.done()) return q;
+  q.reference_spp = t.index("reference spp");
+  if (q.reference_spp < 1 || q.reference_spp > kMaxSpp) {
+    throw std::runtime_error("quality raster: reference spp must be 1.." + std::to_string(kMaxSpp));
+  }
+  return q;
+}
+
+// A value of field from the rest of the line: one number for a grey colour or three for R G B,
+// three for a vector, one number, a whole number, on/off, or a choice's name.
+template <class S>
+FieldValue parse_value(Tokens& t, const Field<S>& field) {
+  FieldValue value;
+  switch (field.kind) {
+    case FieldKind::colour: {
+      const float r = t.number("colour");
+      if (t.done()) {
+        value.v = glm::vec3(r);
+        break;
+      }
+      const float g = t.number("colour");
+      value.v = {r, g, t.number("colour")};
+      break;
+    }
+    case FieldKind::vector:
+      value.v = t.vec3(field.key);
+      break;
+    case FieldKind::number:
+      value.x = t.number(field.key);
+      break;
+    case FieldKind::whole:
+      value.x = t.whole(field.key);
+      break;
+    case FieldKind::flag:
+      value.x = t.on_off(field.key) ? 1.0 : 0.0;
+      break;
+    case FieldKind::choice: {
+      const std::string& name = t.word(field.key);
+      const int index = choice_index(field, name);
+      if (index < 0) {
+        std::string names;
+        for (const char* c : field.choices) names += (names.empty() ? "" : ", ") + std::string(c);
+        throw std::runtime_error(std::string(field.key) + " must be one of " + names + ", got '" +
+                                 name + "'");
+      }
+      value.x = index;
+      break;
+    }
+  }
+  return value;
+}
+
+// "KEY VALUE..." of a part's table, as a SetField.
+template <class S>
+Command parse_field(Tokens& t, const FieldTable<S>& table, FieldPart part, int index,
+                    const std::string& key) {
+  const Field<S>* field = find_field(table, key);
+  if (field == nullptr) {
+    std::string keys;
+    for (const Field<S>& f : table) keys += (keys.empty() ? "" : ", ") + std::string(f.key);
+    throw std::runtime_error("unknown " + std::string(to_string(part)) + " field '" + key + "' (" +
+                             keys + ")");
+  }
+  return SetField{part, index, field->key, parse_value(t, *field)};
+}
+
+ScriptAction parse_light(Tokens& t) {
+  if (t.words.size() > 1 && t.words[1] == "add") {
+    ++t.next;
+    return Command(AddLight{});
+  }
+  if (t.words.size() > 1 && t.words[1] == "remove") {
+    ++t.next;
+    return Command(RemoveLight{t.index("light index")});
+  }
+  const int light = t.index("light index");
+  return parse_field(t, light_fields(), FieldPart::light, light, t.word("light field"));
+}
+
+// Older spellings of render fields, kept working: `shadows on`, `energy on`, `spp 16`,
+// `encoding srgb`.
+ScriptAction parse_render_alias(Tokens& t, const std::string& verb) {
+  if (verb == "energy")
+    return parse_field(t, render_fields(), FieldPart::render, 0, "energy_normalize");
+  if (verb == "encoding") {
+    const std::string& e = t.word("encoding");
+    if (e != "clamp" && e != "srgb") throw std::runtime_error("encoding must be clamp or srgb");
+    FieldValue value;
+    value.x = e == "srgb" ? 1.0 : 0.0;
+    return Command(SetField{FieldPart::render, 0, "srgb", value});
+  }
+  return parse_field(t, render_fields(), FieldPart::render, 0, verb);
+}
+
+// ---- Exposure and snapshot comparison (issue 13, items 3 and 4) ----
+// `view clipped on|off` and `view ab [snapshot]`; false when mode is another view.
+bool parse_view_extra(Tokens& t, const std::string& mode, ScriptAction& out) {
+  if (mode == "clipped") {
+    out = ClippedOverlayAction{t.on_off("view clipped")};
+    return true;
+  }
+  if (mode == "ab") {
+    ViewAction v;
+    v.mode = ViewMode::ab;
+    if (!t.done()) {
+      const std::string& source = t.word("A/B source");
+      if (source == "snapshot") {
+        v.ab_source = AbSource::snapshot;
+      } else if (source == "cpu-gl") {
+        v.ab_source = AbSource::cpu_gl;
+      } else if (source == "pixel-vertex") {
+        v.ab_source = AbSource::pixel_vertex;
+      } else {
+        throw std::runtime_error(
+            "view ab takes nothing, 'snapshot', 'cpu-gl' or 'pixel-vertex', got '" + source + "'");
+      }
+    }
+    out = v;
+    return true;
+  }
+  return false;
+}
+
+// `view lobe ELEVATION_DEG` and `inspect X Y` (the lobe view and the pixel inspector).
+ScriptAction parse_lobe_elevation(Tokens& t, ViewAction v) {
+  const float degrees = t.number("light elevation in degrees");
+  if (!(degrees >= 0.0f && degrees <= 90.0f)) {
+    throw std::runtime_error("the light elevation must be 0..90 degrees");
+  }
+  v.lobe_elevation_deg = degrees;
+  return v;
+}
+
+ScriptAction parse_inspect(Tokens& t) {
+  InspectAction a;
+  a.x = t.index("pixel x");
+  a.y = t.index("pixel y");
+  return a;
+}
+
+// ---- The GLSL path (issue 12): renderer choice and raster knobs ----
+// `renderer cpu|gl|auto`, `shading pixel|vertex`, `shadow-map SIZE`, `shadow-bias TEXELS`;
+// false when verb is none of them.
+bool parse_raster_line(Tokens& t, const std::string& verb, ScriptAction& out) {
+  if (verb == "renderer") {
+    RendererAction a;
+    const std::string& name = t.word("renderer");
+    if (!parse_renderer_choice(name, a.choice)) {
+      throw std::runtime_error("renderer must be cpu, gl or auto, got '" + name + "'");
+    }
+    out = a;
+    return true;
+  }
+  if (verb == "shading") {
+    ShadingAction a;
+    const std::string& name = t.word("shading frequency");
+    if (!parse_shading_frequency(name, a.frequency)) {
+      throw std::runtime_error("shading must be pixel or vertex, got '" + name + "'");
+    }
+    out = a;
+    return true;
+  }
+  if (verb == "shadow-map") {
+    const double size = t.whole("shadow map size");
+    if (size < kMinShadowMapSize || size > kMaxShadowMapSize) {
+      throw std::runtime_error("shadow-map must be " + std::to_string(kMinShadowMapSize) + ".." +
+                               std::to_string(kMaxShadowMapSize) + " texels");
+    }
+    out = ShadowMapAction{static_cast<int>(size)};
+    return true;
+  }
+  if (verb == "shadow-bias") {
+    const float texels = t.number("shadow bias in texels");
+    if (!(texels >= 0.0f) || !std::isfinite(texels)) {
+      throw std::runtime_error("shadow-bias must be a finite number of texels >= 0");
+    }
+    out = ShadowBiasAction{texels};
+    return true;
+  }
+  return false;
+}
+
+ScriptAction parse_line(Tokens& t) {
+  const std::string& verb = t.words[0];
+  if (verb == "preset") {
+    const int object = t.index("object index");
+    return Command(ApplyPreset{object, t.word("preset name")});
+  }
+  if (verb == "set") {
+    const int object = t.index("object index");
+    return parse_field(t, material_fields(), FieldPart::material, object, t.word("field"));
+  }
+  if (verb == "model") {
+    SetModel c;
+    const std::string& name = t.word("model");
+    if (!parse_shading_model(name, c.model)) {
+      throw std::runtime_error("model must be phong or blinn-phong, got '" + name + "'");
+    }
+    if (!t.done()) {
+      if (t.word("option") != "keep-size") throw std::runtime_error("expected 'keep-size'");
+      c.keep_highlight_size = true;
+    }
+    return Command(c);
+  }
+  if (verb == "light") return parse_light(t);
+  if (verb == "tessellation") {  // every teapot's segments per patch side; the command checks it
+    return Command(SetTessellation{static_cast<int>(t.whole("segments per patch side"))});
+  }
+  if (verb == "camera") {
+    const std::string& what = t.word("camera action or field");
+    if (what != "orbit") return parse_field(t, camera_fields(), FieldPart::camera, 0, what);
+    const float yaw = t.number("degrees about up");
+    return Command(OrbitCamera{yaw, t.number("degrees about right")});
+  }
+  if (verb == "render")
+    return parse_field(t, render_fields(), FieldPart::render, 0, t.word("field"));
+  if (verb == "scene") return parse_field(t, scene_fields(), FieldPart::scene, 0, t.word("field"));
+  if (find_field(scene_fields(), verb) != nullptr) {  // `ambient R G B`, `background R G B`
+    return parse_field(t, scene_fields(), FieldPart::scene, 0, verb);
+  }
+  if (verb == "shadows" || verb == "energy" || verb == "spp" || verb == "encoding") {
+    return parse_render_alias(t, verb);
+  }
+  if (verb == "undo") return UndoAction{};
+  if (verb == "redo") return RedoAction{};
+  if (verb == "wait") return t.done() ? WaitAction{} : WaitAction{t.number("timeout seconds")};
+  if (verb == "screenshot") {
+    ScreenshotAction s;
+    s.path = t.word("path");
+    if (!t.done()) {
+      const std::string& kind = t.word("kind");
+      if (!parse_screenshot_kind(kind, s.kind)) {
+        throw std::runtime_error("screenshot kind must be viewport, terms or window, got '" + kind +
+                                 "'");
+      }
+    }
+    return s;
+  }
+  if (verb == "view") {
+    ViewAction v;
+    const std::string& mode = t.word("view");
+    if (ScriptAction exposure_or_ab; parse_view_extra(t, mode, exposure_or_ab)) {
+      return exposure_or_ab;
+    }
+    if (mode == "term") {
+      v.mode = ViewMode::single;
+      const std::string& term = t.word("term");
+      if (!parse_term_view(term, v.term)) throw std::runtime_error("unknown term '" + term + "'");
+    } else if (!parse_view_mode(mode, v.mode) || v.mode == ViewMode::single) {
+      throw std::runtime_error(
+          "view must be render, terms, ab, lobe, 'term NAME', 'ab snapshot|cpu-gl|pixel-vertex' "
+          "or 'clipped on|off', got '" +
+          mode + "'");
+    }
+    if (v.mode == ViewMode::lobe && !t.done()) return parse_lobe_elevation(t, v);
+    return v;
+  }
+  if (verb == "inspect") return parse_inspect(t);
+  if (verb == "exposure") return ExposureAction{t.number("stops")};
+  if (verb == "select") return SelectAction{t.index("object index")};
+  if (verb == "stats") return StatsAction{};
+  if (verb == "sleep") {
+    const float seconds = t.number("seconds");
+    if (!(seconds >= 0.0f && seconds <= 3600.0f)) throw std::runtime_error("sleep 0..3600 s");
+    return SleepAction{seconds};
+  }
+  if (verb == "animate") return AnimateAction{t.on_off("animate")};
+  if (verb == "quit") return QuitAction{};
+  if (verb == "snapshot") return SnapshotAction{};
+  if (verb == "quality") {
+    const std::string& what = t.word("quality action");
+    if (what == "measure") return QualityAction{QualityAction::Verb::measure, ""};
+    if (what == "start") return QualityAction{QualityAction::Verb::start, ""};
+    if (what == "cancel") return QualityAction{QualityAction::Verb::cancel, ""};
+    if (what == "csv") return QualityAction{QualityAction::Verb::csv, t.word("csv path")};
+    if (what == "raster") return parse_quality_raster(t);
+    throw std::runtime_error(
+        "quality must be measure, start, cancel, 'csv PATH' or 'raster PATH', got '" + what + "'");
+  }
+  if (ScriptAction raster; parse_raster_line(t, verb, raster)) return raster;
+  // Issue 14: the memory report.
+  if (verb == "memory") return MemoryAction{};
+  // Issue 12: the GLSL path.
+  if (verb == "export") {
+    const std::string& what = t.word("export kind");
+    if (what != "glsl") throw std::runtime_error("export must be 'glsl PATH', got '" + what + "'");
+    ExportGlslAction e;
+    e.path = t.word("shader path");
+    if (!t.done()) e.object = t.index("object index");
+    return e;
+  }
+  throw std::runtime_error("unknown command '" + verb + "'");
+}
+
+}  // namespace
+
+Script parse_script(const std::string& text, const std::string& file) {
+  Script script;
+  script.file = file;
+  std::istringstream in(text);
+  std::string raw;
+  for (int number = 1; std::getline(in, raw); ++number) {
+    std::string line = raw.substr(0, raw.find('#'));
+    Tokens t;
+    std::istringstream words(line);
+    for (std::string w; words >> w;) t.words.push_back(w);
+    if (t.words.empty()) continue;
+    try {
+      ScriptAction action = parse_line(t);
+      t.end();
+      script.lines.push_back({number, line, std::move(action)});
+    } catch (const std::runtime_error& e) {
+      throw InputError(file, e.what(), number);
+    }
+  }
+  return script;
+}
+
+Script load_script(const std::string& path) {
+  return parse_script(read_text_file(path), path);
+}
+
+}  // namespace gloss

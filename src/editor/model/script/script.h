@@ -1,0 +1,127 @@
+#pragma once
+// Scripted mode: `gloss SCENE.json --script FILE` replays a text file of commands, one per line,
+// through the command layer. '#' starts a comment; blank lines are skipped. The line grammar is in
+// docs/editor.md. Document lines become Commands; the rest (wait, screenshot, view, quit ...) are
+// actions the editor's frame loop or the headless runner carry out.
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "editor/model/document/command.h"
+#include "editor/model/view/view_settings.h"
+
+namespace gloss {
+
+struct UndoAction {};
+struct RedoAction {};
+struct WaitAction {
+  double timeout_s = 300.0;  // a render that has not converged by then is an error
+};
+struct ScreenshotAction {
+  std::string path;  // a folder (existing, or ending in '/') gets a timestamped name inside it
+  ScreenshotKind kind = ScreenshotKind::viewport;
+};
+struct ViewAction {
+  ViewMode mode = ViewMode::render;
+  TermView term = TermView::total;  // for ViewMode::single
+  // for ViewMode::ab: `view ab`, `view ab snapshot`, `view ab cpu-gl`, `view ab pixel-vertex`
+  AbSource ab_source = AbSource::models;
+  float lobe_elevation_deg = -1.0f;  // for ViewMode::lobe: 0..90, or -1 to keep the current one
+};
+// ---- Exposure and snapshot comparison (issue 13, items 3 and 4) ----
+// `view clipped on|off`: the clipped-pixel overlay.
+struct ClippedOverlayAction {
+  bool on = false;
+};
+// `snapshot`: keeps the current document as the A side of `view ab snapshot`.
+struct SnapshotAction {};
+struct ExposureAction {
+  float stops = 0.0f;
+};
+struct SelectAction {
+  int object = 0;
+};
+// Prints the editor's frame and latency measurements on stdout, then restarts the frame-time
+// window so consecutive `stats` lines measure the interval between them.
+struct StatsAction {};
+// Lets frames run for a while (measurements, animations).
+struct SleepAction {
+  double seconds = 1.0;
+};
+// Starts or stops the orbit-light animation.
+struct AnimateAction {
+  bool on = false;
+};
+struct QuitAction {};
+// Prints the process's resident memory and what the editor can account for of it (history,
+// frames, textures; docs/editor.md, "Memory").
+struct MemoryAction {};
+// The Quality panel's measurement (quality_measurement.h) at its quick settings: measure starts it
+// on the current scene and holds the script until it ends; start does not hold; cancel stops it;
+// csv writes the rows so far as tradeoff CSV to path, atomically. raster (`quality raster PATH
+// [WIDTH HEIGHT [REFERENCE_SPP]]`, issue 12) measures the raster path's rows
+// (editor/gl/raster_tradeoff.h) on the editor's GL thread and writes their CSV to path; the size
+// and reference default to the panel's quick settings. It needs the window's GL context.
+struct QualityAction {
+  enum class Verb { measure, start, cancel, csv, raster };
+  Verb verb = Verb::measure;
+  std::string path;           // csv and raster
+  int width = 0, height = 0;  // raster: image size, pixels; 0: the quick settings'
+  int reference_spp = 0;      // raster: the reference's samples per pixel; 0: the quick settings'
+};
+
+// Prints what the contract computed at the centre of pixel (x, y) of the document's render size
+// (editor/model/measure/pixel_report.h) and pins the editor's pixel inspector there.
+struct InspectAction {
+  int x = 0, y = 0;
+};
+
+// ---- The GLSL path (issue 12) ----
+// `export glsl PATH [OBJECT]`: writes the fragment shader of editor/model/export/glsl_export.h for
+// the material of object OBJECT (default: the selected object), atomically.
+struct ExportGlslAction {
+  std::string path;
+  int object = -1;  // -1: the host's selected object
+};
+
+// `renderer cpu|gl|auto`: which renderer draws the viewport (raster_settings.h).
+struct RendererAction {
+  RendererChoice choice = RendererChoice::cpu;
+};
+// `shading pixel|vertex`: the raster path's shading frequency.
+struct ShadingAction {
+  ShadingFrequency frequency = ShadingFrequency::pixel;
+};
+// `shadow-map SIZE`: texels per cube face side, kMinShadowMapSize..kMaxShadowMapSize.
+struct ShadowMapAction {
+  int size = 1024;
+};
+// `shadow-bias TEXELS`: the raster shadow test's bias, >= 0.
+struct ShadowBiasAction {
+  float texels = 1.5f;
+};
+
+using ScriptAction =
+    std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction, ViewAction,
+                 ExposureAction, SelectAction, StatsAction, SleepAction, AnimateAction, QuitAction,
+                 QualityAction, InspectAction, ClippedOverlayAction, SnapshotAction, MemoryAction,
+                 ExportGlslAction, RendererAction, ShadingAction, ShadowMapAction,
+                 ShadowBiasAction>;
+
+struct ScriptLine {
+  int line = 0;  // 1-based line number in the file
+  std::string text;
+  ScriptAction action;
+};
+
+struct Script {
+  std::string file;  // for messages
+  std::vector<ScriptLine> lines;
+};
+
+// Parses every line first, so a typo anywhere fails before anything runs. Throws InputError
+// naming the file and the line ("FILE:LINE: MESSAGE").
+Script parse_script(const std::string& text, const std::string& file);
+Script load_script(const std::string& path);
+
+}  // namespace gloss

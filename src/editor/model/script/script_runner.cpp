@@ -1,0 +1,163 @@
+#include "editor/model/script/script_runner.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "base/overloaded.h"
+#include "editor/model/export/glsl_export.h"
+#include "editor/model/measure/memory_report.h"
+#include "editor/model/measure/pixel_report.h"
+#include "reference/pixel_inspection.h"
+
+namespace gloss {
+
+namespace {
+
+LineResult bad_line(const std::string& where, const std::string& message) {
+  std::fprintf(stderr, "error: %s%s\n", where.c_str(), message.c_str());
+  return LineResult::stop(2);
+}
+
+// `inspect X Y`: the same for both hosts, a reading of the document (the reference path) printed
+// on stdout; the editor's inspector is pinned there.
+LineResult inspect(ScriptHost& host, const InspectAction& a, const std::string& where) {
+  const Scene& scene = host.layer().scene();
+  if (a.x >= scene.render.width || a.y >= scene.render.height) {
+    return bad_line(where, "pixel " + std::to_string(a.x) + " " + std::to_string(a.y) +
+                               " is outside the " + std::to_string(scene.render.width) + "x" +
+                               std::to_string(scene.render.height) + " render");
+  }
+  std::fputs(pixel_report(inspect_pixel(scene, a.x, a.y)).c_str(), stdout);
+  std::fflush(stdout);
+  ViewSettings& view = host.view();
+  view.show_inspector = true;
+  view.inspect_pinned = true;
+  view.inspect_x = a.x;
+  view.inspect_y = a.y;
+  return LineResult::go_on();
+}
+
+// `export glsl PATH [OBJECT]` (issue 12): the same for both hosts, text only (no GL needed).
+LineResult export_glsl_line(ScriptHost& host, const ExportGlslAction& a, const std::string& where) {
+  const Scene& scene = host.layer().scene();
+  const int object = a.object >= 0 ? a.object : host.selected_object();
+  if (object < 0 || object >= static_cast<int>(scene.objects.size())) {
+    return bad_line(where, "no object " + std::to_string(object));
+  }
+  const int material = scene.objects[static_cast<std::size_t>(object)].material;
+  try {
+    write_glsl_export(a.path, scene, material);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s%s\n", where.c_str(), e.what());
+    return LineResult::stop(1);
+  }
+  std::printf("export glsl: %s (material %d of object %d)\n", a.path.c_str(), material, object);
+  std::fflush(stdout);
+  return LineResult::go_on();
+}
+
+}  // namespace
+
+Snapshot take_snapshot(const CommandLayer& layer, const std::optional<Snapshot>& previous) {
+  int number = 1;
+  if (previous && previous->label.rfind("snapshot ", 0) == 0) {
+    number = std::atoi(previous->label.c_str() + 9) + 1;
+  }
+  return Snapshot{layer.scene(), layer.revision(), "snapshot " + std::to_string(number)};
+}
+
+LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptHost& host) {
+  const std::string where = script.file + ":" + std::to_string(line.line) + ": ";
+  try {
+    return std::visit(
+        Overloaded{
+            [&](const Command& command) {
+              host.layer().execute(command);
+              host.layer().seal();
+              return LineResult::go_on();
+            },
+            [&](const UndoAction&) {
+              if (!host.layer().undo()) throw CommandError("nothing to undo");
+              return LineResult::go_on();
+            },
+            [&](const RedoAction&) {
+              if (!host.layer().redo()) throw CommandError("nothing to redo");
+              return LineResult::go_on();
+            },
+            [&](const ViewAction& a) {
+              if (a.mode == ViewMode::ab && a.ab_source == AbSource::snapshot && !host.snapshot()) {
+                return bad_line(where,
+                                "no snapshot to compare with: take one "
+                                "with 'snapshot' first");
+              }
+              if (a.mode == ViewMode::ab) host.view().ab_source = a.ab_source;
+              host.view().mode = a.mode;
+              if (a.mode == ViewMode::single) host.view().single = a.term;
+              if (a.lobe_elevation_deg >= 0.0f) {
+                host.view().lobe_elevation_deg = a.lobe_elevation_deg;
+              }
+              return LineResult::go_on();
+            },
+            [&](const ExposureAction& a) {
+              host.view().exposure = a.stops;
+              return LineResult::go_on();
+            },
+            [&](const SelectAction& a) {
+              if (a.object >= static_cast<int>(host.layer().scene().objects.size())) {
+                return bad_line(where, "no object " + std::to_string(a.object));
+              }
+              host.select(a.object);
+              return LineResult::go_on();
+            },
+            [&](const AnimateAction& a) {
+              host.view().orbit_light = a.on;
+              return LineResult::go_on();
+            },
+            [&](const QuitAction&) { return LineResult::stop(0); },
+            [&](const ClippedOverlayAction& a) {
+              host.view().show_clipped = a.on;
+              return LineResult::go_on();
+            },
+            [&](const SnapshotAction&) {
+              host.snapshot() = take_snapshot(host.layer(), host.snapshot());
+              std::printf("snapshot: %s\n", host.snapshot()->label.c_str());
+              return LineResult::go_on();
+            },
+            [&](const WaitAction& a) { return host.wait(a, where); },
+            [&](const ScreenshotAction& a) { return host.screenshot(a, where); },
+            [&](const StatsAction&) { return host.stats(); },
+            [&](const SleepAction& a) { return host.sleep(a); },
+            [&](const QualityAction& a) { return host.quality(a, where); },
+            [&](const InspectAction& a) { return inspect(host, a, where); },
+            [&](const MemoryAction&) { return host.memory(); },
+            [&](const ExportGlslAction& a) { return export_glsl_line(host, a, where); },
+            [&](const RendererAction& a) {
+              host.view().renderer = a.choice;
+              return LineResult::go_on();
+            },
+            [&](const ShadingAction& a) {
+              host.view().raster.shading = a.frequency;
+              return LineResult::go_on();
+            },
+            [&](const ShadowMapAction& a) {
+              host.view().raster.shadow_map_size = a.size;
+              return LineResult::go_on();
+            },
+            [&](const ShadowBiasAction& a) {
+              host.view().raster.shadow_bias = a.texels;
+              return LineResult::go_on();
+            },
+        },
+        line.action);
+  } catch (const CommandError& e) {
+    return bad_line(where, e.what());
+  }
+}
+
+LineResult ScriptHost::memory() {
+  std::printf("memory: %s\n", memory_text(layer(), ViewMemory{}).c_str());
+  std::fflush(stdout);
+  return LineResult::go_on();
+}
+
+}  // namespace gloss

@@ -1,0 +1,71 @@
+#pragma once
+// How the editor shows the document: view mode, exposure, preview quality. These are
+// preferences of the window, not part of the document, so they are not undone. The display
+// encoding (sRGB or clamp) is the document's (render.srgb): the viewport, screenshots and
+// exports all follow it.
+#include <string>
+
+#include "editor/model/view/raster_settings.h"
+
+namespace gloss {
+
+// render: the total image; terms: emissive+ambient, diffuse, specular and total in a 2x2 sheet;
+// single: one term alone; ab: Phong against Blinn-Phong with a difference heat map; lobe: the
+// selected material's reflected radiance in the plane of incidence (analysis/brdf_lobe.h).
+enum class ViewMode { render, terms, single, ab, lobe };
+const char* to_string(ViewMode mode);
+bool parse_view_mode(const std::string& name, ViewMode& mode);
+
+// The images a pane can show. emissive_ambient is the sum of those two term buffers.
+enum class TermView { emissive_ambient, emissive, ambient, diffuse, specular, total };
+const char* to_string(TermView term);
+const char* display_name(TermView term);  // "emissive + ambient"
+bool parse_term_view(const std::string& name, TermView& term);
+
+// What the A/B view compares (ab_compare.h): the document as Phong | Blinn-Phong, the snapshot
+// taken with Snapshot | the live document, the ray tracer at 1 spp | the raster path (cpu_gl), or
+// the raster path per pixel | per vertex (pixel_vertex).
+enum class AbSource { models, snapshot, cpu_gl, pixel_vertex };
+
+enum class ScreenshotKind { viewport, terms, window };
+const char* to_string(ScreenshotKind kind);
+bool parse_screenshot_kind(const std::string& name, ScreenshotKind& kind);
+
+// Energy normalisation of the lobe view's curves: as the document's render.energy_normalize, or
+// forced on or off for the view alone (the document is not changed).
+enum class LobeEnergy { scene, on, off };
+
+struct ViewSettings {
+  ViewMode mode = ViewMode::render;
+  // Which renderer draws the viewport (raster_settings.h) and the raster path's knobs.
+  RendererChoice renderer = RendererChoice::cpu;
+  RasterSettings raster;
+  TermView single = TermView::specular;   // shown by ViewMode::single
+  float exposure = 0.0f;                  // stops: displayed value = linear * 2^exposure
+  bool heat_auto_scale = true;            // heat scale = largest difference of the shown pair
+  float heat_scale = 0.1f;                // linear difference at the top of the heat ramp, > 0
+  float preview_scale = 1.0f;             // render pixels per screen pixel, 0.25..1
+  AbSource ab_source = AbSource::models;  // what ViewMode::ab compares
+  // One setting for two uses: the model switch rescales every exponent by document.h's rule,
+  // and the Phong | Blinn-Phong A/B view renders B with the rescaled exponents.
+  bool keep_highlight_size = true;
+  bool show_clipped = false;  // stripes over clipped pixels (exposure_histogram.h)
+  bool orbit_light = false;   // animate the selected light about the target's y axis
+  float orbit_speed = 45.0f;  // degrees per second
+  ScreenshotKind screenshot_kind = ScreenshotKind::viewport;  // what Ctrl+S saves
+  std::string screenshot_dir = ".";  // where Ctrl+S writes its timestamped files
+
+  // The lobe view (ViewMode::lobe).
+  float lobe_elevation_deg = 45.0f;  // light above the surface, degrees, 0..90
+  LobeEnergy lobe_energy = LobeEnergy::scene;
+
+  // The pixel inspector: a pixel of the document's render size, read at its centre.
+  bool show_inspector = false;
+  bool inspect_pinned = false;  // false: the inspector follows the cursor over the viewport
+  int inspect_x = 0, inspect_y = 0;
+};
+
+// Whether the lobe view normalises: document_setting is render.energy_normalize.
+bool lobe_energy_normalize(LobeEnergy energy, bool document_setting);
+
+}  // namespace gloss

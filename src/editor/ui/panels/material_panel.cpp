@@ -1,0 +1,179 @@
+// The Material panel: the selected object's material constants, the preset swatches, the shading
+// model switch. Widgets edit a copy; one place at the end turns a change into a command.
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <imgui.h>
+
+#include "editor/model/document/preset_status.h"
+#include "editor/ui/app.h"
+#include "editor/ui/panels/field_widgets.h"
+#include "editor/ui/panels/panel_widgets.h"
+#include "io/material/preset_table.h"
+
+namespace gloss {
+
+namespace {
+
+// The preset swatches with their names: a table of small swatches, each with its name beside
+// it ("black plastic"), clipped to the column; the current preset is outlined, and a tweaked one
+// is named "(modified)" in the heading above.
+void draw_presets(App& app, int object, const Material& material) {
+  const std::vector<Preset>& presets = preset_table();
+  const float icon = ImGui::GetTextLineHeight() + 4.0f;
+  const int columns = std::clamp(static_cast<int>(ImGui::GetContentRegionAvail().x / 118.0f), 1, 4);
+  if (!ImGui::BeginTable("##presets", columns, ImGuiTableFlags_SizingStretchSame)) return;
+  for (std::size_t i = 0; i < presets.size(); ++i) {
+    ImGui::TableNextColumn();
+    ImGui::PushID(static_cast<int>(i));
+    const bool current = presets[i].name == material.preset;
+    std::string name = presets[i].name;
+    std::replace(name.begin(), name.end(), '_', ' ');
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    // One selectable row per preset: swatch and name click alike.
+    const bool clicked = ImGui::Selectable("##preset", current, 0, ImVec2(0.0f, icon));
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", presets[i].name.c_str());
+    ImDrawList* list = ImGui::GetWindowDrawList();
+    if (GLuint texture = app.swatches.texture(i); texture != 0) {
+      list->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(texture)), at,
+                     ImVec2(at.x + icon, at.y + icon));
+    } else {
+      list->AddRectFilled(at, ImVec2(at.x + icon, at.y + icon), IM_COL32(60, 60, 66, 255));
+    }
+    if (current) {
+      list->AddRect(ImVec2(at.x - 1, at.y - 1), ImVec2(at.x + icon + 1, at.y + icon + 1),
+                    IM_COL32(242, 190, 50, 255), 0.0f, 0, 2.0f);
+    }
+    list->AddText(ImVec2(at.x + icon + 4.0f, at.y + 2.0f), ImGui::GetColorU32(ImGuiCol_Text),
+                  name.c_str());
+    if (clicked) execute(app, ApplyPreset{object, presets[i].name});
+    ImGui::PopID();
+  }
+  ImGui::EndTable();
+}
+
+void draw_model_switch(App& app) {
+  const RenderSettings& render = app.commands.scene().render;
+  section_title("Shading model (whole scene)");
+  int model = render.model == ShadingModel::phong ? 0 : 1;
+  bool changed = ImGui::RadioButton("Phong (R.V)", &model, 0);
+  ImGui::SameLine();
+  changed |= ImGui::RadioButton("Blinn-Phong (N.H)", &model, 1);
+  if (changed) {
+    execute(app, SetModel{model == 0 ? ShadingModel::phong : ShadingModel::blinn_phong,
+                          app.view.keep_highlight_size});
+  }
+  // One setting for both uses (view_settings.h): the switch above and the A/B view's B side.
+  ImGui::Checkbox("keep highlight size (x4 rule)", &app.view.keep_highlight_size);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "Blinn-Phong exponent = 4 x Phong exponent: near the peak the half vector\n"
+        "turns half as far as the reflection vector, so the lobes match.\n"
+        "Used when the model is switched here, and by the A/B view (B side).");
+  }
+  RenderSettings edited = render;
+  field_widget(*find_field(render_fields(), "energy_normalize"), edited);
+  if (auto command = field_command(FieldPart::render, 0, render_fields(), render, edited)) {
+    execute(app, *command);
+  }
+}
+
+void draw_library(App& app, int object) {
+  if (app.library.empty()) return;
+  section_title(("Loaded from " + app.library_source).c_str());
+  for (std::size_t i = 0; i < app.library.size(); ++i) {
+    ImGui::PushID(static_cast<int>(i));
+    if (ImGui::Button("Apply")) {
+      execute(app, SetMaterial{object, app.library[i].second, app.library[i].first});
+    }
+    ImGui::SameLine();
+    ImGui::TextUnformatted(app.library[i].first.c_str());
+    ImGui::PopID();
+  }
+}
+
+}  // namespace
+
+void draw_material_panel(App& app, ImVec2 pos, ImVec2 size) {
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
+  if (!ImGui::Begin("Material", nullptr, flags)) {
+    ImGui::End();
+    return;
+  }
+  const Scene& scene = app.commands.scene();
+  if (scene.objects.empty()) {
+    ImGui::TextWrapped("The scene has no objects. Open a scene or add a model (File menu).");
+    draw_model_switch(app);
+    ImGui::End();
+    return;
+  }
+  app.selected_object =
+      std::clamp(app.selected_object, 0, static_cast<int>(scene.objects.size()) - 1);
+  const int object = app.selected_object;
+  const std::string current = object_label(scene, object);
+  if (ImGui::BeginCombo("object", current.c_str())) {
+    for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
+      if (ImGui::Selectable(object_label(scene, i).c_str(), i == object)) app.selected_object = i;
+    }
+    ImGui::EndCombo();
+  }
+  const int material_index = scene.objects[object].material;
+  // A copy: an executed command replaces the scene's vectors, and this is read afterwards.
+  const Material material = scene.materials[material_index];
+  const long users = std::count_if(scene.objects.begin(), scene.objects.end(),
+                                   [&](const Object& o) { return o.material == material_index; });
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  ImGui::TextWrapped("material '%s'%s", scene.material_names[material_index].c_str(),
+                     users > 1 ? " (shared: edits change every object using it)" : "");
+  ImGui::PopStyleColor();
+
+  Material edited = material;
+  ImGui::PushItemWidth(-120.0f);  // room for the longest label, "Phong exponent"
+  ImGui::Checkbox("link RGB channels", &app.link_channels);
+  // The exponent's label names the model it is the exponent of.
+  const bool blinn = scene.render.model == ShadingModel::blinn_phong;
+  for (const Field<Material>& field : material_fields()) {
+    const bool exponent = std::string(field.key) == "shininess";
+    field_widget(
+        field, edited, app.link_channels,
+        exponent ? (blinn ? "Blinn exponent##shininess" : "Phong exponent##shininess") : nullptr);
+    if (exponent && ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("%s", blinn ? "alpha of (N.H)^alpha, Blinn-Phong; drag: 1%% per pixel, "
+                                      "Shift faster, Alt finer, Ctrl+click to type"
+                                    : "alpha of (R.V)^alpha, Phong; drag: 1%% per pixel, "
+                                      "Shift faster, Alt finer, Ctrl+click to type");
+    }
+  }
+  ImGui::PopItemWidth();
+  if (auto command =
+          field_command(FieldPart::material, object, material_fields(), material, edited)) {
+    execute(app, *command);
+  }
+
+  section_title("Presets");
+  if (!material.preset.empty()) {
+    ImGui::Text("preset: %s", preset_status(material).c_str());
+    if (preset_modified(material)) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton("Reset")) execute(app, ApplyPreset{object, material.preset});
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("reload '%s', undoing the tweaks", material.preset.c_str());
+    }
+  } else {
+    ImGui::TextDisabled("custom material (no preset)");
+  }
+  if (!app.swatches.error().empty()) {
+    ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "swatches: %s", app.swatches.error().c_str());
+  }
+  draw_presets(app, object, material);
+  draw_model_switch(app);
+  draw_library(app, object);
+  ImGui::End();
+}
+
+}  // namespace gloss

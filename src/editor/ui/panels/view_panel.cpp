@@ -1,0 +1,266 @@
+// The View & Quality panel: view mode, exposure, heat-map scale, the renderer and the raster
+// path's knobs (issue 12), the document's render settings (scene/fields/fields.h's render table),
+// the preview scale, and screenshots. View settings are window preferences (not undone); render
+// settings are the document's and go through commands.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include "editor/ui/app.h"
+#include "editor/ui/panels/field_widgets.h"
+#include "editor/ui/panels/panel_widgets.h"
+
+namespace gloss {
+
+namespace {
+
+// The histogram of the live image as displayed (exposure and encoding applied): R, G and B
+// counts over 64 bins, drawn as lines on a square-root scale so that the dark bins of a mostly
+// black background do not flatten the rest. Then the clipped share and the overlay switch.
+void draw_histogram(App& app) {
+  ViewSettings& view = app.view;
+  const ExposureHistogram h = app.viewport.histogram(view, app.commands.scene().render.srgb);
+  const float width = ImGui::GetContentRegionAvail().x;
+  const float height = 56.0f;
+  const ImVec2 p0 = ImGui::GetCursorScreenPos();
+  ImGui::Dummy(ImVec2(width, height));
+  ImDrawList* list = ImGui::GetWindowDrawList();
+  list->AddRectFilled(p0, ImVec2(p0.x + width, p0.y + height), IM_COL32(20, 20, 22, 255));
+  std::uint32_t top = 1;
+  for (const auto& channel : h.counts) {
+    for (std::uint32_t n : channel) top = std::max(top, n);
+  }
+  const ImU32 colours[3] = {IM_COL32(235, 80, 80, 220), IM_COL32(90, 220, 90, 220),
+                            IM_COL32(100, 140, 255, 220)};
+  for (int c = 0; c < 3; ++c) {
+    ImVec2 points[ExposureHistogram::kBins];
+    for (int b = 0; b < ExposureHistogram::kBins; ++b) {
+      const float share = std::sqrt(static_cast<float>(h.counts[c][b]) / static_cast<float>(top));
+      points[b] = ImVec2(p0.x + width * (static_cast<float>(b) + 0.5f) / ExposureHistogram::kBins,
+                         p0.y + height - 1.0f - share * (height - 2.0f));
+    }
+    list->AddPolyline(points, ExposureHistogram::kBins, colours[c], 0, 1.0f);
+  }
+  const double share = h.clipped_share();
+  const ImVec4 colour = share > 0.01 ? ImVec4(1.0f, 0.55f, 0.35f, 1.0f)
+                                     : ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
+  ImGui::TextColored(colour, "clipped %.1f%% (R %.1f G %.1f B %.1f)", 100.0 * share,
+                     h.pixels ? 100.0 * h.clipped_channel[0] / h.pixels : 0.0,
+                     h.pixels ? 100.0 * h.clipped_channel[1] / h.pixels : 0.0,
+                     h.pixels ? 100.0 * h.clipped_channel[2] / h.pixels : 0.0);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "pixels with any channel above 1 after exposure: the display clamps them\n"
+        "(histogram of the displayed values, R G B, square-root height)");
+  }
+  ImGui::Checkbox("show clipped pixels", &view.show_clipped);
+}
+
+void draw_view_mode(App& app) {
+  ViewSettings& view = app.view;
+  int mode = static_cast<int>(view.mode);
+  ImGui::RadioButton("render (1)", &mode, static_cast<int>(ViewMode::render));
+  ImGui::SameLine();
+  ImGui::RadioButton("terms 2x2 (2)", &mode, static_cast<int>(ViewMode::terms));
+  ImGui::RadioButton("one term (3)", &mode, static_cast<int>(ViewMode::single));
+  ImGui::SameLine();
+  ImGui::RadioButton("A/B (4)", &mode, static_cast<int>(ViewMode::ab));
+  ImGui::RadioButton("BRDF lobe (5)", &mode, static_cast<int>(ViewMode::lobe));
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("the selected material's lobe as a polar plot");
+  ImGui::SameLine();
+  ImGui::Checkbox("pixel inspector (I)", &view.show_inspector);
+  view.mode = static_cast<ViewMode>(mode);
+  if (view.mode == ViewMode::single) {
+    if (ImGui::BeginCombo("term", display_name(view.single))) {
+      for (TermView t : {TermView::emissive_ambient, TermView::emissive, TermView::ambient,
+                         TermView::diffuse, TermView::specular, TermView::total}) {
+        if (ImGui::Selectable(display_name(t), t == view.single)) view.single = t;
+      }
+      ImGui::EndCombo();
+    }
+  }
+  if (view.mode == ViewMode::ab) {
+    int source = static_cast<int>(view.ab_source);
+    ImGui::RadioButton("Phong | Blinn-Phong", &source, static_cast<int>(AbSource::models));
+    if (!app.snapshot) ImGui::BeginDisabled();
+    ImGui::RadioButton("snapshot | live", &source, static_cast<int>(AbSource::snapshot));
+    if (!app.snapshot) ImGui::EndDisabled();
+    ImGui::RadioButton("ray traced | raster", &source, static_cast<int>(AbSource::cpu_gl));
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("A: the ray tracer at 1 spp (pixel centres), B: the raster path (GLSL)");
+    }
+    ImGui::RadioButton("per pixel | per vertex", &source, static_cast<int>(AbSource::pixel_vertex));
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("the raster path with Phong shading (A) and Gouraud shading (B)");
+    }
+    view.ab_source = static_cast<AbSource>(source);
+    ImGui::Checkbox("automatic heat scale", &view.heat_auto_scale);
+    if (!view.heat_auto_scale) {
+      ImGui::SliderFloat("heat scale", &view.heat_scale, 1e-4f, 10.0f, "%.4f",
+                         ImGuiSliderFlags_Logarithmic);
+      view.heat_scale = std::max(view.heat_scale, 1e-6f);
+    }
+    if (view.ab_source == AbSource::models) {
+      // The Material panel's setting, shown here as a reminder, not a second switch.
+      ImGui::TextDisabled("B exponents %s: keep highlight size",
+                          view.keep_highlight_size ? "x4" : "x1");
+      if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("one setting, switched in the Material panel (Shading model)");
+      }
+    }
+  }
+  if (ImGui::Button("Snapshot (Ctrl+B)")) snapshot_and_compare(app);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("keep the current scene as A and compare it with the live scene as B");
+  }
+  if (app.snapshot) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s kept", app.snapshot->label.c_str());
+  }
+  ImGui::SliderFloat("exposure", &view.exposure, -8.0f, 8.0f, "%+.2f stops");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("display value = linear x 2^exposure");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("0")) view.exposure = 0.0f;
+  draw_histogram(app);
+}
+
+// The teapots' tessellation, the mesh resolution that per-vertex shading depends on (and the
+// ray tracer's silhouettes too); shown when the document has a teapot.
+void draw_tessellation(App& app) {
+  const Scene& scene = app.commands.scene();
+  const auto teapot = std::find_if(scene.objects.begin(), scene.objects.end(),
+                                   [](const Object& o) { return o.type == ObjectType::teapot; });
+  if (teapot == scene.objects.end()) return;
+  int level = teapot->params.tessellation;
+  if (ImGui::SliderInt("teapot tessellation", &level, 1, 64)) {
+    execute(app, SetTessellation{level});
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "segments per patch side of every teapot: 32 x 2 x N^2 triangles.\n"
+        "Low: per-vertex (Gouraud) highlights break up; raise it and they recover.");
+  }
+}
+
+// The viewport's renderer and, where the raster path draws something, its knobs (issue 12).
+void draw_renderer(App& app) {
+  ViewSettings& view = app.view;
+  int renderer = static_cast<int>(view.renderer);
+  ImGui::RadioButton("Ray traced", &renderer, static_cast<int>(RendererChoice::cpu));
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("exact, refined pass by pass to the scene's spp");
+  ImGui::SameLine();
+  ImGui::RadioButton("Raster (GLSL)", &renderer, static_cast<int>(RendererChoice::gl));
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("OpenGL, one sample per pixel, shadow maps; redrawn on every change");
+  }
+  ImGui::RadioButton("Automatic", &renderer, static_cast<int>(RendererChoice::automatic));
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("raster while the camera or a light is dragged, ray traced when still");
+  }
+  view.renderer = static_cast<RendererChoice>(renderer);
+  if (app.viewport.raster_unavailable()) {
+    ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.35f, 1.0f), "raster unavailable: ray traced");
+  }
+  const bool raster_ab = view.mode == ViewMode::ab && (view.ab_source == AbSource::cpu_gl ||
+                                                       view.ab_source == AbSource::pixel_vertex);
+  draw_tessellation(app);
+  if (view.renderer == RendererChoice::cpu && !raster_ab) return;
+  RasterSettings& raster = view.raster;
+  int shading = static_cast<int>(raster.shading);
+  ImGui::RadioButton("Per pixel", &shading, static_cast<int>(ShadingFrequency::pixel));
+  ImGui::SameLine();
+  ImGui::RadioButton("Per vertex (Gouraud)", &shading, static_cast<int>(ShadingFrequency::vertex));
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "meshes lit at their vertices, the per-light weights interpolated and the shadow\n"
+        "test made per pixel; spheres stay per pixel. The teapot's vertices come from its\n"
+        "tessellation (the slider above).");
+  }
+  raster.shading = static_cast<ShadingFrequency>(shading);
+  char size_text[16];
+  std::snprintf(size_text, sizeof size_text, "%d", raster.shadow_map_size);
+  if (ImGui::BeginCombo("shadow map", size_text)) {
+    for (int size = 256; size <= 4096; size *= 2) {
+      std::snprintf(size_text, sizeof size_text, "%d", size);
+      if (ImGui::Selectable(size_text, size == raster.shadow_map_size)) {
+        raster.shadow_map_size = size;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("texels per side of each light's cube shadow map (scene shadows on)");
+  }
+  ImGui::DragFloat("shadow bias", &raster.shadow_bias, 0.05f, 0.0f, 16.0f, "%.2f texels");
+  raster.shadow_bias = std::max(raster.shadow_bias, 0.0f);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("too small: shadow acne; too large: light leaks under contact shadows");
+  }
+}
+
+void draw_quality(App& app) {
+  const Scene& scene = app.commands.scene();
+  // Every render setting of the document, its encoding included (exports and the viewport
+  // follow it), but the model: the Material panel's switch can rescale exponents with it.
+  RenderSettings edited = scene.render;
+  for (const Field<RenderSettings>& field : render_fields()) {
+    if (std::string(field.key) != "model") field_widget(field, edited);
+  }
+  if (auto command = field_command(FieldPart::render, 0, render_fields(), scene.render, edited)) {
+    execute(app, *command);
+  }
+  ImGui::SliderFloat("preview scale", &app.view.preview_scale, 0.25f, 1.0f, "%.2f");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("render pixels per screen pixel in the viewport");
+  ImGui::TextDisabled("exports render at %d x %d, %d spp", scene.render.width, scene.render.height,
+                      scene.render.spp);
+  if (ImGui::Button(app.show_quality ? "Hide speed / accuracy" : "Speed / accuracy...")) {
+    app.show_quality = !app.show_quality;
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("measure what each quality knob costs and buys for this scene");
+  }
+}
+
+void draw_screenshot(App& app) {
+  int kind = static_cast<int>(app.view.screenshot_kind);
+  ImGui::RadioButton("viewport", &kind, static_cast<int>(ScreenshotKind::viewport));
+  ImGui::SameLine();
+  ImGui::RadioButton("term sheet", &kind, static_cast<int>(ScreenshotKind::terms));
+  ImGui::SameLine();
+  ImGui::RadioButton("window", &kind, static_cast<int>(ScreenshotKind::window));
+  app.view.screenshot_kind = static_cast<ScreenshotKind>(kind);
+  ImGui::InputText("folder", &app.view.screenshot_dir);
+  if (ImGui::Button("Save screenshot (Ctrl+S)")) {
+    start_screenshot(app, app.view.screenshot_kind, "", false);
+  }
+}
+
+}  // namespace
+
+void draw_view_panel(App& app, ImVec2 pos, ImVec2 size) {
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
+  if (!ImGui::Begin("View & Quality", nullptr, flags)) {
+    ImGui::End();
+    return;
+  }
+  ImGui::PushItemWidth(-130.0f);  // room for "samples per pixel"
+  section_title("Renderer");
+  draw_renderer(app);
+  section_title("View");
+  draw_view_mode(app);
+  section_title("Quality");
+  draw_quality(app);
+  section_title("Screenshot");
+  draw_screenshot(app);
+  ImGui::PopItemWidth();
+  ImGui::End();
+}
+
+}  // namespace gloss

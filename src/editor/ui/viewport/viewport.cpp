@@ -1,0 +1,269 @@
+#include "editor/ui/viewport/viewport.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+
+#include <GLFW/glfw3.h>
+#include <glad/gl.h>
+
+#include "editor/model/document/document.h"
+#include "editor/model/view/heat_map.h"
+#include "editor/ui/app.h"
+
+namespace gloss {
+
+namespace {
+
+bool needs_terms(const ViewSettings& view) {
+  return view.mode == ViewMode::terms ||
+         (view.mode == ViewMode::single && view.single != TermView::total);
+}
+
+// terms: publish the four term images too (the term views only: four more images per pass).
+std::unique_ptr<ProgressiveRenderer> make_cpu_renderer(bool terms) {
+  ProgressiveOptions options;
+  options.terms = terms;
+  auto renderer = std::make_unique<ProgressiveRenderer>(options);
+  // Runs on a render worker: wakes the event loop, which uploads the frame.
+  renderer->set_on_publish([] { glfwPostEmptyEvent(); });
+  return renderer;
+}
+
+}  // namespace
+
+Viewport::Viewport() : m_a(make_cpu_renderer(false)) {}
+
+Viewport::~Viewport() = default;
+
+void Viewport::upload(const RenderedFrame& frame, bool b_side) {
+  ++m_uploads;
+  if (b_side) {
+    m_b_total.upload(frame.images.total);
+    return;
+  }
+  m_total.upload(frame.images.total);
+  if (frame.images.emissive.width > 0 && m_pushed_terms) {
+    m_emissive.upload(frame.images.emissive);
+    m_ambient.upload(frame.images.ambient);
+    m_diffuse.upload(frame.images.diffuse);
+    m_specular.upload(frame.images.specular);
+  }
+}
+
+void Viewport::max_difference_of_shown() {
+  if (m_image_a && m_image_b) {
+    m_max_difference = gloss::max_difference(m_image_a->images.total, m_image_b->images.total);
+  }
+}
+
+void Viewport::upload_frames(double now_s) {
+  // A side the ray tracer took over from the raster path keeps the raster frame until the ray
+  // tracer's first full-size frame: its coarse previews would be a step back.
+  auto takes = [&](const RenderedFrame& frame, bool shown_raster) {
+    return !shown_raster ||
+           (frame.info.width == m_render_width && frame.info.height == m_render_height);
+  };
+  bool new_a = false, new_b = false;
+  if (m_a && !m_sides.a.raster) {
+    if (std::shared_ptr<const RenderedFrame> a = m_a->latest();
+        a && a != m_frame_a && takes(*a, m_shown_raster_a)) {
+      upload(*a, false);
+      m_frame_a = std::move(a);
+      m_shown_raster_a = false;
+      new_a = true;
+    }
+  }
+  if (m_b && !m_sides.b.raster) {
+    if (std::shared_ptr<const RenderedFrame> b = m_b->latest();
+        b && b != m_frame_b && takes(*b, m_shown_raster_b)) {
+      upload(*b, true);
+      m_frame_b = std::move(b);
+      m_shown_raster_b = false;
+      new_b = true;
+    }
+  }
+  // What the textures hold: the newest frames with a total image. A frame without one (the
+  // engine's adaptive refinement passes publish an empty total when the terms are off, as of
+  // the adaptive-AA merge) leaves the texture, and these, as they were.
+  if (new_a && m_frame_a->images.total.width > 0) m_image_a = m_frame_a;
+  if (new_b && m_frame_b->images.total.width > 0) m_image_b = m_frame_b;
+  if (new_a || new_b) max_difference_of_shown();
+  if (new_a && m_latency.edit_s >= 0.0 && m_frame_a->info.generation > m_latency.generation) {
+    if (!m_latency.first_shown) {
+      m_latency.first_shown = true;
+      m_latency.pending_first_s = now_s;
+    }
+    if (m_frame_a->info.width == m_render_width && m_frame_a->info.height == m_render_height) {
+      m_latency.pending_full_s = now_s;
+    }
+  }
+}
+
+void Viewport::frame_shown(double now_s) {
+  if (m_latency.edit_s < 0.0) return;
+  if (m_latency.pending_first_s >= 0.0) {
+    m_latency.first_image_ms = (now_s - m_latency.edit_s) * 1000.0;
+    m_latency.pending_first_s = -1.0;
+  }
+  if (m_latency.pending_full_s >= 0.0) {
+    m_latency.full_image_ms = (now_s - m_latency.edit_s) * 1000.0;
+    m_latency.pending_full_s = -1.0;
+    m_latency.edit_s = -1.0;
+  }
+}
+
+void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSettings& view,
+                    const Snapshot* snapshot, double now_s) {
+  if (m_panes[0].size.x < 1.0f || m_panes[0].size.y < 1.0f) return;  // no layout yet
+  // The panes were laid out by draw() this frame, in the document's aspect.
+  const float scale = m_framebuffer_scale * view.preview_scale;
+  const int width = std::clamp(static_cast<int>(m_panes[0].size.x * scale), 1, kMaxImageSide);
+  const int height = std::clamp(static_cast<int>(m_panes[0].size.y * scale), 1, kMaxImageSide);
+  const bool terms = needs_terms(view);
+  const bool ab = view.mode == ViewMode::ab;
+  const std::uint64_t snapshot_revision =
+      snapshot != nullptr ? snapshot->revision + 1 : 0;  // 0: none
+  AbSides sides{{raster_effective(view, now_s), view.raster.shading}, {}};
+  if (ab) sides = ab_sides(view.ab_source, sides.a.raster, view.raster.shading);
+  if ((sides.a.raster || sides.b.raster) && !raster_available()) {
+    sides.a.raster = sides.b.raster = false;
+  }
+  RasterKey key{revision,
+                ab ? snapshot_revision : 0,
+                width,
+                height,
+                terms,
+                ab,
+                ab && view.keep_highlight_size,
+                ab ? view.ab_source : AbSource::models,
+                sides,
+                view.raster};
+  key.settings.shading = ShadingFrequency::pixel;  // each side's frequency is in sides
+  // The raster path failed on exactly this state: the ray tracer draws it.
+  if (m_raster_render_failed && key == m_raster_key) sides.a.raster = sides.b.raster = false;
+  m_pushed_renderer = view.renderer;
+  m_pushed_raster = view.raster;
+
+  const bool changed =
+      !m_pushed_any || revision != m_pushed_revision || width != m_render_width ||
+      height != m_render_height || terms != m_pushed_terms ||
+      ab != (m_pushed_mode == ViewMode::ab) || (ab && view.keep_highlight_size != m_pushed_keep) ||
+      (ab && view.ab_source != m_pushed_source) ||
+      (ab && view.ab_source == AbSource::snapshot && snapshot_revision != m_pushed_snapshot) ||
+      !(sides.a == m_sides.a) || !(sides.b == m_sides.b);
+  const bool raster_dirty =
+      (sides.a.raster || sides.b.raster) && (!m_raster_shown || !(key == m_raster_key));
+  if (!changed && !raster_dirty) {
+    // A mode switch that needs no new render (render, total alone, lobe) still counts as shown
+    // in the new mode (converged_and_shown compares it).
+    m_pushed_mode = view.mode;
+    return;
+  }
+
+  const bool new_edit = m_pushed_any && revision != m_pushed_revision;
+  Scene scene = document;
+  scene.render.width = width;
+  scene.render.height = height;
+  AbScenes pair = ab ? ab_scenes(scene, view.ab_source, snapshot, view.keep_highlight_size)
+                     : AbScenes{std::move(scene), Scene{}};
+  pair.a.render.width = pair.b.render.width = width;  // the snapshot has its own size
+  pair.a.render.height = pair.b.render.height = height;
+  if (changed) {
+    if (!terms) {
+      // Textures the view no longer shows: llvmpipe keeps each in RAM (12 B per pixel).
+      m_emissive = GlTexture();
+      m_ambient = GlTexture();
+      m_diffuse = GlTexture();
+      m_specular = GlTexture();
+    }
+    if (sides.a.raster) {
+      m_a.reset();  // cancels and joins its worker: the raster path draws A
+    } else {
+      if (!m_a) {
+        m_a = make_cpu_renderer(terms);
+      } else if (terms != m_pushed_terms || !m_pushed_any) {
+        m_a->set_terms(terms);
+      }
+      m_a->set_scene(pair.a);
+    }
+    if (ab && !sides.b.raster) {
+      if (!m_b) m_b = make_cpu_renderer(false);
+      m_b->set_scene(pair.b);
+    } else {
+      m_b.reset();
+    }
+    if (!ab) {
+      m_frame_b.reset();
+      m_b_total = GlTexture();
+      m_image_b.reset();
+      m_shown_raster_b = false;
+    } else {
+      m_label_a = ab_label_a(view.ab_source, snapshot);
+      m_label_b = ab_label_b(view.ab_source, view.keep_highlight_size, view.raster.shading);
+      if (!sides.b.raster &&
+          (view.ab_source == AbSource::cpu_gl || view.ab_source == AbSource::pixel_vertex)) {
+        m_label_b += " - raster unavailable, ray traced";
+      }
+    }
+    m_pushed_any = true;
+    m_pushed_revision = revision;
+    m_render_width = width;
+    m_render_height = height;
+    m_pushed_terms = terms;
+    m_pushed_mode = view.mode;
+    m_pushed_keep = view.keep_highlight_size;
+    m_pushed_source = view.ab_source;
+    m_pushed_snapshot = snapshot_revision;
+    m_sides = sides;
+  }
+  if (new_edit) {
+    // now_s is the start of the frame in which the edit happened. A renderer just handed the
+    // edit has not published it yet: its newest frame is the generation before it.
+    const std::shared_ptr<const RenderedFrame> newest = m_a ? m_a->latest() : nullptr;
+    m_latency.edit_s = now_s;
+    m_latency.generation = newest ? newest->info.generation : 0;
+    m_latency.first_shown = false;
+    m_latency.pending_first_s = m_latency.pending_full_s = -1.0;
+  }
+  if (raster_dirty) {
+    m_raster_key = key;
+    m_raster_render_failed = !show_raster(pair, sides, view.raster, terms, ab, now_s);
+    if (m_raster_render_failed) glfwPostEmptyEvent();  // the next sync hands it to the ray tracer
+  } else if (!sides.a.raster && !sides.b.raster) {
+    m_raster_shown = false;
+  }
+}
+
+void Viewport::blit(int framebuffer_height) const {
+  if (!m_visible || m_target.texture() == 0) return;
+  const int x = static_cast<int>(m_pos.x * m_framebuffer_scale);
+  const int top = static_cast<int>(m_pos.y * m_framebuffer_scale);
+  m_target.blit_to_window(x, framebuffer_height - top - m_target.height());
+}
+
+bool Viewport::converged_and_shown(std::uint64_t revision, const ViewSettings& view) const {
+  if (!m_pushed_any || revision != m_pushed_revision || view.mode != m_pushed_mode ||
+      needs_terms(view) != m_pushed_terms || view.renderer != m_pushed_renderer ||
+      view.raster != m_pushed_raster ||
+      (view.mode == ViewMode::ab && view.ab_source != m_pushed_source)) {
+    return false;
+  }
+  // A raster frame is final once it is on screen; the ray tracer's when it has converged.
+  auto side_done = [&](const AbSide& side, const ProgressiveRenderer* renderer,
+                       const std::shared_ptr<const RenderedFrame>& frame, bool shown_raster) {
+    if (frame == nullptr) return false;
+    if (side.raster) return m_raster_shown && shown_raster;
+    return renderer != nullptr && renderer->wait_converged(0.0) && renderer->latest() == frame;
+  };
+  if (!side_done(m_sides.a, m_a.get(), m_frame_a, m_shown_raster_a)) return false;
+  return m_pushed_mode != ViewMode::ab ||
+         side_done(m_sides.b, m_b.get(), m_frame_b, m_shown_raster_b);
+}
+
+bool Viewport::gesture_active(double now_s) const {
+  return m_drag_button >= 0 || (m_last_wheel_s >= 0.0 && now_s - m_last_wheel_s < 0.6);
+}
+
+}  // namespace gloss

@@ -1,0 +1,225 @@
+#pragma once
+// The viewport: the progressive renderer's frames as GL textures, drawn by the display shader
+// into an off-screen target that an ImGui window shows, in one of the view modes (one image, the
+// 2x2 term sheet, or A/B with a heat map). Owns the renderers; never waits for the ray tracer.
+// The raster path (issue 12, editor/gl/raster_renderer.h) renders synchronously on the UI thread
+// when view.renderer picks it (viewport_raster.cpp); its frames take the same way to the screen.
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include <imgui.h>
+
+#include "editor/gl/display_shader.h"
+#include "editor/gl/gl_texture.h"
+#include "editor/gl/raster_renderer.h"
+#include "editor/gl/render_target.h"
+#include "editor/model/measure/exposure_histogram.h"
+#include "editor/model/view/ab_compare.h"
+#include "editor/model/view/view_settings.h"
+#include "engine/progressive_renderer.h"
+
+namespace gloss {
+
+struct App;
+
+// Timing of the path edit -> renderer -> pixels on screen, for the status bar and `stats`.
+struct LatencyProbe {
+  double edit_s = -1.0;           // frame time of the newest edit not yet shown, -1 when none
+  std::uint64_t generation = 0;   // renderer generation before that edit was pushed
+  bool first_shown = false;       // some frame of the edit has been uploaded
+  double first_image_ms = 0.0;    // edit -> first frame of it on screen (any resolution)
+  double full_image_ms = 0.0;     // edit -> first full-resolution frame on screen
+  double pending_first_s = -1.0;  // upload time waiting for the swap that shows it
+  double pending_full_s = -1.0;
+};
+
+// One pane of the viewport in screen coordinates (ImGui's, y down).
+struct Pane {
+  ImVec2 min{0, 0};
+  ImVec2 size{0, 0};
+};
+
+class Viewport {
+ public:
+  Viewport();  // needs a current GL context
+  ~Viewport();
+
+  // Uploads frames published since the last call. now_s: seconds on the frame clock.
+  void upload_frames(double now_s);
+  // Hands the document to the renderer(s) when it, the view mode or the render size changed.
+  // snapshot: the A side of the snapshot comparison (AbSource::snapshot), may be null.
+  void sync(const Scene& document, std::uint64_t revision, const ViewSettings& view,
+            const Snapshot* snapshot, double now_s);
+  // Draws the viewport window at pos/size (screen coordinates) with its gestures.
+  void draw(App& app, ImVec2 pos, ImVec2 size);
+  // Copies the viewport's image into the window's back buffer (framebuffer_height: the window's
+  // in framebuffer pixels); call after clearing it and before ImGui draws on top.
+  void blit(int framebuffer_height) const;
+  // Call after the swap that showed this frame: completes latency measurements.
+  void frame_shown(double now_s);
+
+  // The renderer converged on this revision of the document in this view mode, and its last
+  // frame is on screen.
+  bool converged_and_shown(std::uint64_t revision, const ViewSettings& view) const;
+  // A mouse gesture (drag, recent wheel) is in progress: its commands form one undo step.
+  bool gesture_active(double now_s) const;
+  // A gesture that moves the camera or a light (not a click): RendererChoice::automatic draws
+  // with the raster path meanwhile.
+  bool moving_gesture(double now_s) const;
+
+  const RenderedFrame* shown_frame() const { return m_frame_a.get(); }
+  const RenderedFrame* shown_frame_b() const { return m_frame_b.get(); }
+  // Which renderer drew the frame shown on each side: true for the raster path.
+  bool shown_raster_a() const { return m_shown_raster_a; }
+  bool shown_raster_b() const { return m_shown_raster_b; }
+
+  // viewport_raster.cpp. The raster path's frame of scene at scene.render's size (screenshots
+  // while the raster path draws the viewport), or null when the raster path cannot run here.
+  // Needs the GL context current (the UI thread).
+  std::shared_ptr<const RenderedFrame> render_raster(const Scene& scene,
+                                                     const RasterSettings& settings, bool terms);
+  // Why the raster path cannot run (its programs failed to build), once: empty afterwards and
+  // when it runs.
+  std::string take_raster_notice();
+  bool raster_unavailable() const { return m_raster_failed; }
+  const LatencyProbe& latency() const { return m_latency; }
+  float max_difference() const { return m_max_difference; }
+  // Counts texture uploads: a new value means a new image reached the screen.
+  std::uint64_t uploads() const { return m_uploads; }
+  // Bytes of the published frames the viewport holds and of its GL textures (llvmpipe keeps
+  // textures in RAM; a GPU driver keeps them in video memory), for the `memory` script line.
+  std::uint64_t frame_bytes() const;
+  std::uint64_t texture_bytes() const;
+
+  // The histogram of the live image as shown (the total, or the single term shown; in the
+  // snapshot A/B the live B side), recomputed only when that image or the display changed.
+  // Large images are sampled (every step-th pixel and row, at most ~16k pixels) to stay well
+  // under a millisecond; exact=true counts every pixel (the `stats` line).
+  ExposureHistogram histogram(const ViewSettings& view, bool srgb, bool exact = false);
+
+ private:
+  // viewport_input.cpp: gestures, light markers, picking.
+  void handle_input(App& app);
+  void draw_light_markers(App& app, ImDrawList* list) const;
+  int pane_at(ImVec2 screen) const;
+  // The pixel of the document's render size (width x height) under screen point p in an image
+  // pane (not the A/B legend); false outside them.
+  bool render_pixel_at(ImVec2 p, ViewMode mode, int width, int height, int& x, int& y) const;
+  void draw_inspected_pixel(const App& app, ImDrawList* list) const;
+  void pin_inspected_pixel(App& app, ImVec2 p) const;
+
+  void draw_panes(const ViewSettings& view, bool srgb);  // srgb: the document's encoding
+  void draw_labels(const ViewSettings& view, ImDrawList* list) const;
+  void draw_legend(const ViewSettings& view, ImDrawList* list, const Pane& pane) const;
+  void upload(const RenderedFrame& frame, bool b_side);
+  void max_difference_of_shown();
+
+  // viewport_raster.cpp: the raster path.
+  // Whether view wants the raster path for the viewport's own renderer now (gl, or automatic
+  // during a moving gesture) and it can run.
+  bool raster_effective(const ViewSettings& view, double now_s);
+  bool raster_available();  // builds the renderer on first use; false when that failed
+  // Renders the raster sides of a (and b in the A/B view) and shows them; false when render()
+  // threw (the message goes to the notice).
+  bool show_raster(const AbScenes& scenes, const AbSides& sides, const RasterSettings& settings,
+                   bool terms, bool ab, double now_s);
+  static void reset_gl_state();  // what the display shader and ImGui expect after a raster pass
+
+  std::unique_ptr<ProgressiveRenderer> m_a;  // null while the raster path draws the A side
+  std::unique_ptr<ProgressiveRenderer> m_b;  // B side of the A/B view when the ray tracer draws it
+  std::shared_ptr<const RenderedFrame> m_frame_a, m_frame_b;
+  std::shared_ptr<const RenderedFrame> m_image_a, m_image_b;  // the newest with a total image
+
+  GlTexture m_total, m_emissive, m_ambient, m_diffuse, m_specular, m_b_total;
+  RenderTarget m_target;
+  DisplayShader m_shader;
+
+  // What the renderers were last given.
+  std::uint64_t m_pushed_revision = 0;
+  bool m_pushed_any = false;
+  int m_render_width = 0, m_render_height = 0;
+  ViewMode m_pushed_mode = ViewMode::render;
+  bool m_pushed_terms = false;
+  bool m_pushed_keep = false;
+  AbSource m_pushed_source = AbSource::models;
+  std::uint64_t m_pushed_snapshot = 0;  // revision of the snapshot pushed as A
+  std::string m_label_a, m_label_b;     // A/B pane labels of what was pushed
+  AbSides m_sides;                      // which renderer draws each side (A alone outside A/B)
+  RendererChoice m_pushed_renderer = RendererChoice::cpu;
+  RasterSettings m_pushed_raster;
+
+  // The raster path: built on the UI thread when first needed.
+  std::unique_ptr<RasterRenderer> m_raster;
+  bool m_raster_failed = false;     // its constructor threw: the ray tracer draws every side
+  std::string m_raster_notice;      // a failure, until take_raster_notice() hands it out
+  std::string m_raster_last_error;  // the last render failure announced (no repeats)
+  // What the shown raster frames were rendered from; a new render only when it changes.
+  struct RasterKey {
+    std::uint64_t revision = 0, snapshot = 0;
+    int width = 0, height = 0;
+    bool terms = false, ab = false, keep = false;
+    AbSource source = AbSource::models;
+    AbSides sides;
+    RasterSettings settings;
+    bool operator==(const RasterKey& o) const;
+  };
+  RasterKey m_raster_key;
+  bool m_raster_shown = false;  // m_raster_key describes frames on screen
+  // render() threw for m_raster_key (too many lights, a GL error): the ray tracer draws that
+  // state; the raster path is tried again when the key changes.
+  bool m_raster_render_failed = false;
+  bool m_shown_raster_a = false, m_shown_raster_b = false;
+
+  // Layout of the last draw (screen coordinates).
+  ImVec2 m_pos{0, 0}, m_size{0, 0};
+  float m_framebuffer_scale = 1.0f;
+  bool m_visible = false;  // the viewport window was drawn this frame (blit() shows it)
+  Pane m_panes[4];
+  int m_pane_count = 1;
+
+  float m_max_difference = 0.0f;  // largest |A - B| of the shown pair, linear
+
+  // What the off-screen target last showed: it is redrawn only when one of these changes, so an
+  // idle frame costs ImGui's draw alone (llvmpipe samples float textures slowly).
+  struct TargetKey {
+    std::uint64_t uploads = 0;
+    int width = 0, height = 0, pane_count = 0;
+    float pane_x = 0, pane_y = 0, pane_w = 0, pane_h = 0;
+    ViewMode mode = ViewMode::render;
+    TermView single = TermView::total;
+    float exposure = 0, heat_scale = 0;
+    bool srgb = false;
+    bool show_clipped = false;
+    bool operator==(const TargetKey& o) const;
+  };
+  TargetKey m_target_key;
+  std::uint64_t m_uploads = 0;  // counts texture uploads
+  LatencyProbe m_latency;
+
+  // The last histogram (histogram()) and what it was computed from.
+  struct HistogramKey {
+    const void* frame = nullptr;
+    float exposure = 0.0f;
+    bool srgb = false, exact = false;
+    TermView term = TermView::total;
+    bool operator==(const HistogramKey& o) const {
+      return frame == o.frame && exposure == o.exposure && srgb == o.srgb && exact == o.exact &&
+             term == o.term;
+    }
+  };
+  HistogramKey m_histogram_key;
+  ExposureHistogram m_histogram;
+
+  // Gesture state (viewport_input.cpp).
+  int m_drag_button = -1;         // ImGuiMouseButton being dragged in the viewport, -1 none
+  int m_drag_light = -1;          // light being dragged, -1 none
+  bool m_marker_pressed = false;  // the press hit a light marker (no orbit, no pick)
+  int m_drag_pane = 0;
+  float m_drag_distance = 0.0f;  // farthest the cursor went from the press, pixels
+  ImVec2 m_drag_press{0, 0};     // where the drag's button went down (screen)
+  ImVec2 m_drag_last{0, 0};      // cursor position the drag has consumed up to
+  double m_last_wheel_s = -1.0;
+};
+
+}  // namespace gloss

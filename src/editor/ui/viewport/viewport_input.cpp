@@ -1,0 +1,332 @@
+// The viewport window: its layout, the mouse gestures (orbit, pan, zoom, click to select, drag a
+// light marker) and the light markers. Gestures become commands through execute().
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "editor/model/view/camera_controller.h"
+#include "editor/ui/app.h"
+#include "engine/pick.h"
+
+namespace gloss {
+
+namespace {
+
+constexpr float kMarkerRadius = 7.0f;  // screen pixels
+constexpr float kClickSlop = 3.0f;     // pixels a click may move and still select
+
+bool inside(const Pane& pane, ImVec2 p) {
+  return p.x >= pane.min.x && p.y >= pane.min.y && p.x < pane.min.x + pane.size.x &&
+         p.y < pane.min.y + pane.size.y;
+}
+
+}  // namespace
+
+int Viewport::pane_at(ImVec2 screen) const {
+  for (int i = 0; i < m_pane_count; ++i) {
+    if (inside(m_panes[i], screen)) return i;
+  }
+  return 0;
+}
+
+bool Viewport::render_pixel_at(ImVec2 p, ViewMode mode, int width, int height, int& x,
+                               int& y) const {
+  for (int i = 0; i < m_pane_count; ++i) {
+    const Pane& pane = m_panes[i];
+    if (!inside(pane, p) || (mode == ViewMode::ab && i == 3)) continue;
+    // Every pane has the document's aspect, so a pane maps onto the whole render.
+    x = std::clamp(static_cast<int>((p.x - pane.min.x) / pane.size.x * width), 0, width - 1);
+    y = std::clamp(static_cast<int>((p.y - pane.min.y) / pane.size.y * height), 0, height - 1);
+    return true;
+  }
+  return false;
+}
+
+// Screen size of one render pixel in pane i and the marker's half width around it.
+namespace {
+float marker_radius(const Pane& pane, int width) {
+  return std::max(4.0f, 0.5f * pane.size.x / static_cast<float>(width) + 3.0f);
+}
+ImVec2 pixel_centre(const Pane& pane, int x, int y, int width, int height) {
+  return ImVec2(pane.min.x + (static_cast<float>(x) + 0.5f) * pane.size.x / width,
+                pane.min.y + (static_cast<float>(y) + 0.5f) * pane.size.y / height);
+}
+}  // namespace
+
+// A click with the inspector open pins the pixel under it; a click on the pinned pixel's marker
+// unpins it.
+void Viewport::pin_inspected_pixel(App& app, ImVec2 p) const {
+  ViewSettings& view = app.view;
+  const RenderSettings& render = app.commands.scene().render;
+  int x = 0, y = 0;
+  if (!view.show_inspector || !render_pixel_at(p, view.mode, render.width, render.height, x, y)) {
+    return;
+  }
+  if (view.inspect_pinned) {
+    const Pane& pane = m_panes[pane_at(p)];
+    const ImVec2 c =
+        pixel_centre(pane, view.inspect_x, view.inspect_y, render.width, render.height);
+    const float r = marker_radius(pane, render.width) + 1.0f;
+    if (std::abs(p.x - c.x) <= r && std::abs(p.y - c.y) <= r) {
+      view.inspect_pinned = false;
+      return;
+    }
+  }
+  view.inspect_pinned = true;
+  view.inspect_x = x;
+  view.inspect_y = y;
+}
+
+// The pinned pixel's place in every image pane: a small square around it.
+void Viewport::draw_inspected_pixel(const App& app, ImDrawList* list) const {
+  const ViewSettings& view = app.view;
+  if (!view.show_inspector || !view.inspect_pinned) return;
+  const RenderSettings& render = app.commands.scene().render;
+  for (int i = 0; i < m_pane_count; ++i) {
+    if (view.mode == ViewMode::ab && i == 3) continue;
+    const Pane& pane = m_panes[i];
+    const ImVec2 c =
+        pixel_centre(pane, view.inspect_x, view.inspect_y, render.width, render.height);
+    const float r = marker_radius(pane, render.width);
+    list->AddRect(ImVec2(c.x - r - 1.0f, c.y - r - 1.0f), ImVec2(c.x + r + 1.0f, c.y + r + 1.0f),
+                  IM_COL32(0, 0, 0, 255), 0.0f, 0, 3.0f);
+    list->AddRect(ImVec2(c.x - r, c.y - r), ImVec2(c.x + r, c.y + r), IM_COL32(255, 60, 200, 255),
+                  0.0f, 0, 1.5f);
+  }
+}
+
+bool Viewport::moving_gesture(double now_s) const {
+  if (m_drag_button < 0) return gesture_active(now_s);  // a recent wheel zoom
+  return m_drag_light >= 0 || (m_drag_distance > kClickSlop && !m_marker_pressed);
+}
+
+void Viewport::draw(App& app, ImVec2 pos, ImVec2 size) {
+  m_pos = pos;
+  m_size = size;
+  m_framebuffer_scale = ImGui::GetIO().DisplayFramebufferScale.x;
+  const bool grid = app.view.mode == ViewMode::terms || app.view.mode == ViewMode::ab;
+  m_pane_count = grid ? 4 : 1;
+  // Each cell holds one pane with the document's aspect (what the exports render), centred.
+  const ImVec2 cell = grid ? ImVec2(std::floor(size.x * 0.5f), std::floor(size.y * 0.5f)) : size;
+  const RenderSettings& render = app.commands.scene().render;
+  const float aspect = static_cast<float>(render.width) / static_cast<float>(render.height);
+  const float pane_w = std::floor(std::min(cell.x, cell.y * aspect));
+  const ImVec2 pane_size(pane_w, std::floor(pane_w / aspect));
+  // The panes touch: a 2x2 sheet is one block centred in the viewport, so the space the aspect
+  // leaves over is one band at the edges rather than gaps between the rows or columns.
+  const float columns = grid ? 2.0f : 1.0f;
+  const ImVec2 block(pane_size.x * columns, pane_size.y * columns);
+  const ImVec2 origin(std::floor(pos.x + (size.x - block.x) * 0.5f),
+                      std::floor(pos.y + (size.y - block.y) * 0.5f));
+  for (int i = 0; i < m_pane_count; ++i) {
+    m_panes[i].min = ImVec2(origin.x + static_cast<float>(i % 2) * pane_size.x,
+                            origin.y + static_cast<float>(i / 2) * pane_size.y);
+    m_panes[i].size = pane_size;
+  }
+
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+  const ImGuiWindowFlags flags =
+      ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+      ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse |
+      ImGuiWindowFlags_NoBackground;  // the image covers it
+  const bool open = ImGui::Begin("Viewport", nullptr, flags);
+  ImGui::PopStyleVar(2);
+  m_visible = false;
+  app.inspector.hover_x = app.inspector.hover_y = -1;
+  if (!open) {
+    ImGui::End();
+    return;
+  }
+  if (app.view.mode == ViewMode::lobe) {  // the renderer keeps the render pane's size meanwhile
+    draw_lobe_view(app, pos, size);
+    ImGui::End();
+    return;
+  }
+  draw_panes(app.view, app.commands.scene().render.srgb);
+  // The target is copied into the back buffer under ImGui's draw lists (blit(), from
+  // run_frame): the window has no background, so it shows through.
+  m_visible = true;
+  handle_input(app);
+  ImDrawList* list = ImGui::GetWindowDrawList();
+  draw_labels(app.view, list);
+  if (app.view.mode == ViewMode::ab) draw_legend(app.view, list, m_panes[3]);
+  draw_light_markers(app, list);
+  draw_inspected_pixel(app, list);
+  if (!m_frame_a) {
+    const char* text = "rendering the first frame ...";
+    const ImVec2 t = ImGui::CalcTextSize(text);
+    list->AddText(ImVec2(pos.x + (size.x - t.x) * 0.5f, pos.y + (size.y - t.y) * 0.5f),
+                  IM_COL32(200, 200, 200, 255), text);
+  }
+  ImGui::End();
+}
+
+void Viewport::draw_light_markers(App& app, ImDrawList* list) const {
+  const Scene& scene = app.commands.scene();
+  for (int p = 0; p < m_pane_count; ++p) {
+    if (app.view.mode == ViewMode::ab && p == 3) continue;  // the legend
+    const Pane& pane = m_panes[p];
+    const int w = static_cast<int>(pane.size.x), h = static_cast<int>(pane.size.y);
+    list->PushClipRect(pane.min, ImVec2(pane.min.x + pane.size.x, pane.min.y + pane.size.y), true);
+    // The selected object: corner brackets around its projected bounds, and its name.
+    const int object = app.selected_object;
+    glm::vec2 lo, hi;
+    if (object >= 0 && object < static_cast<int>(scene.objects.size()) &&
+        screen_bounds(scene.camera, w, h, scene.objects[object], lo, hi)) {
+      const ImVec2 a(pane.min.x + lo.x - 3.0f, pane.min.y + lo.y - 3.0f);
+      const ImVec2 b(pane.min.x + hi.x + 3.0f, pane.min.y + hi.y + 3.0f);
+      const float arm = std::min(14.0f, 0.3f * std::min(b.x - a.x, b.y - a.y));
+      const ImU32 colour = IM_COL32(255, 200, 40, 230);
+      const ImVec2 corners[4] = {a, ImVec2(b.x, a.y), b, ImVec2(a.x, b.y)};
+      for (int c = 0; c < 4; ++c) {
+        const float sx = (c == 1 || c == 2) ? -1.0f : 1.0f;
+        const float sy = c >= 2 ? -1.0f : 1.0f;
+        const ImVec2 k = corners[c];
+        list->AddLine(k, ImVec2(k.x + sx * arm, k.y), colour, 2.0f);
+        list->AddLine(k, ImVec2(k.x, k.y + sy * arm), colour, 2.0f);
+      }
+      if (p == 0) {
+        list->AddText(ImVec2(a.x, std::max(a.y - 16.0f, pane.min.y + 20.0f)), colour,
+                      object_label(scene, object).c_str());
+      }
+    }
+    for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i) {
+      const EdgeMarker m =
+          edge_marker(scene.camera, w, h, scene.lights[i].position, kMarkerRadius + 6.0f);
+      // Off-screen arrows at the top edge sit below the pane's label.
+      const float y = m.on_screen ? m.position.y : std::max(m.position.y, 30.0f);
+      const ImVec2 centre(pane.min.x + m.position.x, pane.min.y + y);
+      const glm::vec3 c = glm::clamp(scene.lights[i].diffuse, glm::vec3(0.0f), glm::vec3(1.0f));
+      const ImU32 fill = ImGui::ColorConvertFloat4ToU32(ImVec4(c.x, c.y, c.z, 1.0f));
+      const bool selected = i == app.selected_light;
+      const ImU32 ring = selected ? IM_COL32(255, 200, 40, 255) : IM_COL32(20, 20, 20, 255);
+      const float r = selected ? kMarkerRadius + 2.0f : kMarkerRadius;
+      if (m.on_screen) {
+        list->AddCircleFilled(centre, r, fill);
+        list->AddCircle(centre, r + 1.5f, ring, 0, 2.0f);
+      } else {
+        // Off screen: an arrow at the edge pointing toward the light.
+        const ImVec2 d(m.direction.x, m.direction.y), n(-m.direction.y, m.direction.x);
+        const float len = r + 5.0f;
+        const ImVec2 tip(centre.x + d.x * len, centre.y + d.y * len);
+        const ImVec2 l(centre.x - d.x * r + n.x * r, centre.y - d.y * r + n.y * r);
+        const ImVec2 rr(centre.x - d.x * r - n.x * r, centre.y - d.y * r - n.y * r);
+        list->AddTriangleFilled(tip, l, rr, fill);
+        list->AddTriangle(tip, l, rr, ring, 2.0f);
+      }
+      char label[32];
+      std::snprintf(label, sizeof label, m.on_screen ? "%d" : "%d (off view)", i);
+      const ImVec2 size = ImGui::CalcTextSize(label);
+      // Keep the label inside the pane, beside the marker.
+      // Right of the marker, or left of it where the pane's right edge is too close.
+      float lx = centre.x + r + 3.0f;
+      if (lx + size.x > pane.min.x + pane.size.x - 2.0f) lx = centre.x - r - 6.0f - size.x;
+      lx = std::max(lx, pane.min.x + 2.0f);
+      const float ly = std::clamp(centre.y - r - 6.0f, pane.min.y + 2.0f,
+                                  pane.min.y + pane.size.y - size.y - 2.0f);
+      list->AddText(ImVec2(lx, ly), IM_COL32(255, 230, 150, 255), label);
+    }
+    list->PopClipRect();
+  }
+}
+
+void Viewport::handle_input(App& app) {
+  ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetCursorScreenPos(m_pos);
+  ImGui::InvisibleButton("##viewport-input", m_size,
+                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                             ImGuiButtonFlags_MouseButtonMiddle);
+  const Scene& scene = app.commands.scene();
+  const double now = app.now_s();
+
+  if (ImGui::IsItemActivated()) {
+    m_drag_button = ImGui::IsMouseClicked(ImGuiMouseButton_Left)    ? ImGuiMouseButton_Left
+                    : ImGui::IsMouseClicked(ImGuiMouseButton_Right) ? ImGuiMouseButton_Right
+                                                                    : ImGuiMouseButton_Middle;
+    // Motion before the press (in the same batch of events) is not part of the drag; motion
+    // after it is, even when ImGui sees both in one frame.
+    const ImVec2 press = app.press_position[m_drag_button];
+    m_drag_press = press;
+    m_drag_last = press;
+    m_drag_distance = 0.0f;
+    m_drag_pane = pane_at(press);
+    m_drag_light = -1;
+    m_marker_pressed = false;
+    if (m_drag_button == ImGuiMouseButton_Left && !io.KeyShift) {
+      const Pane& pane = m_panes[m_drag_pane];
+      for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i) {
+        const EdgeMarker m =
+            edge_marker(scene.camera, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
+                        scene.lights[i].position, kMarkerRadius + 6.0f);
+        const float dx = pane.min.x + m.position.x - press.x;
+        const float dy = pane.min.y + m.position.y - press.y;
+        if (dx * dx + dy * dy <= (kMarkerRadius + 4.0f) * (kMarkerRadius + 4.0f)) {
+          // An off-screen light's arrow selects it; only an on-screen marker drags the light
+          // (the drag keeps the light's depth, which an off-screen light may not have).
+          m_drag_light = m.on_screen ? i : -1;
+          m_marker_pressed = true;
+          app.selected_light = i;
+        }
+      }
+    }
+  }
+
+  const ImVec2 d(io.MousePos.x - m_drag_last.x, io.MousePos.y - m_drag_last.y);
+  if (ImGui::IsItemActive() && m_drag_button >= 0 && (d.x != 0.0f || d.y != 0.0f)) {
+    m_drag_last = io.MousePos;
+    m_drag_distance = std::max(m_drag_distance, std::hypot(io.MousePos.x - m_drag_press.x,
+                                                           io.MousePos.y - m_drag_press.y));
+    const Pane& pane = m_panes[m_drag_pane];
+    const bool pan = m_drag_button != ImGuiMouseButton_Left || io.KeyShift;
+    if (m_drag_light >= 0 && m_drag_light < static_cast<int>(scene.lights.size())) {
+      const glm::vec2 local(io.MousePos.x - pane.min.x, io.MousePos.y - pane.min.y);
+      const glm::vec3 moved =
+          point_at_depth(scene.camera, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
+                         local, scene.lights[m_drag_light].position);
+      execute(app, SetField{FieldPart::light, m_drag_light, "position", vec3_value(moved)});
+    } else if (m_drag_distance > kClickSlop && !m_marker_pressed) {
+      // The scene turns as if grabbed: a drag to the right carries its front to the right (the
+      // eye orbits left, positive yaw in orbit_camera); a drag down shows more of its top.
+      const Camera camera = pan ? pan_camera(scene.camera, d.x, d.y, static_cast<int>(pane.size.y))
+                                : orbit_camera(scene.camera, d.x * kOrbitDegreesPerPixel,
+                                               d.y * kOrbitDegreesPerPixel);
+      execute(app, SetCamera{camera});
+    }
+  }
+
+  const RenderSettings& render = scene.render;
+  if (ImGui::IsItemHovered() || ImGui::IsItemActive()) {
+    int x = 0, y = 0;
+    if (render_pixel_at(io.MousePos, app.view.mode, render.width, render.height, x, y)) {
+      app.inspector.hover_x = x;
+      app.inspector.hover_y = y;
+    }
+  }
+
+  if (ImGui::IsItemDeactivated()) {
+    if (m_drag_button == ImGuiMouseButton_Left && m_drag_light < 0 && !m_marker_pressed &&
+        m_drag_distance <= kClickSlop && !(app.view.mode == ViewMode::ab && m_drag_pane == 3)) {
+      pin_inspected_pixel(app, io.MousePos);
+      const Pane& pane = m_panes[m_drag_pane];
+      const int hit =
+          pick_object(scene, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
+                      io.MousePos.x - pane.min.x, io.MousePos.y - pane.min.y);
+      if (hit >= 0) app.selected_object = hit;
+    }
+    m_drag_button = -1;
+    m_drag_light = -1;
+  }
+
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
+    execute(app, SetCamera{zoom_camera(scene.camera, io.MouseWheel)});
+    m_last_wheel_s = now;
+  }
+}
+
+}  // namespace gloss

@@ -1,0 +1,184 @@
+#include "io/scene/scene_loader.h"
+
+#include <cctype>
+#include <filesystem>
+#include <utility>
+
+#include "base/atomic_file.h"
+#include "base/error.h"
+#include "base/memory_budget.h"
+#include "base/text_distance.h"
+#include "io/image/scene_in_png.h"
+#include "io/json/field_json.h"
+#include "io/json/json_location.h"
+#include "io/json/material_json.h"
+#include "io/json/name_escape.h"
+#include "io/scene/scene_json_reader.h"
+#include "io/scene/scene_object_reader.h"
+#include "scene/fields/fields.h"
+
+namespace gloss {
+
+namespace {
+
+Camera read_camera(const JsonObjectReader& top) {
+  Camera camera;
+  if (!top.has("camera")) return camera;
+  const JsonObjectReader reader(top.required("camera"), top.file(), "camera",
+                                allowed_keys(camera_fields()));
+  read_fields(reader, camera_fields(), camera);
+  return camera;
+}
+
+std::vector<PointLight> read_lights(const JsonObjectReader& top) {
+  std::vector<PointLight> lights;
+  if (!top.has("lights")) return lights;
+  const nlohmann::json& array = top.required("lights");
+  if (!array.is_array()) top.fail("lights", "expected an array of lights");
+  for (std::size_t i = 0; i < array.size(); ++i) {
+    const JsonObjectReader reader(array[i], top.file(), index_path("lights", i),
+                                  allowed_keys(light_fields()));
+    PointLight light;
+    read_fields(reader, light_fields(), light);
+    lights.push_back(light);
+  }
+  return lights;
+}
+
+MaterialMap read_materials(const JsonObjectReader& top) {
+  MaterialMap materials;
+  if (!top.has("materials")) return materials;
+  const nlohmann::json& block = top.required("materials");
+  if (!block.is_object()) top.fail("materials", "expected an object {name: material, ...}");
+  for (const auto& item : block.items()) {
+    if (item.key().empty()) top.fail("materials", "a material name must not be empty");
+    materials.emplace(
+        unescape_name(item.key()),
+        material_from_json(item.value(), top.file(), child_path("materials", item.key())));
+  }
+  return materials;
+}
+
+// Sizes are range-checked as they are read, on the JSON number, before anything is allocated.
+RenderSettings read_render(const JsonObjectReader& top) {
+  RenderSettings render;
+  if (!top.has("render")) return render;
+  const JsonObjectReader reader(top.required("render"), top.file(), "render",
+                                allowed_keys(render_fields()));
+  read_fields(reader, render_fields(), render);
+  return render;
+}
+
+// Objects hold material names until every object (and every OBJ's MTL) has been read; then the
+// materials are numbered in name order and each object gets its index.
+void resolve_materials(const std::string& file, const MaterialMap& materials,
+                       std::vector<PendingObject>& pending, Scene& scene) {
+  for (const auto& [name, material] : materials) {
+    scene.material_names.push_back(name);
+    scene.materials.push_back(material);
+  }
+  for (PendingObject& item : pending) {
+    item.object.material = find_material(scene, item.material_name);
+    if (item.object.material < 0) {
+      const std::string hint =
+          scene.material_names.empty()
+              ? std::string(" (the scene defines no materials)")
+              : did_you_mean(nearest_words(item.material_name, scene.material_names, 3));
+      fail_field(file, item.field, "unknown material '" + item.material_name + "'" + hint);
+    }
+    scene.objects.push_back(std::move(item.object));
+  }
+}
+
+// A materials file (material_io.h: only a non-empty "materials" block) opened as a scene would
+// fail on its missing "objects"; this says what the file is and where it belongs instead.
+constexpr const char* kLoadMaterialsHint =
+    "is a materials file, not a scene: load it with File > Load materials in the editor";
+
+void refuse_materials_file(const nlohmann::json& root, const std::string& path) {
+  if (root.is_object() && root.size() == 1 && root.contains("materials") &&
+      root["materials"].is_object() && !root["materials"].empty()) {
+    throw InputError(path, std::string("this ") + kLoadMaterialsHint);
+  }
+}
+
+bool has_mtl_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".mtl";
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& path,
+                  std::vector<std::string>* warnings) {
+  const nlohmann::json root = parse_json_text(text, path);
+  refuse_materials_file(root, path);
+  const JsonObjectReader top(
+      root, path, "",
+      allowed_keys(scene_fields(), {"camera", "lights", "materials", "objects", "render"}));
+
+  Scene scene;
+  scene.path = path;
+  scene.camera = read_camera(top);
+  read_fields(top, scene_fields(), scene);
+  scene.lights = read_lights(top);
+  scene.render = read_render(top);
+  MaterialMap materials = read_materials(top);
+
+  const nlohmann::json& objects = top.required("objects");
+  if (!objects.is_array()) top.fail("objects", "expected an array of objects");
+  ObjectReadContext context;
+  context.file = path;
+  context.base_dir = std::filesystem::path(path).parent_path().string();  // "" = current folder
+  context.warnings = warnings;
+  std::uint64_t claimed_bytes = 0;
+  context.budget_bytes = memory_budget_bytes();
+  context.claimed_bytes = &claimed_bytes;
+  std::vector<PendingObject> pending;
+  claim_geometry_in_advance(objects, context);
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    read_scene_object(objects[i], i, context, materials, pending);
+  }
+  resolve_materials(path, materials, pending, scene);
+  validate_scene(scene);
+  return scene;
+}
+
+Scene load_scene(const std::string& path, std::vector<std::string>* warnings) {
+  if (has_png_signature(path)) return load_scene_from_png(path, warnings);
+  if (has_mtl_extension(path)) {
+    throw InputError(path, std::string("this MTL file ") + kLoadMaterialsHint);
+  }
+  return parse_scene(read_text_file(path), path, warnings);
+}
+
+void save_scene(const Scene& scene, const std::string& path) {
+  namespace fs = std::filesystem;
+  // Relative OBJ paths were written against the old scene's folder; rebase them onto the new one.
+  Scene moved = scene;
+  const fs::path from = fs::absolute(fs::path(scene.path).parent_path()).lexically_normal();
+  const fs::path to = fs::absolute(fs::path(path).parent_path()).lexically_normal();
+  if (!scene.path.empty() && from != to) {
+    for (Object& object : moved.objects) {
+      const fs::path file(object.params.file);
+      if (object.type != ObjectType::mesh || file.empty() || file.is_absolute()) continue;
+      const fs::path relative = (from / file).lexically_normal().lexically_relative(to);
+      object.params.file = relative.empty() ? (from / file).string() : relative.generic_string();
+    }
+  }
+  moved.path = path;
+  write_text_atomically(path, scene_to_json_text(moved));
+}
+
+Scene with_teapot_tessellation(const Scene& scene, int level) {
+  nlohmann::json doc = nlohmann::json::parse(scene_to_json_text(scene));
+  for (auto& object : doc["objects"]) {
+    if (object.value("type", "") == "teapot") object["tessellation"] = level;
+  }
+  Scene out = parse_scene(doc.dump(), scene.path);
+  out.render = scene.render;
+  return out;
+}
+
+}  // namespace gloss

@@ -1,0 +1,175 @@
+#include "scene/fields/fields.h"
+
+#include "scene/limits.h"
+
+namespace gloss {
+
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+}  // namespace
+
+const FieldTable<Material>& material_fields() {
+  static const FieldTable<Material> table = [] {
+    constexpr FieldKind colour = FieldKind::colour;
+    FieldTable<Material> t;
+    t.push_back(vec3_field<&Material::ambient>(colour, "ambient", "ka ambient")
+                    .invalidates(ChangeClass::shade)
+                    .explain("ka: reflects the ambient light A_scene + sum of La"));
+    t.push_back(vec3_field<&Material::diffuse>(colour, "diffuse", "kd diffuse")
+                    .invalidates(ChangeClass::shade)
+                    .explain("kd: the Lambert term, kd Ld max(N.L, 0)"));
+    t.push_back(vec3_field<&Material::specular>(colour, "specular", "ks specular")
+                    .invalidates(ChangeClass::shade)
+                    .explain("ks: the highlight, ks Ls c^alpha"));
+    t.push_back(vec3_field<&Material::emission>(colour, "emission", "ke emission")
+                    .invalidates(ChangeClass::shade)
+                    .explain("ke: light of its own, unaffected by any light"));
+    // The contract's numerical promises hold for alpha in [0, 1e6]; the slider offers 0..1e4.
+    t.push_back(scalar_field<&Material::shininess>(FieldKind::number, "shininess", "shininess")
+                    .range(0.0, 1e6)
+                    .ui(0.0, 1e4, true)
+                    .invalidates(ChangeClass::exponent)
+                    .explain("the exponent alpha of c^alpha: larger is a smaller, sharper "
+                             "highlight"));
+    return t;
+  }();
+  return table;
+}
+
+const FieldTable<PointLight>& light_fields() {
+  static const FieldTable<PointLight> table = [] {
+    constexpr FieldKind colour = FieldKind::colour;
+    FieldTable<PointLight> t;
+    t.push_back(vec3_field<&PointLight::position>(FieldKind::vector, "position", "position")
+                    .range(-kMaxCoordinate, kMaxCoordinate)
+                    .ui(-1e4, 1e4)
+                    .invalidates(ChangeClass::light)
+                    .needed()
+                    .explain("P, world units"));
+    t.push_back(vec3_field<&PointLight::ambient>(colour, "ambient", "La ambient")
+                    .invalidates(ChangeClass::shade)
+                    .explain("La: added to the ambient sum, never shadowed or attenuated"));
+    t.push_back(vec3_field<&PointLight::diffuse>(colour, "diffuse", "Ld diffuse")
+                    .invalidates(ChangeClass::shade)
+                    .explain("Ld: the colour the diffuse term sees"));
+    t.push_back(vec3_field<&PointLight::specular>(colour, "specular", "Ls specular")
+                    .invalidates(ChangeClass::shade)
+                    .explain("Ls: the colour the highlight sees"));
+    t.push_back(
+        vec3_field<&PointLight::attenuation>(FieldKind::vector, "attenuation", "attenuation")
+            .range(0.0, kInf)
+            .ui(0.0, 100.0)
+            .invalidates(ChangeClass::light)
+            .explain("c0, c1, c2: 1 / (c0 + c1 d + c2 d^2), not all 0"));
+    return t;
+  }();
+  return table;
+}
+
+const FieldTable<RenderSettings>& render_fields() {
+  static const FieldTable<RenderSettings> table = [] {
+    constexpr FieldKind whole = FieldKind::whole, flag = FieldKind::flag;
+    FieldTable<RenderSettings> t;
+    t.push_back(scalar_field<&RenderSettings::width>(whole, "width", "width")
+                    .range(1, kMaxImageSide)
+                    .ui(1, 4096)
+                    .explain("image width, pixels"));
+    t.push_back(scalar_field<&RenderSettings::height>(whole, "height", "height")
+                    .range(1, kMaxImageSide)
+                    .ui(1, 4096)
+                    .explain("image height, pixels"));
+    t.push_back(scalar_field<&RenderSettings::spp>(whole, "spp", "samples per pixel")
+                    .range(1, kMaxSpp)
+                    .ui(1, 256, true)
+                    .explain("samples per pixel, stratified; 1 samples the pixel centre"));
+    t.push_back(
+        choice_field<&RenderSettings::model>("model", "shading model", {"phong", "blinn-phong"})
+            .invalidates(ChangeClass::exponent)
+            .explain("phong: c = R.V; blinn-phong: c = N.H"));
+    t.push_back(scalar_field<&RenderSettings::shadows>(flag, "shadows", "shadows")
+                    .invalidates(ChangeClass::light)
+                    .explain("shadow rays towards every light"));
+    t.push_back(
+        scalar_field<&RenderSettings::energy_normalize>(flag, "energy_normalize",
+                                                        "energy normalisation")
+            .invalidates(ChangeClass::shade)
+            .explain("specular x (alpha + 2) / 2pi for Phong, (alpha + 8) / 8pi for Blinn-Phong"));
+    // The display encoding changes no linear value: nothing to re-render.
+    t.push_back(scalar_field<&RenderSettings::srgb>(flag, "srgb", "sRGB encoding")
+                    .invalidates(ChangeClass::none)
+                    .explain("PNGs and the viewport sRGB-encoded; off: clamped as is"));
+    t.push_back(scalar_field<&RenderSettings::seed>(whole, "seed", "seed")
+                    .range(0, 4294967295.0)
+                    .ui(0, 1000)
+                    .explain("jitter seed for more than one sample; same seed, same image"));
+    t.push_back(choice_field<&RenderSettings::pow>("pow", "pow", {"exact", "fast"})
+                    .invalidates(ChangeClass::exponent)
+                    .explain("c^alpha exactly, or by a fast approximation (a speed knob)"));
+    t.push_back(choice_field<&RenderSettings::sampling>("sampling", "sampling",
+                                                        {"adaptive", "uniform"})
+                    .explain("spp > 1: stratified samples where the centre image has edges "
+                             "(adaptive) or in every pixel (uniform)"));
+    t.push_back(scalar_field<&RenderSettings::aa_threshold>(FieldKind::number, "aa_threshold",
+                                                            "refine threshold")
+                    .range(0.0, 1.0)
+                    .ui(0.001, 0.25, true)
+                    .explain("adaptive: refine where neighbouring centre pixels differ by more, "
+                             "per channel of the clamped total"));
+    return t;
+  }();
+  return table;
+}
+
+const FieldTable<Camera>& camera_fields() {
+  static const FieldTable<Camera> table = [] {
+    constexpr FieldKind vector = FieldKind::vector;
+    FieldTable<Camera> t;
+    t.push_back(vec3_field<&Camera::eye>(vector, "eye", "eye")
+                    .range(-kMaxCoordinate, kMaxCoordinate)
+                    .ui(-1e4, 1e4)
+                    .explain("camera position, world units"));
+    t.push_back(vec3_field<&Camera::target>(vector, "target", "target")
+                    .range(-kMaxCoordinate, kMaxCoordinate)
+                    .ui(-1e4, 1e4)
+                    .explain("the point looked at; must differ from the eye"));
+    t.push_back(vec3_field<&Camera::up>(vector, "up", "up")
+                    .range(-kMaxCoordinate, kMaxCoordinate)
+                    .ui(-1.0, 1.0)
+                    .explain("up hint; not parallel to target - eye"));
+    t.push_back(scalar_field<&Camera::fov_y>(FieldKind::number, "fov_y", "field of view")
+                    .range(0.0, 180.0)
+                    .open(true, true)
+                    .ui(1.0, 150.0)
+                    .explain("vertical field of view, degrees"));
+    return t;
+  }();
+  return table;
+}
+
+const FieldTable<Scene>& scene_fields() {
+  static const FieldTable<Scene> table = [] {
+    FieldTable<Scene> t;
+    t.push_back(vec3_field<&Scene::background>(FieldKind::colour, "background", "background")
+                    .invalidates(ChangeClass::shade)
+                    .explain("the colour of primary rays that hit nothing"));
+    t.push_back(vec3_field<&Scene::ambient>(FieldKind::colour, "ambient", "scene ambient")
+                    .invalidates(ChangeClass::shade)
+                    .explain("A_scene, the ambient light every ka sees"));
+    return t;
+  }();
+  return table;
+}
+
+bool operator==(const Material& a, const Material& b) {
+  return same_fields(material_fields(), a, b) && a.preset == b.preset;
+}
+
+bool operator==(const PointLight& a, const PointLight& b) {
+  return same_fields(light_fields(), a, b);
+}
+
+bool operator==(const Camera& a, const Camera& b) {
+  return same_fields(camera_fields(), a, b);
+}
+
+}  // namespace gloss
