@@ -13,6 +13,7 @@
 #include "editor/gl/raster_programs.h"
 #include "editor/gl/raster_view.h"
 #include "editor/gl/shadow_maps.h"
+#include "engine/frame_pool.h"
 
 namespace gloss {
 
@@ -196,6 +197,7 @@ struct RasterRenderer::Impl {
   }
 
   float shadow_bias = 0.0f;
+  std::shared_ptr<FramePool> frames = std::make_shared<FramePool>();
 };
 
 RasterRenderer::RasterRenderer(SourceEdit edit) : m_impl(std::make_unique<Impl>(std::move(edit))) {
@@ -278,12 +280,13 @@ std::shared_ptr<RenderedFrame> RasterRenderer::render(const Scene& scene,
       shadows);
   t.draw_ms = finish_ms(since);
 
-  auto frame = std::make_shared<RenderedFrame>();
+  // Recycled images: a fresh 11 MB buffer per image cost its page faults, more than reading it
+  // back (4 ms against 2.5 ms per image at 1280x720 here).
+  std::shared_ptr<RenderedFrame> frame = FramePool::make(m.frames, w, h, terms);
   Image* images[kTargets] = {&frame->images.total, &frame->images.emissive, &frame->images.ambient,
                              &frame->images.diffuse, &frame->images.specular};
   glPixelStorei(GL_PACK_ALIGNMENT, 4);  // rows of vec3 floats: 12 w bytes, a multiple of 4
   for (int i = 0; i < targets; ++i) {
-    *images[i] = Image(w, h);
     glReadBuffer(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i));
     // gloss_project negates y: GL's row 0 is the image's top row, as Image stores it.
     glReadPixels(0, 0, w, h, GL_RGB, GL_FLOAT, images[i]->pixels.data());
