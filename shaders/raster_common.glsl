@@ -58,28 +58,28 @@ float gloss_sphere_t(vec3 o, vec3 d, vec3 centre, float radius) {
   return -b + root > 0.0 ? -b + root : -1.0;
 }
 
-// The cube face of direction d (from a light) and that face's frame: faces 0..5 look along
-// +x, -x, +y, -y, +z, -z. The shadow pass draws face k with this frame (gloss_view_*), so the
-// lookup below finds the texel that face's rasterizer wrote for d.
-int gloss_cube_face(vec3 d, out vec3 forward, out vec3 right, out vec3 up) {
+// The cube face of direction d (from a light), and d in that face's frame: faces 0..5 look
+// along +x, -x, +y, -y, +z, -z with (right, up) = +x: (-z, y), -x: (z, y), +y: (x, -z),
+// -y: (x, z), +z: (x, y), -z: (-x, y) (raster_view.cpp, cube_face_view, draws face k with that
+// frame, so the lookup below finds the texel that face's rasterizer wrote for d). right_up: d's
+// components along the face's right and up; major: along its forward, > 0 unless d = 0. Written
+// with the components rather than three frame vectors: llvmpipe runs every branch's side, and
+// this is most of the shadow test's cost.
+int gloss_cube_face(vec3 d, out vec2 right_up, out float major) {
   vec3 a = abs(d);
-  int face;
   if (a.x >= a.y && a.x >= a.z) {
-    face = d.x >= 0.0 ? 0 : 1;
-  } else if (a.y >= a.z) {
-    face = d.y >= 0.0 ? 2 : 3;
-  } else {
-    face = d.z >= 0.0 ? 4 : 5;
+    major = a.x;
+    right_up = vec2(d.x >= 0.0 ? -d.z : d.z, d.y);
+    return d.x >= 0.0 ? 0 : 1;
   }
-  float s = (face == 0 || face == 2 || face == 4) ? 1.0 : -1.0;
-  if (face < 2) {
-    forward = vec3(s, 0.0, 0.0); right = vec3(0.0, 0.0, -s); up = vec3(0.0, 1.0, 0.0);
-  } else if (face < 4) {
-    forward = vec3(0.0, s, 0.0); right = vec3(1.0, 0.0, 0.0); up = vec3(0.0, 0.0, -s);
-  } else {
-    forward = vec3(0.0, 0.0, s); right = vec3(s, 0.0, 0.0); up = vec3(0.0, 1.0, 0.0);
+  if (a.y >= a.z) {
+    major = a.y;
+    right_up = vec2(d.x, d.y >= 0.0 ? -d.z : d.z);
+    return d.y >= 0.0 ? 2 : 3;
   }
-  return face;
+  major = a.z;
+  right_up = vec2(d.z >= 0.0 ? d.x : -d.x, d.y);
+  return d.z >= 0.0 ? 4 : 5;
 }
 
 #if GLOSS_SHADOWS && GLOSS_LIGHT_COUNT > 0
@@ -97,20 +97,21 @@ uniform float gloss_shadow_bias;  // texels' worth of depth (raster_settings.h)
 float gloss_visibility(int light, vec3 p, vec3 n_g) {
   vec3 d = p - gloss_light_position[light];
   float dist = length(d);
-  if (!(dist > 0.0)) return 1.0;
-  vec3 forward, right, up;
-  int face = gloss_cube_face(d, forward, right, up);
-  float major = dot(d, forward);
-  vec2 uv = vec2(dot(d, right), dot(d, up)) / major * 0.5 + 0.5;
-  ivec2 texel = clamp(ivec2(floor(uv * gloss_shadow_size)), ivec2(0),
-                      ivec2(int(gloss_shadow_size) - 1));
+  vec2 right_up;
+  float major;
+  int face = gloss_cube_face(d, right_up, major);
+  vec2 uv = right_up / major * 0.5 + 0.5;
+  int size = int(gloss_shadow_size);
+  ivec2 texel = clamp(ivec2(floor(uv * gloss_shadow_size)), ivec2(0), ivec2(size - 1));
   // The pass drew with y negated (gloss_project): row 0 is the face's top.
-  texel.y = int(gloss_shadow_size) - 1 - texel.y;
+  texel.y = size - 1 - texel.y;
   float stored = texelFetch(gloss_shadow_maps, ivec3(texel, 6 * light + face), 0).r;
   float cos_theta = abs(dot(n_g, d)) / dist;
   float tan_theta = sqrt(max(1.0 - cos_theta * cos_theta, 0.0)) / max(cos_theta, 1e-6);
   float bias = gloss_shadow_bias * (2.0 * dist / gloss_shadow_size) * min(1.0 + tan_theta, 10.0);
-  return dist <= stored + bias ? 1.0 : 0.0;
+  // d = 0 (a light on the surface) has no direction to look up: lit, as the ray tracer's
+  // shadow segment of length 0 finds nothing.
+  return (dist <= stored + bias || !(dist > 0.0)) ? 1.0 : 0.0;
 }
 #else
 float gloss_visibility(int light, vec3 p, vec3 n_g) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
@@ -53,6 +54,13 @@ ImageMetrics compare_images(const Image& test, const Image& reference) {
 ImageMetrics compare_images(const Image& test, const Image& reference,
                             const std::vector<std::uint8_t>& mask, std::uint8_t which) {
   return compare(test, reference, &mask, which);
+}
+
+std::string psnr_text(double psnr_db) {
+  if (std::isinf(psnr_db)) return psnr_db > 0 ? "inf" : "-inf";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", psnr_db);
+  return text;
 }
 
 }  // namespace gloss

@@ -4,6 +4,7 @@
 // every pixel: silhouette and shadow-edge pixels are counted like any other, never left out.
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "base/image.h"
@@ -26,5 +27,8 @@ ImageMetrics compare_images(const Image& test, const Image& reference);
 // ReferenceOptions::edges); pixels = 0 and every figure 0 when none does.
 ImageMetrics compare_images(const Image& test, const Image& reference,
                             const std::vector<std::uint8_t>& mask, std::uint8_t which);
+
+// A PSNR as the CSV files and tables print it: "%.3f", or "inf" / "-inf".
+std::string psnr_text(double psnr_db);
 
 }  // namespace gloss

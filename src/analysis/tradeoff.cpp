@@ -288,15 +288,9 @@ std::string tradeoff_to_csv(const std::vector<TradeoffRow>& rows) {
   std::string csv = "knob,setting,time_ms,rmse,psnr_db,max_abs,pct_pixels_off\n";
   char line[256];
   for (const TradeoffRow& r : rows) {
-    char psnr[32];
-    if (std::isinf(r.error.psnr_db)) {
-      std::snprintf(psnr, sizeof psnr, "%s", r.error.psnr_db > 0 ? "inf" : "-inf");
-    } else {
-      std::snprintf(psnr, sizeof psnr, "%.3f", r.error.psnr_db);
-    }
     std::snprintf(line, sizeof line, "%s,%s,%.3f,%.6g,%s,%.6g,%.4f\n", to_string(r.knob),
-                  r.setting.c_str(), r.time_ms, r.error.rmse, psnr, r.error.max_abs,
-                  r.error.pct_pixels_off);
+                  r.setting.c_str(), r.time_ms, r.error.rmse, psnr_text(r.error.psnr_db).c_str(),
+                  r.error.max_abs, r.error.pct_pixels_off);
     csv += line;
   }
   return csv;

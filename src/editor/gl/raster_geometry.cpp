@@ -2,6 +2,7 @@
 
 #include <set>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -55,16 +56,23 @@ void release(MeshBuffer& b) {
 }  // namespace
 
 RasterGeometry::RasterGeometry() {
-  // The 12 triangles of [-1, 1]^3; winding does not matter (culling is off).
+  // The 12 triangles of [-1, 1]^3, each wound counter-clockwise seen from outside, so that the
+  // renderer can cull the far faces when the eye is outside the cube.
   static const int kFaces[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
                                    {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+  const auto corner = [](int c) {  // bit 0: x, bit 1: y, bit 2: z
+    return glm::vec3((c & 1) ? 1.0f : -1.0f, (c & 2) ? 1.0f : -1.0f, (c & 4) ? 1.0f : -1.0f);
+  };
   std::vector<float> corners;
   for (const auto& f : kFaces) {
-    for (int k : {0, 1, 2, 0, 2, 3}) {
-      const int c = f[k];  // bit 0: x, bit 1: y, bit 2: z
-      corners.push_back((c & 1) ? 1.0f : -1.0f);
-      corners.push_back((c & 2) ? 1.0f : -1.0f);
-      corners.push_back((c & 4) ? 1.0f : -1.0f);
+    static const int kTriangles[2][3] = {{0, 1, 2}, {0, 2, 3}};  // the quad's two halves
+    for (const auto& tri : kTriangles) {
+      glm::vec3 p[3] = {corner(f[tri[0]]), corner(f[tri[1]]), corner(f[tri[2]])};
+      // The face's centre points outward; turn the triangle if its normal does not.
+      if (glm::dot(glm::cross(p[1] - p[0], p[2] - p[0]), p[0] + p[1] + p[2]) < 0.0f) {
+        std::swap(p[1], p[2]);
+      }
+      for (const glm::vec3& q : p) corners.insert(corners.end(), {q.x, q.y, q.z});
     }
   }
   glGenVertexArrays(1, &m_cube_array);

@@ -14,13 +14,6 @@ std::string number_text(double value) {
   return text;
 }
 
-std::string psnr_text(double psnr_db) {
-  char text[32];
-  if (std::isinf(psnr_db)) return psnr_db > 0 ? "inf" : "-inf";
-  std::snprintf(text, sizeof text, "%.3f", psnr_db);
-  return text;
-}
-
 void check_options(const RasterTradeoffOptions& o) {
   if (o.runs < 1) throw std::invalid_argument("raster tradeoff: runs must be at least 1");
   if (o.reference_spp < 1 || o.reference_spp > kMaxSpp) {

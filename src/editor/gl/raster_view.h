@@ -20,7 +20,7 @@ struct RasterView {
 // Throws std::invalid_argument for a degenerate camera (as make_camera_basis).
 RasterView camera_view(const Scene& scene, int width, int height);
 
-// Face k (0..5: +x, -x, +y, -y, +z, -z; raster_common.glsl's gloss_cube_face) of the cube around
+// Face k (0..5: +x, -x, +y, -y, +z, -z; raster_common.glsl's gloss_cube_face, same frames) of the cube around
 // light_position: a 90 degree square view whose far plane is at infinity (the shadow pass keeps
 // the nearest distance by blending, not by the depth test).
 RasterView cube_face_view(const glm::vec3& light_position, int face);

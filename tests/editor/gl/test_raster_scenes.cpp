@@ -40,7 +40,8 @@ Scene shipped(const std::string& name, bool shadows) {
 
 // Scenes of our own for what the shipped ones do not show: a quad seen from behind (two-sided
 // rule), a camera close enough for a sphere to leave the frame, Blinn-Phong with energy
-// normalisation, a shininess of 1e4, two coloured lights, no light at all.
+// normalisation, a shininess of 1e4, two coloured lights, no light at all, an eye inside a
+// sphere's impostor cube.
 Scene own_scene(const std::string& which) {
   std::string lights =
       R"([{"position": [3, 4, 5], "diffuse": [1, 0.9, 0.8], "specular": [1, 1, 1]},
@@ -58,6 +59,8 @@ Scene own_scene(const std::string& which) {
     lights = "[]";
   } else if (which == "behind") {
     camera = R"({"eye": [0.5, -2, -5], "target": [0, 0, 0], "fov_y": 40})";
+  } else if (which == "corner") {  // outside the sphere, inside its impostor cube: no culling
+    camera = R"({"eye": [0.9, 0.7, 0.9], "target": [0, -0.2, 0], "fov_y": 70})";
   } else if (which == "close") {
     camera = R"({"eye": [0.3, 0.2, 2.2], "target": [0, 0, 0], "fov_y": 60})";
   }
@@ -126,7 +129,7 @@ TEST_F(RasterAgreement, ShippedScenesWithoutShadowsPerPixelAndPerVertex) {
 
 TEST_F(RasterAgreement, OwnScenesWithoutShadows) {
   RasterRenderer renderer;
-  for (const char* which : {"plain", "blinn", "sharp", "dark", "behind", "close"}) {
+  for (const char* which : {"plain", "blinn", "sharp", "dark", "behind", "close", "corner"}) {
     const Scene scene = own_scene(which);
     for (ShadingFrequency f : {ShadingFrequency::pixel, ShadingFrequency::vertex}) {
       const test::Agreement a = agreement(renderer, scene, f, which);
@@ -279,12 +282,12 @@ TEST_F(RasterAgreement, PlantedShaderErrorsFail) {
                        EXPECT_FALSE(agrees(r, teapot, ShadingFrequency::vertex));
                      });
   // Shadow maps that never shadow: the differences leave the shadow edges.
-  with_planted_error(
-      "return dist <= stored + bias ? 1.0 : 0.0;", "return 1.0;", [&](RasterRenderer& r) {
-        const ShadowCount c =
-            count_shadow_differences(r, shipped("spheres.json", true), RasterSettings{}, "planted");
-        EXPECT_LT(c.near_edge, c.off * 98 / 100);
-      });
+  with_planted_error("return (dist <= stored + bias || !(dist > 0.0)) ? 1.0 : 0.0;", "return 1.0;",
+                     [&](RasterRenderer& r) {
+                       const ShadowCount c = count_shadow_differences(
+                           r, shipped("spheres.json", true), RasterSettings{}, "planted");
+                       EXPECT_LT(c.near_edge, c.off * 98 / 100);
+                     });
 }
 
 }  // namespace
