@@ -31,30 +31,54 @@ double finish_ms(Clock::time_point& since) {
   return ms;
 }
 
-// The GL state the renderer changes, put back afterwards so the editor's own drawing is not
-// disturbed.
+// The GL state the renderer changes, put back afterwards so the caller's drawing is not
+// disturbed (the editor resets what it uses anyway; tests and the tradeoff rows do not).
 struct SavedState {
-  GLint framebuffer = 0, program = 0, vertex_array = 0, viewport[4] = {};
-  GLint front_face = GL_CCW, cull_face = GL_BACK;
+  GLint draw_framebuffer = 0, read_framebuffer = 0, program = 0, vertex_array = 0;
+  GLint array_buffer = 0, renderbuffer = 0, viewport[4] = {};
+  GLint active_texture = GL_TEXTURE0, texture_2d = 0, texture_array = 0;  // on unit 0
+  GLint front_face = GL_CCW, cull_face = GL_BACK, depth_func = GL_LESS;
+  GLint blend_rgb = GL_FUNC_ADD, blend_alpha = GL_FUNC_ADD, pack_alignment = 4;
   GLboolean depth_test = GL_FALSE, blend = GL_FALSE, cull = GL_FALSE;
   SavedState() {
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_framebuffer);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_framebuffer);
     glGetIntegerv(GL_CURRENT_PROGRAM, &program);
     glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertex_array);
+    glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &array_buffer);
+    glGetIntegerv(GL_RENDERBUFFER_BINDING, &renderbuffer);
     glGetIntegerv(GL_VIEWPORT, viewport);
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &active_texture);
+    glActiveTexture(GL_TEXTURE0);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture_2d);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &texture_array);
     glGetIntegerv(GL_FRONT_FACE, &front_face);
     glGetIntegerv(GL_CULL_FACE_MODE, &cull_face);
+    glGetIntegerv(GL_DEPTH_FUNC, &depth_func);
+    glGetIntegerv(GL_BLEND_EQUATION_RGB, &blend_rgb);
+    glGetIntegerv(GL_BLEND_EQUATION_ALPHA, &blend_alpha);
+    glGetIntegerv(GL_PACK_ALIGNMENT, &pack_alignment);
     depth_test = glIsEnabled(GL_DEPTH_TEST);
     blend = glIsEnabled(GL_BLEND);
     cull = glIsEnabled(GL_CULL_FACE);
   }
   ~SavedState() {
-    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(draw_framebuffer));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read_framebuffer));
     glUseProgram(static_cast<GLuint>(program));
     glBindVertexArray(static_cast<GLuint>(vertex_array));
+    glBindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(array_buffer));
+    glBindRenderbuffer(GL_RENDERBUFFER, static_cast<GLuint>(renderbuffer));
     glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture_2d));
+    glBindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(texture_array));
+    glActiveTexture(static_cast<GLenum>(active_texture));
     glFrontFace(static_cast<GLenum>(front_face));
     glCullFace(static_cast<GLenum>(cull_face));
+    glDepthFunc(static_cast<GLenum>(depth_func));
+    glBlendEquationSeparate(static_cast<GLenum>(blend_rgb), static_cast<GLenum>(blend_alpha));
+    glPixelStorei(GL_PACK_ALIGNMENT, pack_alignment);
     depth_test ? glEnable(GL_DEPTH_TEST) : glDisable(GL_DEPTH_TEST);
     blend ? glEnable(GL_BLEND) : glDisable(GL_BLEND);
     cull ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
@@ -69,54 +93,16 @@ void set_material_uniforms(GLuint program, const Material& m) {
   set_uniform(program, "gloss_alpha", m.shininess);
 }
 
-// A sphere around one object: exact for spheres, the bounding box's for meshes. Computed once a
-// frame: the shadow pass asks six times per light.
-struct Bound {
-  glm::vec3 centre{0.0f};
-  float radius = 0.0f;
-};
-
-std::vector<Bound> object_bounds(const Scene& scene) {
-  std::vector<Bound> bounds;
-  for (const Object& o : scene.objects) {
-    Bound b{o.center, o.radius};
-    glm::vec3 lo, hi;
-    if (o.type != ObjectType::sphere) {
-      b.radius = 0.0f;
-      if (o.mesh && mesh_bounds(*o.mesh, lo, hi))
-        b = {0.5f * (lo + hi), 0.5f * glm::length(hi - lo)};
-    }
-    bounds.push_back(b);
-  }
-  return bounds;
-}
-
-// Whether a bound can reach the view's frustum: in front of its origin and inside its four side
-// planes, |dot(d, right)| <= scale.x dot(d, forward) and the same with up (a conservative test;
-// objects it keeps may still miss). The shadow pass's cube faces each see a sixth of the
-// directions, so most objects are drawn into one or two faces of six, not all.
-bool may_be_seen(const RasterView& view, const Bound& b) {
-  const glm::vec3 d = b.centre - view.origin;
-  if (glm::dot(d, view.forward) < -b.radius) return false;
-  const glm::vec3 planes[4] = {
-      view.scale.x * view.forward - view.right, view.scale.x * view.forward + view.right,
-      view.scale.y * view.forward - view.up, view.scale.y * view.forward + view.up};
-  for (const glm::vec3& n : planes) {
-    if (glm::dot(d, n) < -b.radius * glm::length(n)) return false;
-  }
-  return true;
-}
-
 // The objects view may see, meshes before spheres, each nearest first: the depth test then
 // rejects hidden fragments before they are shaded (early depth test; impostors write
 // gl_FragDepth and get none).
-std::vector<const Object*> draw_order(const Scene& scene, const std::vector<Bound>& bounds,
+std::vector<const Object*> draw_order(const Scene& scene, const std::vector<DrawnBox>& boxes,
                                       const RasterView& view) {
   std::vector<std::pair<float, const Object*>> keyed;
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-    if (!may_be_seen(view, bounds[i])) continue;
+    if (!may_be_seen(view, boxes[i])) continue;
     const Object& o = scene.objects[i];
-    const float distance = glm::length(bounds[i].centre - view.origin);
+    const float distance = glm::length(0.5f * (boxes[i].lo + boxes[i].hi) - view.origin);
     keyed.emplace_back(o.type == ObjectType::sphere ? distance + 1e30f : distance, &o);
   }
   std::stable_sort(keyed.begin(), keyed.end(),
@@ -201,7 +187,12 @@ struct RasterRenderer::Impl {
   void draw_objects(const Scene& scene, const RasterView& view, RasterPass pass, bool shadows) {
     const int lights = static_cast<int>(scene.lights.size());
     GLuint current = 0;
-    for (const Object* object : draw_order(scene, bounds, view)) {
+    // gloss_project negates y, which turns the cube's outward counter-clockwise triangles
+    // clockwise on screen in the camera's right-handed frame, and keeps them counter-clockwise
+    // in a cube face's left-handed one.
+    const bool left_handed = glm::dot(glm::cross(view.right, view.up), view.forward) > 0.0f;
+    glFrontFace(left_handed ? GL_CCW : GL_CW);
+    for (const Object* object : draw_order(scene, boxes, view)) {
       const Object& o = *object;
       const bool sphere = o.type == ObjectType::sphere;
       // Spheres are impostors: per pixel in both shading passes.
@@ -228,12 +219,11 @@ struct RasterRenderer::Impl {
       if (sphere) {
         set_uniform(program, "gloss_sphere_centre", &o.center.x);
         set_uniform(program, "gloss_sphere_radius", o.radius);
-        // From outside the cube only its near faces: the far ones would cover the same pixels
-        // again, and impostors (which write depth) are shaded before the depth test rejects
-        // them. From inside, the far faces are all there is.
-        const glm::vec3 offset = glm::abs(view.origin - o.center);
-        const bool outside = std::max(offset.x, std::max(offset.y, offset.z)) > 1.02f * o.radius;
-        if (outside) glEnable(GL_CULL_FACE);
+        // Only the near faces when they cover the sphere (near_faces_suffice): the far ones
+        // would shade the same pixels again, and impostors (which write depth) are shaded
+        // before the depth test rejects them. Otherwise both.
+        const DrawnBox& cube = boxes[static_cast<std::size_t>(object - scene.objects.data())];
+        if (near_faces_suffice(view, cube)) glEnable(GL_CULL_FACE);
         glBindVertexArray(geometry.cube());
         glDrawArrays(GL_TRIANGLES, 0, 36);
         glDisable(GL_CULL_FACE);
@@ -246,7 +236,7 @@ struct RasterRenderer::Impl {
   }
 
   float shadow_bias = 0.0f;
-  std::vector<Bound> bounds;  // of the frame being drawn, by object
+  std::vector<DrawnBox> boxes;  // of the frame being drawn, by object
   std::shared_ptr<FramePool> frames = std::make_shared<FramePool>();
 };
 
@@ -281,20 +271,25 @@ std::shared_ptr<RenderedFrame> RasterRenderer::render(const Scene& scene,
                                 std::to_string(kMaxShadowMapSize));
   }
   const int w = scene.render.width, h = scene.render.height;
-  const RasterView view = camera_view(scene, w, h);  // throws for a degenerate camera first
+  if (w < 1 || h < 1) {
+    throw std::invalid_argument("raster image size " + std::to_string(w) + "x" + std::to_string(h) +
+                                " is empty");
+  }
   Impl& m = *m_impl;
+  m.boxes = drawn_boxes(scene);
+  const RasterView view = camera_view(scene, m.boxes, w, h);  // throws for a degenerate camera
+  // An error left pending by earlier GL calls is not the raster path's (checked at the end).
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {
+  }
   const SavedState saved;
   // Two-sided surfaces: no culling but for impostor cubes seen from outside (draw_objects).
-  // gloss_project negates y, which turns counter-clockwise triangles clockwise on screen.
   glDisable(GL_CULL_FACE);
   glCullFace(GL_BACK);
-  glFrontFace(GL_CW);
   RasterTiming& t = m.timing;
   t = {};
   Clock::time_point since = Clock::now();
 
   m.geometry.sync(scene);
-  m.bounds = object_bounds(scene);
   t.upload_ms = finish_ms(since);
 
   const bool shadows = scene.render.shadows && lights > 0;

@@ -16,32 +16,47 @@ glm::vec2 depth_mapping(float near_w, float far_w) {
   return {(far_w + near_w) / (far_w - near_w), -2.0f * far_w * near_w / (far_w - near_w)};
 }
 
-}  // namespace
-
-void scene_bounds(const Scene& scene, glm::vec3& centre, float& radius) {
-  glm::vec3 lo(INFINITY), hi(-INFINITY);
-  for (const Object& o : scene.objects) {
-    if (o.type == ObjectType::sphere) {
-      lo = glm::min(lo, o.center - glm::vec3(o.radius));
-      hi = glm::max(hi, o.center + glm::vec3(o.radius));
-    } else if (o.mesh) {
-      glm::vec3 mlo, mhi;
-      if (mesh_bounds(*o.mesh, mlo, mhi)) {
-        lo = glm::min(lo, mlo);
-        hi = glm::max(hi, mhi);
-      }
-    }
-  }
-  if (!(lo.x <= hi.x)) {
-    centre = glm::vec3(0.0f);
-    radius = 0.0f;
-    return;
-  }
-  centre = 0.5f * (lo + hi);
-  radius = 0.5f * glm::length(hi - lo);
+// Distance from p to the box, 0 inside it.
+float box_distance(const glm::vec3& p, const DrawnBox& b) {
+  return glm::length(glm::max(glm::max(b.lo - p, p - b.hi), glm::vec3(0.0f)));
 }
 
-RasterView camera_view(const Scene& scene, int width, int height) {
+// The smallest and largest w of the box's corners (and so of the box).
+glm::vec2 box_w_range(const RasterView& v, const DrawnBox& b) {
+  glm::vec2 range(INFINITY, -INFINITY);
+  for (int c = 0; c < 8; ++c) {
+    const glm::vec3 corner((c & 1) ? b.hi.x : b.lo.x, (c & 2) ? b.hi.y : b.lo.y,
+                           (c & 4) ? b.hi.z : b.lo.z);
+    const float w = glm::dot(corner - v.origin, v.forward);
+    range = {std::min(range.x, w), std::max(range.y, w)};
+  }
+  return range;
+}
+
+// cos of the widest angle between forward and a direction inside the frustum (its corners):
+// a point at distance d from the origin inside the frustum has w >= d times this.
+float widest_cosine(const RasterView& v) {
+  return 1.0f / std::sqrt(1.0f + v.scale.x * v.scale.x + v.scale.y * v.scale.y);
+}
+
+}  // namespace
+
+std::vector<DrawnBox> drawn_boxes(const Scene& scene) {
+  std::vector<DrawnBox> boxes;
+  for (const Object& o : scene.objects) {
+    DrawnBox b;
+    if (o.type == ObjectType::sphere) {
+      b = {o.center - glm::vec3(1.01f * o.radius), o.center + glm::vec3(1.01f * o.radius), false};
+    } else if (o.mesh) {
+      b.empty = !mesh_bounds(*o.mesh, b.lo, b.hi);
+    }
+    boxes.push_back(b);
+  }
+  return boxes;
+}
+
+RasterView camera_view(const Scene& scene, const std::vector<DrawnBox>& boxes, int width,
+                       int height) {
   const CameraFrame basis = make_camera_frame(scene.camera, width, height);
   RasterView v;
   v.origin = basis.eye;
@@ -49,16 +64,30 @@ RasterView camera_view(const Scene& scene, int width, int height) {
   v.right = basis.right;
   v.up = basis.up;
   v.scale = {basis.scale_x, basis.scale_y};
-  glm::vec3 centre;
-  float radius = 0.0f;
-  scene_bounds(scene, centre, radius);
-  // Along forward the scene lies within distance +- radius of its centre's; 1 % margins keep
-  // the nearest and farthest surfaces off the planes. The near plane stays at least 1e-4 of the
-  // far one: a 32-bit float depth buffer still orders surfaces 1e-6 of the range apart.
-  const float mid = glm::dot(centre - v.origin, v.forward);
-  const float far_w = std::max(1.01f * (mid + radius), 1e-3f);
-  const float near_w = std::max(0.99f * (mid - radius), 1e-4f * far_w);
-  v.depth = depth_mapping(near_w, far_w);
+  // Far: the largest w of any box corner, 1 % beyond. Near: 1 % before the smallest w a visible
+  // surface point can have. Two lower bounds for each object, the larger taken: the smallest w
+  // of its box's corners (w is linear, so a box's extremes are at corners) or, for a sphere, of
+  // its surface (dot(c - eye, f) - r); and its distance from the eye times the frustum's widest
+  // cosine (a floor reaching behind the eye is still as far below it as it is).
+  float far_w = 1e-3f, nearest = INFINITY;
+  const float cosine = widest_cosine(v);
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const DrawnBox& b = boxes[i];
+    if (b.empty) continue;
+    far_w = std::max(far_w, 1.01f * box_w_range(v, b).y);
+    const Object& o = scene.objects[i];
+    float lowest = 0.0f;
+    if (o.type == ObjectType::sphere) {
+      lowest = std::max(glm::dot(o.center - v.origin, v.forward) - o.radius,
+                        (glm::length(o.center - v.origin) - o.radius) * cosine);
+    } else {
+      lowest = std::max(box_w_range(v, b).x, box_distance(v.origin, b) * cosine);
+    }
+    nearest = std::min(nearest, lowest);
+  }
+  v.near_w = std::max(0.99f * nearest, 1e-6f * far_w);
+  if (!(v.near_w < far_w)) v.near_w = 1e-6f * far_w;  // nothing in front of the eye
+  v.depth = depth_mapping(v.near_w, far_w);
   return v;
 }
 
@@ -84,9 +113,31 @@ RasterView cube_face_view(const glm::vec3& light_position, int face) {
   // Infinite far plane: z / w = 1 - 2 near / w stays below 1 for every w >= near. near is tiny
   // (1e-6 of the light's distance from the origin, at least 1e-6) so that nothing near the light
   // is clipped away.
-  const float near_w = std::max(1e-6f, 1e-6f * glm::length(light_position));
-  v.depth = {1.0f, -2.0f * near_w};
+  v.near_w = std::max(1e-6f, 1e-6f * glm::length(light_position));
+  v.depth = {1.0f, -2.0f * v.near_w};
   return v;
+}
+
+bool may_be_seen(const RasterView& view, const DrawnBox& box) {
+  if (box.empty) return false;
+  const glm::vec3 centre = 0.5f * (box.lo + box.hi);
+  const float radius = 0.5f * glm::length(box.hi - box.lo);
+  // In front of the origin and inside the four side planes, |dot(d, right)| <= scale.x
+  // dot(d, forward) and the same with up, for the box's bounding sphere.
+  const glm::vec3 d = centre - view.origin;
+  if (glm::dot(d, view.forward) < -radius) return false;
+  const glm::vec3 planes[4] = {
+      view.scale.x * view.forward - view.right, view.scale.x * view.forward + view.right,
+      view.scale.y * view.forward - view.up, view.scale.y * view.forward + view.up};
+  for (const glm::vec3& n : planes) {
+    if (glm::dot(d, n) < -radius * glm::length(n)) return false;
+  }
+  return true;
+}
+
+bool near_faces_suffice(const RasterView& view, const DrawnBox& cube) {
+  // Outside the cube and every corner (so every point) of it past the near plane.
+  return box_distance(view.origin, cube) > 0.0f && box_w_range(view, cube).x > view.near_w;
 }
 
 void set_view_uniforms(GLuint program, const RasterView& view) {

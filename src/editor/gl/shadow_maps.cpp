@@ -1,6 +1,8 @@
 #include "editor/gl/shadow_maps.h"
 
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace gloss {
 
@@ -28,13 +30,29 @@ bool ShadowMaps::update(const Scene& scene, int size,
       m_texture != 0) {
     return false;
   }
-  m_key_numbers = std::move(numbers);
-  m_key_meshes = std::move(meshes);
+  // The key is kept only once the maps are drawn: a throw below leaves them marked stale.
+  m_key_numbers.clear();
+  m_key_meshes.clear();
 
   if (m_texture == 0 || size != m_size || layers != m_layers) {
+    const double bytes = double(size) * size * layers * sizeof(float);
+    if (bytes > double(kMaxShadowMapBytes)) {
+      throw std::runtime_error(
+          "shadow maps for " + std::to_string(layers / 6) + " lights at " + std::to_string(size) +
+          " texels would take " + std::to_string(static_cast<long long>(bytes / (1 << 20))) +
+          " MiB, more than the raster path's " + std::to_string(kMaxShadowMapBytes >> 20) +
+          " MiB; choose a smaller shadow map");
+    }
     if (m_texture == 0) glGenTextures(1, &m_texture);
     glBindTexture(GL_TEXTURE_2D_ARRAY, m_texture);
+    for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {
+    }
     glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_R32F, size, size, layers, 0, GL_RED, GL_FLOAT, nullptr);
+    if (glGetError() != GL_NO_ERROR) {  // out of memory, most likely
+      m_size = m_layers = 0;
+      throw std::runtime_error("cannot allocate the shadow maps (" + std::to_string(layers / 6) +
+                               " lights at " + std::to_string(size) + " texels)");
+    }
     // texelFetch only; the filters still have to name a complete texture.
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -57,6 +75,8 @@ bool ShadowMaps::update(const Scene& scene, int size,
   }
   glBlendEquation(GL_FUNC_ADD);
   glDisable(GL_BLEND);
+  m_key_numbers = std::move(numbers);
+  m_key_meshes = std::move(meshes);
   return true;
 }
 

@@ -21,6 +21,10 @@
 
 namespace gloss {
 
+// The most texel storage the maps may take, bytes: 32 lights at 4096 texels would ask for
+// 12.9 GB; a request past this is refused with a message instead of failing in the driver.
+inline constexpr std::size_t kMaxShadowMapBytes = std::size_t(1) << 30;
+
 class ShadowMaps {
  public:
   ShadowMaps() = default;  // GL objects are made on the first update()

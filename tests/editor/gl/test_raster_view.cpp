@@ -34,7 +34,7 @@ TEST(RasterView, PixelCentresAreTheCameraFormulas) {
   sphere.radius = 2.0f;
   scene.objects.push_back(sphere);
   const int w = 64, h = 48;
-  const RasterView view = camera_view(scene, w, h);
+  const RasterView view = camera_view(scene, drawn_boxes(scene), w, h);
   const CameraFrame basis = make_camera_frame(scene.camera, w, h);
   for (int y : {0, 17, 47}) {
     for (int x : {0, 31, 63}) {
@@ -51,17 +51,50 @@ TEST(RasterView, PixelCentresAreTheCameraFormulas) {
 
 TEST(RasterView, NearAndFarPlanesHoldTheScene) {
   Scene scene;
-  scene.camera.eye = {0.0f, 0.0f, 10.0f};
+  scene.camera.eye = {0.0f, 0.0f, 10.0f};  // looking down -z at a unit sphere, fov 40
   Object sphere;
   sphere.radius = 1.0f;
   scene.objects.push_back(sphere);
-  const RasterView view = camera_view(scene, 10, 10);
-  // The bounds are the sphere's box, [-1, 1]^3, held by a sphere of radius sqrt(3) about the
-  // origin: w = 10 -+ sqrt(3), and the planes sit 1 % outside that.
-  const float r = std::sqrt(3.0f);
+  const RasterView view = camera_view(scene, drawn_boxes(scene), 10, 10);
+  // Far: the impostor cube's farthest corner, w = 10 + 1.01, and 1 % beyond. Near: the sphere's
+  // nearest point, w = 10 - 1 (larger than its distance 9 times the widest cosine), 1 % before.
   const auto ndc_z = [&](float w) { return (view.depth.x * w + view.depth.y) / w; };
-  EXPECT_NEAR(ndc_z(0.99f * (10.0f - r)), -1.0f, 1e-5f);
-  EXPECT_NEAR(ndc_z(1.01f * (10.0f + r)), 1.0f, 1e-5f);
+  EXPECT_NEAR(view.near_w, 0.99f * 9.0f, 1e-5f);
+  EXPECT_NEAR(ndc_z(0.99f * 9.0f), -1.0f, 1e-5f);
+  EXPECT_NEAR(ndc_z(1.01f * 11.01f), 1.0f, 1e-5f);
+}
+
+TEST(RasterView, NearPlaneFollowsTheNearestSurfaceNotTheScenesSize) {
+  // A ground sphere of radius 1e4 below the eye, its top 1.6 units under it: a near plane at a
+  // fixed share of the far one (about 2e4 away) would cut the ground in front of the eye.
+  Scene scene;
+  scene.camera.eye = {0.0f, 1.6f, 3.0f};
+  scene.camera.target = {0.0f, 0.0f, 0.0f};
+  Object ground;
+  ground.center = {0.0f, -1e4f, 0.0f};
+  ground.radius = 1e4f;
+  scene.objects.push_back(ground);
+  const RasterView view = camera_view(scene, drawn_boxes(scene), 64, 48);
+  EXPECT_GT(view.near_w, 0.0f);
+  EXPECT_LT(view.near_w, 1.6f);  // below the ground's nearest point's distance
+}
+
+TEST(RasterView, ImpostorsKeepTheirFarFacesWhenTheNearOnesMayBeClipped) {
+  Scene scene;
+  Object sphere;
+  scene.objects.push_back(sphere);  // unit sphere at the origin; cube +-1.01
+  scene.camera.fov_y = 60.0f;
+  scene.camera.eye = {0.0f, 0.0f, 5.0f};  // cube's nearest w 3.99, near plane 0.99 x 4
+  RasterView view = camera_view(scene, drawn_boxes(scene), 32, 32);
+  EXPECT_TRUE(near_faces_suffice(view, drawn_boxes(scene)[0]));
+  // Along a diagonal the cube's corner (w = 0.49 sqrt 3 = 0.85) is nearer than the sphere's
+  // point (w = 1.5 sqrt 3 - 1 = 1.60) that sets the near plane: the near faces are cut.
+  scene.camera.eye = {1.5f, 1.5f, 1.5f};
+  view = camera_view(scene, drawn_boxes(scene), 32, 32);
+  EXPECT_FALSE(near_faces_suffice(view, drawn_boxes(scene)[0]));
+  scene.camera.eye = {0.9f, 0.7f, 0.9f};  // inside the cube
+  view = camera_view(scene, drawn_boxes(scene), 32, 32);
+  EXPECT_FALSE(near_faces_suffice(view, drawn_boxes(scene)[0]));
 }
 
 // raster_common.glsl's gloss_cube_face: the major axis, +x, -x, +y, -y, +z, -z.

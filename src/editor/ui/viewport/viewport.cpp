@@ -141,8 +141,11 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
                 sides,
                 view.raster};
   key.settings.shading = ShadingFrequency::pixel;  // each side's frequency is in sides
-  // The raster path failed on exactly this state: the ray tracer draws it.
-  if (m_raster_render_failed && key == m_raster_key) sides.a.raster = sides.b.raster = false;
+  key.lights = document.lights.size();
+  // The raster path failed with this setup: the ray tracer draws until the setup changes.
+  if (m_raster_render_failed && key.same_setup(m_raster_key)) {
+    sides.a.raster = sides.b.raster = false;
+  }
   m_pushed_renderer = view.renderer;
   m_pushed_raster = view.raster;
 

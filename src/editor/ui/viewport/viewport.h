@@ -162,12 +162,17 @@ class Viewport {
     AbSource source = AbSource::models;
     AbSides sides;
     RasterSettings settings;
+    std::size_t lights = 0;  // the document's light count (the raster path takes 32 at most)
     bool operator==(const RasterKey& o) const;
+    // Equal but perhaps for the document's revision and the snapshot's: what a failure that
+    // does not depend on the edit (too many lights, shadow maps too large) repeats on.
+    bool same_setup(const RasterKey& o) const;
   };
   RasterKey m_raster_key;
   bool m_raster_shown = false;  // m_raster_key describes frames on screen
-  // render() threw for m_raster_key (too many lights, a GL error): the ray tracer draws that
-  // state; the raster path is tried again when the key changes.
+  // render() threw for m_raster_key (too many lights, shadow maps too large, a GL error): the
+  // ray tracer draws; the raster path is tried again when the setup changes (same_setup), not
+  // on every edit of a drag.
   bool m_raster_render_failed = false;
   bool m_shown_raster_a = false, m_shown_raster_b = false;
 

@@ -11,11 +11,14 @@
 
 namespace gloss {
 
+bool Viewport::RasterKey::same_setup(const RasterKey& o) const {
+  return width == o.width && height == o.height && terms == o.terms && ab == o.ab &&
+         keep == o.keep && source == o.source && sides.a == o.sides.a && sides.b == o.sides.b &&
+         settings == o.settings && lights == o.lights;
+}
+
 bool Viewport::RasterKey::operator==(const RasterKey& o) const {
-  return revision == o.revision && snapshot == o.snapshot && width == o.width &&
-         height == o.height && terms == o.terms && ab == o.ab && keep == o.keep &&
-         source == o.source && sides.a == o.sides.a && sides.b == o.sides.b &&
-         settings == o.settings;
+  return revision == o.revision && snapshot == o.snapshot && same_setup(o);
 }
 
 bool Viewport::raster_available() {
