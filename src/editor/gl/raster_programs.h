@@ -30,7 +30,10 @@ struct RasterVariant {
 
 // The most lights a raster program takes: its uniform arrays (5 vec3 per light) and its
 // shadow-map layers (6 per light) stay within GL 3.3's guaranteed minimums (1024 fragment
-// uniform components, 256 array layers).
+// uniform components, 256 array layers). Per-vertex shading passes 2 floats per light plus 6
+// between the stages: past 29 lights that exceeds GL 3.3's guaranteed 64 output components
+// (llvmpipe and current GPUs offer 128); a driver that refuses the link gets the ray tracer,
+// with the linker's message as the editor's notice.
 inline constexpr int kMaxRasterLights = 32;
 
 class RasterPrograms {
