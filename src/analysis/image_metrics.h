@@ -28,6 +28,10 @@ ImageMetrics compare_images(const Image& test, const Image& reference);
 ImageMetrics compare_images(const Image& test, const Image& reference,
                             const std::vector<std::uint8_t>& mask, std::uint8_t which);
 
+// % of pixels of test whose every channel is within tolerance of reference (a non-finite value
+// disagrees); 0 for empty images. Throws std::invalid_argument when the sizes differ.
+double percent_within(const Image& test, const Image& reference, double tolerance);
+
 // A PSNR as the CSV files and tables print it: "%.3f", or "inf" / "-inf".
 std::string psnr_text(double psnr_db);
 

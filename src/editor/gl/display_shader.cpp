@@ -2,56 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
+#include "editor/gl/gl_program.h"
 #include "editor/gl/shader_sources.h"
 #include "editor/model/view/heat_map.h"
 
 namespace gloss {
 
-namespace {
-
-GLuint compile(GLenum stage, const char* source, const char* name) {
-  const GLuint shader = glCreateShader(stage);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    char log[2048] = {};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    glDeleteShader(shader);
-    throw std::runtime_error(std::string("cannot compile ") + name + ": " + log);
-  }
-  return shader;
-}
-
-}  // namespace
-
 DisplayShader::DisplayShader() {
-  const GLuint vertex = compile(GL_VERTEX_SHADER, kDisplayVertexShader, "display.vert");
-  GLuint fragment = 0;
-  try {
-    fragment = compile(GL_FRAGMENT_SHADER, kDisplayFragmentShader, "display.frag");
-  } catch (...) {
-    glDeleteShader(vertex);
-    throw;
-  }
-  m_program = glCreateProgram();
-  glAttachShader(m_program, vertex);
-  glAttachShader(m_program, fragment);
-  glLinkProgram(m_program);
-  glDeleteShader(vertex);
-  glDeleteShader(fragment);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(m_program, GL_LINK_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    char log[2048] = {};
-    glGetProgramInfoLog(m_program, sizeof log, nullptr, log);
-    glDeleteProgram(m_program);
-    throw std::runtime_error(std::string("cannot link the display shaders: ") + log);
-  }
+  m_program = build_program(kDisplayVertexShader, kDisplayFragmentShader,
+                            "the display shaders (display.vert, display.frag)");
   m_a = glGetUniformLocation(m_program, "u_a");
   m_b = glGetUniformLocation(m_program, "u_b");
   m_mode = glGetUniformLocation(m_program, "u_mode");

@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "editor/gl/gl_program.h"
 #include "editor/gl/shader_sources.h"
 #include "editor/model/export/glsl_export.h"
 
@@ -25,24 +26,6 @@ const char* pass_name(RasterPass pass) {
 std::string describe(const RasterVariant& v) {
   return std::string(v.shape == RasterShape::mesh ? "mesh" : "sphere") + " " + pass_name(v.pass) +
          " pass, " + std::to_string(v.light_count) + " lights" + (v.shadows ? ", shadow maps" : "");
-}
-
-GLuint compile(GLenum stage, const std::string& text, const RasterVariant& variant) {
-  const GLuint shader = glCreateShader(stage);
-  const char* source = text.c_str();
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[4096] = {};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    glDeleteShader(shader);
-    throw std::runtime_error(std::string("cannot compile the raster ") +
-                             (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") + " shader (" +
-                             describe(variant) + "): " + log);
-  }
-  return shader;
 }
 
 }  // namespace
@@ -75,28 +58,8 @@ GLuint RasterPrograms::get(const RasterVariant& variant) {
   const auto text = [&](GLenum stage) {
     return m_edit ? m_edit(source(variant, stage)) : source(variant, stage);
   };
-  const GLuint vertex = compile(GL_VERTEX_SHADER, text(GL_VERTEX_SHADER), variant);
-  GLuint fragment = 0;
-  try {
-    fragment = compile(GL_FRAGMENT_SHADER, text(GL_FRAGMENT_SHADER), variant);
-  } catch (...) {
-    glDeleteShader(vertex);
-    throw;
-  }
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, vertex);
-  glAttachShader(program, fragment);
-  glLinkProgram(program);
-  glDeleteShader(vertex);
-  glDeleteShader(fragment);
-  GLint linked = 0;
-  glGetProgramiv(program, GL_LINK_STATUS, &linked);
-  if (!linked) {
-    char log[4096] = {};
-    glGetProgramInfoLog(program, sizeof log, nullptr, log);
-    glDeleteProgram(program);
-    throw std::runtime_error("cannot link the raster program (" + describe(variant) + "): " + log);
-  }
+  const GLuint program = build_program(text(GL_VERTEX_SHADER), text(GL_FRAGMENT_SHADER),
+                                       "the raster program (" + describe(variant) + ")");
   m_programs.emplace(variant, program);
   return program;
 }

@@ -147,21 +147,4 @@ std::string raster_tradeoff_table(const std::vector<RasterTradeoffRow>& rows) {
   return table;
 }
 
-double percent_within(const Image& test, const Image& reference, double tolerance) {
-  if (test.width != reference.width || test.height != reference.height) {
-    throw std::invalid_argument("percent_within: image sizes differ");
-  }
-  if (test.pixels.empty()) return 0.0;
-  std::size_t within = 0;
-  for (std::size_t i = 0; i < test.pixels.size(); ++i) {
-    bool ok = true;
-    for (int c = 0; c < 3; ++c) {
-      const double d = std::fabs(double(test.pixels[i][c]) - double(reference.pixels[i][c]));
-      ok = ok && d <= tolerance;  // NaN fails the comparison
-    }
-    within += ok ? 1 : 0;
-  }
-  return 100.0 * static_cast<double>(within) / static_cast<double>(test.pixels.size());
-}
-
 }  // namespace gloss

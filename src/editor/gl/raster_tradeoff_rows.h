@@ -86,8 +86,4 @@ std::string raster_tradeoff_to_csv(const std::vector<RasterTradeoffRow>& rows);
 // The rows as a fixed-width table, a header line first (stdout of scripts, docs).
 std::string raster_tradeoff_table(const std::vector<RasterTradeoffRow>& rows);
 
-// % of pixels of test whose every channel is within tolerance of reference (sizes must match;
-// a non-finite value disagrees). Throws std::invalid_argument when the sizes differ.
-double percent_within(const Image& test, const Image& reference, double tolerance);
-
 }  // namespace gloss

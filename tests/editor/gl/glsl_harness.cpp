@@ -6,9 +6,11 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <stdexcept>
 
 #include <glm/geometric.hpp>
 
+#include "editor/gl/gl_program.h"
 #include "reference/reference_renderer.h"
 #include "scene/camera.h"
 
@@ -68,18 +70,12 @@ double triangle_t(const Mesh& mesh, std::size_t prim, const D3& o, const D3& d, 
 }  // namespace
 
 GLuint compile_shader(GLenum type, const std::string& source, std::string& log) {
-  const GLuint shader = glCreateShader(type);
-  const char* text = source.c_str();
-  glShaderSource(shader, 1, &text, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char buffer[4096] = {};
-    glGetShaderInfoLog(shader, sizeof buffer, nullptr, buffer);
-    log += buffer;
+  try {
+    return gloss::compile_shader(type, source, "an exported shader");
+  } catch (const std::runtime_error& e) {
+    log += e.what();
+    return 0;
   }
-  return shader;
 }
 
 std::vector<std::vector<float>> host_hits(const Scene& scene) {
@@ -150,20 +146,11 @@ std::vector<std::vector<float>> render_hits(const Scene& scene,
   bool built = true;
   for (const Object& o : scene.objects) {
     if (programs.count(o.material) != 0) continue;
-    const GLuint vs = compile_shader(GL_VERTEX_SHADER, kPointVertexShader, log);
-    const GLuint fs = compile_shader(GL_FRAGMENT_SHADER, fragment(o.material), log);
-    const GLuint program = glCreateProgram();
-    glAttachShader(program, vs);
-    glAttachShader(program, fs);
-    glLinkProgram(program);
-    GLint linked = 0;
-    glGetProgramiv(program, GL_LINK_STATUS, &linked);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    if (!linked) {
-      char buffer[4096] = {};
-      glGetProgramInfoLog(program, sizeof buffer, nullptr, buffer);
-      log += buffer;
+    GLuint program = 0;
+    try {
+      program = build_program(kPointVertexShader, fragment(o.material), "an exported shader");
+    } catch (const std::runtime_error& e) {
+      log += e.what();
       built = false;
     }
     programs[o.material] = program;
