@@ -43,6 +43,7 @@ struct ProgressiveRenderer::Impl {
   ChangeClass pending_change = ChangeClass::none;  // accumulated since the worker last looked
   bool terms;
   bool stop = false;
+  bool paused = false;  // pause(): no work until the next set_scene()
   std::atomic<bool> cancel{false};
 
   // Published frame, guarded by publish_mutex.
@@ -58,7 +59,7 @@ struct ProgressiveRenderer::Impl {
   SampleCache cache;
   PixelFactors factors;
   std::shared_ptr<FramePool> frame_pool = std::make_shared<FramePool>();
-  int level = 0;  // 0 .. preview_levels - 1: coarse passes; preview_levels: full
+  int level = 0;                  // 0 .. preview_levels - 1: coarse passes; preview_levels: full
   double last_full_pass_ms = -1;  // the last full-resolution 1-spp pass (preview_budget_ms)
   ChangeClass dirty = ChangeClass::none;
   int pass = 0;
@@ -81,9 +82,7 @@ struct ProgressiveRenderer::Impl {
     return scene->render.spp > 1 && scene->render.sampling == Sampling::adaptive;
   }
   // Samples per pixel the cache stands for (adaptive: per refined pixel, once refined).
-  int cached_spp() const {
-    return cache.refined.spp > 0 ? cache.refined.spp : cache.samples();
-  }
+  int cached_spp() const { return cache.refined.spp > 0 ? cache.refined.spp : cache.samples(); }
   bool converged_state() const {
     return dirty == ChangeClass::none && level == options.preview_levels &&
            cached_spp() >= scene->render.spp;
@@ -98,7 +97,7 @@ void ProgressiveRenderer::Impl::run() {
       std::unique_lock<std::mutex> lock(mutex);
       wake.wait(lock, [&] {
         return stop || pending != nullptr || terms != worker_terms ||
-               (scene != nullptr && !converged_state());
+               (!paused && scene != nullptr && !converged_state());
       });
       if (stop) return;
     }
@@ -243,9 +242,8 @@ bool ProgressiveRenderer::Impl::refine() {
     std::lock_guard<std::mutex> lock(publish_mutex);
     centres = published;
   }
-  std::vector<std::uint32_t> pixels =
-      choose_refined_pixels(cache, centres->images.total, scene->render.aa_threshold, 0,
-                            cache.height);
+  std::vector<std::uint32_t> pixels = choose_refined_pixels(
+      cache, centres->images.total, scene->render.aa_threshold, 0, cache.height);
   return trace_refined_samples(cache, ctx, std::move(pixels), scene->render.spp);
 }
 
@@ -291,18 +289,34 @@ ProgressiveRenderer::~ProgressiveRenderer() {
   m_impl->worker.join();
 }
 
-void ProgressiveRenderer::set_scene(const Scene& scene) {
+std::uint64_t ProgressiveRenderer::set_scene(const Scene& scene) {
   auto copy = std::make_shared<const Scene>(scene);
+  std::uint64_t generation;
   {
     std::lock_guard<std::mutex> lock(m_impl->mutex);
+    const bool was_paused = m_impl->paused;
+    m_impl->paused = false;
     if (m_impl->last_set != nullptr && !diff_scenes(*m_impl->last_set, *copy).any) {
-      return;
+      generation = m_impl->generation;
+      if (!was_paused) return generation;
+      m_impl->cancel.store(false);  // pause()'s; the worker goes on with the same scene
+    } else {
+      m_impl->last_set = copy;
+      m_impl->pending = std::move(copy);
+      generation = ++m_impl->generation;
+      m_impl->changed_at = Clock::now();
+      m_impl->cancel.store(true);  // work in flight is for an older scene
     }
-    m_impl->last_set = copy;
-    m_impl->pending = std::move(copy);
-    ++m_impl->generation;
-    m_impl->changed_at = Clock::now();
-    m_impl->cancel.store(true);  // work in flight is for an older scene
+  }
+  m_impl->wake.notify_all();  // also resumes a paused worker on the same scene
+  return generation;
+}
+
+void ProgressiveRenderer::pause() {
+  {
+    std::lock_guard<std::mutex> lock(m_impl->mutex);
+    m_impl->paused = true;
+    m_impl->cancel.store(true);
   }
   m_impl->wake.notify_all();
 }

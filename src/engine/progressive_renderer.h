@@ -51,7 +51,12 @@ class ProgressiveRenderer {
   ProgressiveRenderer& operator=(const ProgressiveRenderer&) = delete;
 
   // Hands the engine a new version of the document. Cheap: copies the scene and wakes the worker.
-  void set_scene(const Scene& scene);
+  // Returns the generation its frames will carry (the current one when nothing changed).
+  std::uint64_t set_scene(const Scene& scene);
+  // Cancels the pass in flight and computes nothing more until the next set_scene() (even one
+  // with the same scene), keeping the scene, the BVH and the caches: the editor pauses the ray
+  // tracer while the raster path draws a drag, so the two do not share the cores.
+  void pause();
   // Whether the four term images are published (the editor turns this on for the term views).
   void set_terms(bool terms);
 
