@@ -60,8 +60,7 @@ void draw_help_window(App& app) {
   ImGui::TextUnformatted("Renderer (View & Quality panel)");
   ImGui::BulletText("Ray traced: exact, refined to the scene's spp");
   ImGui::BulletText("Raster (GLSL): one sample per pixel, hard shadows from shadow maps");
-  ImGui::BulletText(
-      "Automatic: raster while the camera or a light is dragged, ray traced when still");
+  ImGui::BulletText("Automatic: raster during drags if measured no slower, ray traced when still");
   ImGui::BulletText(
       "Per vertex (Gouraud) against per pixel: lower the teapot tessellation to see it break");
   ImGui::BulletText("A/B: ray traced | raster, per pixel | per vertex, with the heat map");

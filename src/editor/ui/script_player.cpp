@@ -37,6 +37,12 @@ std::string stats_text(App& app) {
   // difference the heat map scales to.
   std::string line = text;
   line += app.viewport.shown_raster_a() ? " renderer=gl" : " renderer=cpu";
+  if (app.view.renderer == RendererChoice::automatic) {
+    const Viewport::AutomaticReport r = app.viewport.automatic_report();
+    std::snprintf(text, sizeof text, " auto_drag=%s auto_raster_ms=%.2f auto_ray_traced_ms=%.2f",
+                  r.raster ? "gl" : "cpu", r.raster_ms, r.ray_traced_ms);
+    line += text;
+  }
   if (app.view.mode == ViewMode::ab) {
     std::snprintf(text, sizeof text, " b_renderer=%s ab_max_difference=%.4g",
                   app.viewport.shown_raster_b() ? "gl" : "cpu", app.viewport.max_difference());

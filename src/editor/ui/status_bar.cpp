@@ -59,6 +59,17 @@ void draw_status_bar(App& app, ImVec2 pos, ImVec2 size) {
       ImGui::Text("| B: ray traced %d/%d spp", b->info.spp, b->info.target_spp);
     }
   }
+  if (app.view.renderer == RendererChoice::automatic) {
+    // Which renderer draws the next drag, and the measured frame times behind the choice.
+    const Viewport::AutomaticReport r = app.viewport.automatic_report();
+    ImGui::SameLine();
+    if (r.raster_ms < 0.0 || r.ray_traced_ms < 0.0) {
+      ImGui::TextDisabled("| auto: drags raster (timing it)");
+    } else {
+      ImGui::TextDisabled("| auto: drags %s (raster %.1f ms, ray traced %.1f ms)",
+                          r.raster ? "raster" : "ray traced", r.raster_ms, r.ray_traced_ms);
+    }
+  }
   ImGui::SameLine();
   const LatencyProbe& latency = app.viewport.latency();
   ImGui::TextDisabled("| UI %.1f ms (max %.1f) | edit->image %.0f ms, full res %.0f ms",

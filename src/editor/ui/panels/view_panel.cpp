@@ -159,7 +159,9 @@ void draw_renderer(App& app) {
   }
   ImGui::RadioButton("Automatic", &renderer, static_cast<int>(RendererChoice::automatic));
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("raster while the camera or a light is dragged, ray traced when still");
+    ImGui::SetTooltip(
+        "raster while the camera or a light is dragged, where it measured no slower than the\n"
+        "ray tracer (status bar: the two frame times); ray traced when still");
   }
   view.renderer = static_cast<RendererChoice>(renderer);
   if (app.viewport.raster_unavailable()) {

@@ -65,11 +65,22 @@ void Viewport::upload_frames(double now_s) {
     return !shown_raster ||
            (frame.info.width == m_render_width && frame.info.height == m_render_height);
   };
+  // An A frame from before the raster path drew (a paused ray tracer's) is not the document's.
+  auto current_a = [&](const RenderedFrame& frame) {
+    return !m_shown_raster_a || frame.info.generation >= m_handover_generation;
+  };
   bool new_a = false, new_b = false;
   if (m_a && !m_sides.a.raster) {
     if (std::shared_ptr<const RenderedFrame> a = m_a->latest();
-        a && a != m_frame_a && takes(*a, m_shown_raster_a)) {
+        a && a != m_frame_a && takes(*a, m_shown_raster_a) && current_a(*a)) {
       upload(*a, false);
+      // A full-size re-trace at one sample per pixel: the ray tracer's cost of a drag's frame,
+      // what Automatic weighs the raster frame against.
+      const FrameInfo& info = a->info;
+      if (info.cause == ChangeClass::full && info.spp == 1 && info.rays > 0 &&
+          info.width == m_render_width && info.height == m_render_height) {
+        m_automatic.ray_traced_frame(m_traced_setup, info.pass_ms);
+      }
       m_frame_a = std::move(a);
       m_shown_raster_a = false;
       new_a = true;
@@ -125,6 +136,7 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
   const bool ab = view.mode == ViewMode::ab;
   const std::uint64_t snapshot_revision =
       snapshot != nullptr ? snapshot->revision + 1 : 0;  // 0: none
+  m_setup = drag_setup(document, width, height, terms, ab, view.raster, m_drag_light >= 0);
   AbSides sides{{raster_effective(view, now_s), view.raster.shading}, {}};
   if (ab) sides = ab_sides(view.ab_source, sides.a.raster, view.raster.shading);
   if ((sides.a.raster || sides.b.raster) && !raster_available()) {
@@ -181,7 +193,11 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
       m_diffuse = GlTexture();
       m_specular = GlTexture();
     }
-    if (sides.a.raster) {
+    if (sides.a.raster && view.renderer == RendererChoice::automatic && m_a) {
+      // A drag drawn by the raster path: the ray tracer waits for its end with its scene, BVH
+      // and caches kept, instead of sharing the cores meanwhile.
+      m_a->pause();
+    } else if (sides.a.raster) {
       m_a.reset();  // cancels and joins its worker: the raster path draws A
     } else {
       if (!m_a) {
@@ -189,7 +205,10 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
       } else if (terms != m_pushed_terms || !m_pushed_any) {
         m_a->set_terms(terms);
       }
-      m_a->set_scene(pair.a);
+      const std::uint64_t generation = m_a->set_scene(pair.a);
+      // Taking over from the raster path: frames of older generations show the scene before it.
+      if (m_shown_raster_a) m_handover_generation = generation;
+      m_traced_setup = m_setup;
     }
     if (ab && !sides.b.raster) {
       if (!m_b) m_b = make_cpu_renderer(false);

@@ -16,6 +16,7 @@
 #include "editor/gl/render_target.h"
 #include "editor/model/measure/exposure_histogram.h"
 #include "editor/model/view/ab_compare.h"
+#include "editor/model/view/automatic_choice.h"
 #include "editor/model/view/view_settings.h"
 #include "engine/progressive_renderer.h"
 
@@ -83,6 +84,13 @@ class Viewport {
   // when it runs.
   std::string take_raster_notice();
   bool raster_unavailable() const { return m_raster_failed; }
+  // RendererChoice::automatic's figures for a drag of the current setup (automatic_choice.h):
+  // which renderer it takes and the two frame times it compares (ms, -1 when not measured).
+  struct AutomaticReport {
+    bool raster = true;
+    double raster_ms = -1.0, ray_traced_ms = -1.0;
+  };
+  AutomaticReport automatic_report() const;
   const LatencyProbe& latency() const { return m_latency; }
   float max_difference() const { return m_max_difference; }
   // Counts texture uploads: a new value means a new image reached the screen.
@@ -126,7 +134,8 @@ class Viewport {
                    bool terms, bool ab, double now_s);
   static void reset_gl_state();  // what the display shader and ImGui expect after a raster pass
 
-  std::unique_ptr<ProgressiveRenderer> m_a;  // null while the raster path draws the A side
+  // Null while the raster path draws the A side, but paused during an Automatic drag.
+  std::unique_ptr<ProgressiveRenderer> m_a;
   std::unique_ptr<ProgressiveRenderer> m_b;  // B side of the A/B view when the ray tracer draws it
   std::shared_ptr<const RenderedFrame> m_frame_a, m_frame_b;
   std::shared_ptr<const RenderedFrame> m_image_a, m_image_b;  // the newest with a total image
@@ -169,6 +178,13 @@ class Viewport {
     bool same_setup(const RasterKey& o) const;
   };
   RasterKey m_raster_key;
+  // Automatic's measurements: m_setup is the setup of the newest sync (what a drag now would
+  // draw), m_traced_setup what the A side's ray tracer was last handed.
+  AutomaticChoice m_automatic;
+  DragSetup m_setup, m_traced_setup;
+  // The generation of the scene handed to the ray tracer when it took A over from the raster
+  // path: its older frames (a paused renderer's) are not shown.
+  std::uint64_t m_handover_generation = 0;
   bool m_raster_shown = false;  // m_raster_key describes frames on screen
   // render() threw for m_raster_key (too many lights, shadow maps too large, a GL error): the
   // ray tracer draws; the raster path is tried again when the setup changes (same_setup), not
