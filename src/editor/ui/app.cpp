@@ -271,6 +271,7 @@ void run_frame(App& app) {
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   replay_key_taps(app);
+  replay_script_mouse(app);
   ImGui::NewFrame();
 
   app.notices.expire(frame_start);

@@ -116,6 +116,15 @@ struct App {
   std::vector<int> taps_down;         // taps shown to ImGui as held during this frame
   ImVec2 cursor_position;             // the cursor as of the last event (window pixels)
   ImVec2 press_position[3];           // where each mouse button last went down (window pixels)
+  // The mouse a script's `mouse` lines hold (script.h, MouseAction): once a script has used it,
+  // it stands in for the real one. x, y: fractions of the viewport image.
+  struct ScriptMouse {
+    bool active = false, down = false;
+    bool shown_down = false;  // what ImGui was last shown
+    int button = 0;
+    float x = 0.5f, y = 0.5f;
+  };
+  ScriptMouse script_mouse;
   FrameTimes frame_times;
   BackgroundPriority background;  // render and export threads below the UI (created on it)
   double background_checked_s = -1.0;
@@ -179,6 +188,8 @@ void snapshot_and_compare(App& app);
 void install_input_callbacks(GLFWwindow* window);
 // Between the backend's NewFrame and ImGui::NewFrame: shows this frame's taps as held keys.
 void replay_key_taps(App& app);
+// Also there: a script's mouse (App::script_mouse) in place of the real one.
+void replay_script_mouse(App& app);
 void handle_shortcuts(App& app);
 // Closes open menus, combo lists and other popups, but not a modal question (Esc, captures).
 void close_menus();

@@ -130,6 +130,21 @@ class ScriptPlayer::Host : public ScriptHost {
     std::fflush(stdout);
     return LineResult::go_on();
   }
+  LineResult mouse(const MouseAction& a) override {
+    App::ScriptMouse& m = m_app.script_mouse;
+    m.active = true;
+    if (a.verb == MouseAction::Verb::release) {
+      m.down = false;
+    } else {
+      m.x = a.x;
+      m.y = a.y;
+      if (a.verb == MouseAction::Verb::press) {
+        m.down = true;
+        m.button = a.button;
+      }
+    }
+    return hold(Waiting::sleep, m_now);  // the next frame sees it
+  }
   LineResult sleep(const SleepAction& a) override {
     return hold(Waiting::sleep, m_now + a.seconds);
   }

@@ -75,6 +75,18 @@ void install_input_callbacks(GLFWwindow* window) {
   glfwSetCursorPosCallback(window, on_cursor);  // ImGui 1.86's backend installs none
 }
 
+void replay_script_mouse(App& app) {
+  App::ScriptMouse& m = app.script_mouse;
+  if (!m.active) return;
+  ImGuiIO& io = ImGui::GetIO();
+  const ImVec2 p = app.viewport.image_point(m.x, m.y);
+  if (m.down && !m.shown_down) app.press_position[m.button] = p;  // as on_mouse_button does
+  io.MousePos = p;
+  for (bool& down : io.MouseDown) down = false;
+  io.MouseDown[m.button] = m.down;
+  m.shown_down = m.down;
+}
+
 void replay_key_taps(App& app) {
   ImGuiIO& io = ImGui::GetIO();
   for (int key : app.taps_down) {

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "editor/e2e/editor_process.h"
 #include "io/image/image_io.h"
@@ -155,6 +156,49 @@ TEST_F(RasterE2E, AbComparisonsAndGouraudOnACoarseTeapot) {
   // The specular highlight: per pixel reaches its peak inside the coarse triangles.
   EXPECT_GT(brightest(pixel), 0);
   EXPECT_GE(brightest(pixel), brightest(vertex));
+}
+
+// Automatic (automatic_choice.h) through a real orbit drag made with `mouse` lines: the first drag
+// goes to the raster path while it is being timed; when it ends the ray tracer takes over the
+// still image and is timed too; a second drag then goes to whichever measured faster, as the
+// `stats` line says (auto_drag=gl when auto_raster_ms <= auto_ray_traced_ms).
+TEST_F(RasterE2E, AutomaticDrawsDragsWithTheRendererMeasuredFaster) {
+  const std::string drag =
+      "mouse press 0.5 0.5\nmouse move 0.53 0.5\nmouse move 0.56 0.5\nmouse move 0.59 0.5\n"
+      "mouse move 0.62 0.5\nstats\nmouse release\nwait\nstats\n";
+  const EditorRun r = run_gold("renderer auto\nwait\nscreenshot before.png viewport\n" + drag +
+                               "screenshot after.png viewport\n" + drag + "quit\n");
+  if (r.status == -1) GTEST_SKIP() << "no xvfb-run";
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::vector<std::string> stats;
+  for (std::size_t at = r.out.find("stats:"); at != std::string::npos;
+       at = r.out.find("stats:", at + 1)) {
+    stats.push_back(r.out.substr(at, r.out.find('\n', at) - at));
+  }
+  ASSERT_EQ(stats.size(), 4u) << r.out;
+  // First drag: drawn by the raster path, which timed its frames (the first not counted).
+  EXPECT_NE(stats[0].find(" renderer=gl"), std::string::npos) << stats[0];
+  EXPECT_GT(stats_value(stats[0], "auto_raster_ms"), 0.0) << stats[0];
+  // Still again: the ray tracer's converged image, and its full-size re-trace timed.
+  EXPECT_NE(stats[1].find(" renderer=cpu"), std::string::npos) << stats[1];
+  const double raster_ms = stats_value(stats[1], "auto_raster_ms");
+  const double traced_ms = stats_value(stats[1], "auto_ray_traced_ms");
+  ASSERT_GT(raster_ms, 0.0) << stats[1];
+  ASSERT_GT(traced_ms, 0.0) << stats[1];
+  const bool raster_faster = raster_ms <= traced_ms;
+  EXPECT_NE(stats[1].find(raster_faster ? "auto_drag=gl" : "auto_drag=cpu"), std::string::npos)
+      << stats[1];
+  // Second drag: the renderer that measured faster draws it.
+  EXPECT_NE(stats[2].find(raster_faster ? " renderer=gl" : " renderer=cpu"), std::string::npos)
+      << stats[1] << "\n"
+      << stats[2];
+  EXPECT_NE(stats[3].find(" renderer=cpu"), std::string::npos) << stats[3];
+  // The drag moved the camera: the still images before and after differ.
+  const Png8 before = png("before.png"), after = png("after.png");
+  ASSERT_EQ(before.rgb.size(), after.rgb.size());
+  std::size_t changed = 0;
+  for (std::size_t i = 0; i < before.rgb.size(); ++i) changed += before.rgb[i] != after.rgb[i];
+  EXPECT_GT(changed, before.rgb.size() / 50);
 }
 
 }  // namespace

@@ -259,6 +259,34 @@ TEST(Script, BadRendererAndRasterValuesNameTheLine) {
   expect_error_on_line("view ab gl\n", 1, "'snapshot', 'cpu-gl' or 'pixel-vertex'");
 }
 
+TEST(Script, ParsesMouseGestures) {
+  const Script s = parse_script(
+      "mouse press 0.5 0.25\nmouse press 0 1 right\nmouse move 1 0\nmouse release\n", "m.txt");
+  ASSERT_EQ(s.lines.size(), 4u);
+  const auto& press = std::get<MouseAction>(s.lines[0].action);
+  EXPECT_EQ(press.verb, MouseAction::Verb::press);
+  EXPECT_EQ(press.x, 0.5f);
+  EXPECT_EQ(press.y, 0.25f);
+  EXPECT_EQ(press.button, 0);  // left unless named
+  EXPECT_EQ(std::get<MouseAction>(s.lines[1].action).button, 1);
+  const auto& move = std::get<MouseAction>(s.lines[2].action);
+  EXPECT_EQ(move.verb, MouseAction::Verb::move);
+  EXPECT_EQ(move.x, 1.0f);
+  EXPECT_EQ(move.y, 0.0f);
+  EXPECT_EQ(std::get<MouseAction>(s.lines[3].action).verb, MouseAction::Verb::release);
+}
+
+TEST(Script, BadMouseLinesNameTheLine) {
+  expect_error_on_line("mouse\n", 1, "missing mouse action");
+  expect_error_on_line("wait\nmouse click 0.5 0.5\n", 2, "mouse must be 'press X Y");
+  expect_error_on_line("mouse press 0.5\n", 1, "missing y");
+  expect_error_on_line("mouse move 1.5 0.5\n", 1, "fractions of the viewport image, 0..1");
+  expect_error_on_line("mouse move 0.5 nan\n", 1, "fractions of the viewport image, 0..1");
+  expect_error_on_line("mouse press 0.5 0.5 thumb\n", 1, "left, right or middle");
+  expect_error_on_line("mouse move 0.5 0.5 left\n", 1, "unexpected 'left'");
+  expect_error_on_line("mouse release now\n", 1, "unexpected 'now'");
+}
+
 TEST(Script, RendererAndRasterLinesSetTheViewSettings) {
   RecordingHost host(test::two_sphere_scene());
   std::string errors;

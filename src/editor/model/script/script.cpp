@@ -220,6 +220,40 @@ ScriptAction parse_inspect(Tokens& t) {
 // ---- The GLSL path (issue 12): renderer choice and raster knobs ----
 // `renderer cpu|gl|auto`, `shading pixel|vertex`, `shadow-map SIZE`, `shadow-bias TEXELS`;
 // false when verb is none of them.
+MouseAction parse_mouse(Tokens& t) {
+  MouseAction a;
+  const std::string& what = t.word("mouse action");
+  if (what == "release") {
+    a.verb = MouseAction::Verb::release;
+    return a;
+  }
+  if (what != "press" && what != "move") {
+    throw std::runtime_error(
+        "mouse must be 'press X Y [left|right|middle]', 'move X Y' or "
+        "'release', got '" +
+        what + "'");
+  }
+  a.verb = what == "press" ? MouseAction::Verb::press : MouseAction::Verb::move;
+  a.x = t.number("x (0..1 of the viewport image)");
+  a.y = t.number("y (0..1 of the viewport image)");
+  if (!(a.x >= 0.0f && a.x <= 1.0f && a.y >= 0.0f && a.y <= 1.0f)) {
+    throw std::runtime_error("mouse x and y are fractions of the viewport image, 0..1");
+  }
+  if (a.verb == MouseAction::Verb::press && !t.done()) {
+    const std::string& button = t.word("mouse button");
+    if (button == "left") {
+      a.button = 0;
+    } else if (button == "right") {
+      a.button = 1;
+    } else if (button == "middle") {
+      a.button = 2;
+    } else {
+      throw std::runtime_error("mouse button must be left, right or middle, got '" + button + "'");
+    }
+  }
+  return a;
+}
+
 bool parse_raster_line(Tokens& t, const std::string& verb, ScriptAction& out) {
   if (verb == "renderer") {
     RendererAction a;
@@ -357,6 +391,7 @@ ScriptAction parse_line(Tokens& t) {
         "quality must be measure, start, cancel, 'csv PATH' or 'raster PATH', got '" + what + "'");
   }
   if (ScriptAction raster; parse_raster_line(t, verb, raster)) return raster;
+  if (verb == "mouse") return parse_mouse(t);
   // Issue 14: the memory report.
   if (verb == "memory") return MemoryAction{};
   // Issue 12: the GLSL path.

@@ -101,12 +101,24 @@ struct ShadowBiasAction {
   float texels = 1.5f;
 };
 
+// `mouse press X Y [left|right|middle]`, `mouse move X Y`, `mouse release`: the viewport gestures a
+// user makes with the mouse, for scripts and end-to-end tests (Automatic's drags). X and Y are
+// fractions 0..1 of the viewport's image (its first pane), x to the right, y down. press holds the
+// button down at (X, Y); move takes the cursor there with the button still held; release lets go.
+// Each line takes effect at the next frame. Without a display the lines do nothing.
+struct MouseAction {
+  enum class Verb { press, move, release };
+  Verb verb = Verb::press;
+  float x = 0.5f, y = 0.5f;
+  int button = 0;  // 0 left (orbit), 1 right, 2 middle
+};
+
 using ScriptAction =
     std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction, ViewAction,
                  ExposureAction, SelectAction, StatsAction, SleepAction, AnimateAction, QuitAction,
                  QualityAction, InspectAction, ClippedOverlayAction, SnapshotAction, MemoryAction,
-                 ExportGlslAction, RendererAction, ShadingAction, ShadowMapAction,
-                 ShadowBiasAction>;
+                 ExportGlslAction, RendererAction, ShadingAction, ShadowMapAction, ShadowBiasAction,
+                 MouseAction>;
 
 struct ScriptLine {
   int line = 0;  // 1-based line number in the file

@@ -130,6 +130,7 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
             [&](const QualityAction& a) { return host.quality(a, where); },
             [&](const InspectAction& a) { return inspect(host, a, where); },
             [&](const MemoryAction&) { return host.memory(); },
+            [&](const MouseAction& a) { return host.mouse(a); },
             [&](const ExportGlslAction& a) { return export_glsl_line(host, a, where); },
             [&](const RendererAction& a) {
               host.view().renderer = a.choice;

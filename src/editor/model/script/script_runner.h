@@ -49,6 +49,8 @@ class ScriptHost {
   // Prints the `memory` line (memory_report.h) on stdout; this default knows no window (frames,
   // textures and swatches read 0).
   virtual LineResult memory();
+  // A viewport gesture (script.h, MouseAction); nothing without a display.
+  virtual LineResult mouse(const MouseAction&) { return LineResult::go_on(); }
 
   // The snapshot `snapshot` takes and `view ab snapshot` compares with. Kept here by default
   // (headless runs, tests); the editor keeps it in its App so the panel's button shares it.

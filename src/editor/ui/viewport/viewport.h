@@ -69,6 +69,12 @@ class Viewport {
   // with the raster path meanwhile.
   bool moving_gesture(double now_s) const;
 
+  // The screen point at fractions (fx, fy) of the image pane (the first), as of the last draw.
+  ImVec2 image_point(float fx, float fy) const {
+    return ImVec2(m_panes[0].min.x + fx * m_panes[0].size.x,
+                  m_panes[0].min.y + fy * m_panes[0].size.y);
+  }
+
   const RenderedFrame* shown_frame() const { return m_frame_a.get(); }
   const RenderedFrame* shown_frame_b() const { return m_frame_b.get(); }
   // Which renderer drew the frame shown on each side: true for the raster path.
