@@ -39,8 +39,10 @@ std::string stats_text(App& app) {
   line += app.viewport.shown_raster_a() ? " renderer=gl" : " renderer=cpu";
   if (app.view.renderer == RendererChoice::automatic) {
     const Viewport::AutomaticReport r = app.viewport.automatic_report();
-    std::snprintf(text, sizeof text, " auto_drag=%s auto_raster_ms=%.2f auto_ray_traced_ms=%.2f",
-                  r.raster ? "gl" : "cpu", r.raster_ms, r.ray_traced_ms);
+    std::snprintf(text, sizeof text,
+                  " auto_drag=%s auto_raster_ms=%.2f auto_ray_traced_ms=%.2f "
+                  "auto_ray_traced_pass_ms=%.2f",
+                  r.raster ? "gl" : "cpu", r.raster_ms, r.ray_traced_ms, r.ray_traced_pass_ms);
     line += text;
   }
   if (app.view.mode == ViewMode::ab) {

@@ -63,11 +63,17 @@ void draw_status_bar(App& app, ImVec2 pos, ImVec2 size) {
     // Which renderer draws the next drag, and the measured frame times behind the choice.
     const Viewport::AutomaticReport r = app.viewport.automatic_report();
     ImGui::SameLine();
-    if (r.raster_ms < 0.0 || r.ray_traced_ms < 0.0) {
+    const char* who = r.raster ? "raster" : "ray traced";
+    if (r.raster_ms < 0.0) {
       ImGui::TextDisabled("| auto: drags raster (timing it)");
+    } else if (r.ray_traced_ms >= 0.0) {
+      ImGui::TextDisabled("| auto: drags %s (image after %.0f ms raster, %.0f ms ray traced)", who,
+                          r.raster_ms, r.ray_traced_ms);
+    } else if (r.ray_traced_pass_ms >= 0.0) {
+      ImGui::TextDisabled("| auto: drags %s (image after %.0f ms raster, ray traced >= %.0f ms%s)",
+                          who, r.raster_ms, r.ray_traced_pass_ms, r.raster ? "" : ": timing it");
     } else {
-      ImGui::TextDisabled("| auto: drags %s (raster %.1f ms, ray traced %.1f ms)",
-                          r.raster ? "raster" : "ray traced", r.raster_ms, r.ray_traced_ms);
+      ImGui::TextDisabled("| auto: drags %s (image after %.0f ms raster)", who, r.raster_ms);
     }
   }
   ImGui::SameLine();

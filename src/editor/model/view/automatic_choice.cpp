@@ -7,8 +7,12 @@ bool DragSetup::same_image(const DragSetup& o) const {
          shadows == o.shadows && lights == o.lights && primitives == o.primitives;
 }
 
+bool DragSetup::same_drag(const DragSetup& o) const {
+  return same_image(o) && light_drag == o.light_drag;
+}
+
 bool DragSetup::same_raster(const DragSetup& o) const {
-  return same_image(o) && raster == o.raster && light_drag == o.light_drag;
+  return same_drag(o) && raster == o.raster;
 }
 
 DragSetup drag_setup(const Scene& scene, int width, int height, bool terms, bool ab,
@@ -28,47 +32,64 @@ DragSetup drag_setup(const Scene& scene, int width, int height, bool terms, bool
   return s;
 }
 
-void AutomaticChoice::raster_frame(const DragSetup& setup, double ms) {
-  if (!setup.same_raster(m_raster_setup)) {
-    m_raster_setup = setup;
-    m_raster_frames = 0;
-    m_raster_ms = -1.0;
-  }
-  if (++m_raster_frames > 1) m_raster_ms = ms;
+bool AutomaticChoice::decided_for(const DragSetup& setup) const {
+  return m_decided && setup.same_raster(m_decided_setup);
 }
 
-void AutomaticChoice::ray_traced_frame(const DragSetup& setup, double ms) {
-  if (!setup.same_image(m_traced_setup)) {
-    m_traced_setup = setup;
-    m_traced_frames = 0;
-    m_traced_ms = -1.0;
-  }
-  if (++m_traced_frames > 1) m_traced_ms = ms;
+void AutomaticChoice::drag_image(const DragSetup& setup, bool raster, double ms) {
+  if (decided_for(setup)) return;  // keep the figures it was decided on
+  Figure& f = raster ? m_raster : m_traced;
+  const bool same = raster ? setup.same_raster(f.setup) : setup.same_drag(f.setup);
+  if (!same) f = Figure{setup, 0, -1.0};
+  if (++f.count > 1 || !raster) f.ms = ms;
+}
+
+void AutomaticChoice::ray_traced_pass(const DragSetup& setup, double ms) {
+  if (decided_for(setup)) return;
+  if (!setup.same_image(m_pass.setup)) m_pass = Figure{setup, 0, -1.0};
+  if (++m_pass.count > 1) m_pass.ms = ms;
 }
 
 bool AutomaticChoice::would_raster(const DragSetup& setup) const {
-  if (m_decided && setup.same_raster(m_decided_setup)) return m_decided_raster;
-  const double raster = raster_ms(setup), traced = ray_traced_ms(setup);
-  return raster < 0.0 || traced < 0.0 || raster <= traced;
+  if (decided_for(setup)) return m_decided_raster;
+  const double raster = raster_ms(setup);
+  const double traced = ray_traced_ms(setup);
+  const double pass = ray_traced_pass_ms(setup);
+  if (raster < 0.0) return true;  // the raster path is timed on a drag first
+  if (traced >= 0.0) return raster <= traced;
+  if (pass < 0.0) return true;  // nothing known of the ray tracer yet
+  return raster <= pass;        // else one drag to time the ray tracer
 }
 
 bool AutomaticChoice::raster_for(const DragSetup& setup) {
   const bool raster = would_raster(setup);
-  if (!(m_decided && setup.same_raster(m_decided_setup)) && raster_ms(setup) >= 0.0 &&
-      ray_traced_ms(setup) >= 0.0) {
-    m_decided = true;
-    m_decided_setup = setup;
-    m_decided_raster = raster;
+  if (!decided_for(setup)) {
+    const double r = raster_ms(setup), t = ray_traced_ms(setup), p = ray_traced_pass_ms(setup);
+    if (r >= 0.0 && (t >= 0.0 || (p >= 0.0 && r <= p))) {
+      m_decided = true;
+      m_decided_setup = setup;
+      m_decided_raster = raster;
+      m_decided_ms[0] = r;
+      m_decided_ms[1] = t;
+      m_decided_ms[2] = p;
+    }
   }
   return raster;
 }
 
 double AutomaticChoice::raster_ms(const DragSetup& setup) const {
-  return setup.same_raster(m_raster_setup) ? m_raster_ms : -1.0;
+  if (decided_for(setup)) return m_decided_ms[0];
+  return setup.same_raster(m_raster.setup) ? m_raster.ms : -1.0;
 }
 
 double AutomaticChoice::ray_traced_ms(const DragSetup& setup) const {
-  return setup.same_image(m_traced_setup) ? m_traced_ms : -1.0;
+  if (decided_for(setup)) return m_decided_ms[1];
+  return setup.same_drag(m_traced.setup) ? m_traced.ms : -1.0;
+}
+
+double AutomaticChoice::ray_traced_pass_ms(const DragSetup& setup) const {
+  if (decided_for(setup)) return m_decided_ms[2];
+  return setup.same_image(m_pass.setup) ? m_pass.ms : -1.0;
 }
 
 }  // namespace gloss

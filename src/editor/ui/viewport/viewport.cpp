@@ -74,12 +74,12 @@ void Viewport::upload_frames(double now_s) {
     if (std::shared_ptr<const RenderedFrame> a = m_a->latest();
         a && a != m_frame_a && takes(*a, m_shown_raster_a) && current_a(*a)) {
       upload(*a, false);
-      // A full-size re-trace at one sample per pixel: the ray tracer's cost of a drag's frame,
-      // what Automatic weighs the raster frame against.
+      // A full-size re-trace at one sample per pixel: a lower bound of the ray tracer's delay
+      // in a drag, for Automatic (automatic_choice.h).
       const FrameInfo& info = a->info;
       if (info.cause == ChangeClass::full && info.spp == 1 && info.rays > 0 &&
           info.width == m_render_width && info.height == m_render_height) {
-        m_automatic.ray_traced_frame(m_traced_setup, info.pass_ms);
+        m_automatic.ray_traced_pass(m_traced_setup, info.pass_ms);
       }
       m_frame_a = std::move(a);
       m_shown_raster_a = false;
@@ -120,6 +120,7 @@ void Viewport::frame_shown(double now_s) {
   }
   if (m_latency.pending_full_s >= 0.0) {
     m_latency.full_image_ms = (now_s - m_latency.edit_s) * 1000.0;
+    if (m_latency.drag) m_automatic.drag_image(m_setup, m_shown_raster_a, m_latency.full_image_ms);
     m_latency.pending_full_s = -1.0;
     m_latency.edit_s = -1.0;
   }
@@ -245,6 +246,7 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
     // edit has not published it yet: its newest frame is the generation before it.
     const std::shared_ptr<const RenderedFrame> newest = m_a ? m_a->latest() : nullptr;
     m_latency.edit_s = now_s;
+    m_latency.drag = moving_gesture(now_s);
     m_latency.generation = newest ? newest->info.generation : 0;
     m_latency.first_shown = false;
     m_latency.pending_first_s = m_latency.pending_full_s = -1.0;

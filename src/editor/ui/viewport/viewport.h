@@ -33,6 +33,7 @@ struct LatencyProbe {
   double full_image_ms = 0.0;     // edit -> first full-resolution frame on screen
   double pending_first_s = -1.0;  // upload time waiting for the swap that shows it
   double pending_full_s = -1.0;
+  bool drag = false;  // the edit came from a gesture that moves the camera or a light
 };
 
 // One pane of the viewport in screen coordinates (ImGui's, y down).
@@ -91,10 +92,11 @@ class Viewport {
   std::string take_raster_notice();
   bool raster_unavailable() const { return m_raster_failed; }
   // RendererChoice::automatic's figures for a drag of the current setup (automatic_choice.h):
-  // which renderer it takes and the two frame times it compares (ms, -1 when not measured).
+  // which renderer it takes, each renderer's edit -> full-size image delay in drags, and the
+  // ray tracer's re-trace at rest (ms, -1 when not measured).
   struct AutomaticReport {
     bool raster = true;
-    double raster_ms = -1.0, ray_traced_ms = -1.0;
+    double raster_ms = -1.0, ray_traced_ms = -1.0, ray_traced_pass_ms = -1.0;
   };
   AutomaticReport automatic_report() const;
   const LatencyProbe& latency() const { return m_latency; }

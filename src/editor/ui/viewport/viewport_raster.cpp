@@ -50,7 +50,7 @@ bool Viewport::raster_effective(const ViewSettings& view, double now_s) {
 
 Viewport::AutomaticReport Viewport::automatic_report() const {
   return {m_automatic.would_raster(m_setup), m_automatic.raster_ms(m_setup),
-          m_automatic.ray_traced_ms(m_setup)};
+          m_automatic.ray_traced_ms(m_setup), m_automatic.ray_traced_pass_ms(m_setup)};
 }
 
 std::string Viewport::take_raster_notice() {
@@ -84,8 +84,6 @@ bool Viewport::show_raster(const AbScenes& scenes, const AbSides& sides,
       a.shading = sides.a.shading;
       std::shared_ptr<const RenderedFrame> frame = m_raster->render(scenes.a, a, terms && !ab);
       reset_gl_state();
-      const RasterTiming& t = m_raster->timing();
-      m_automatic.raster_frame(m_setup, t.shadow_ms + t.draw_ms + t.readback_ms);
       upload(*frame, false);
       m_frame_a = m_image_a = std::move(frame);
       m_shown_raster_a = true;
