@@ -102,7 +102,12 @@ void ProgressiveRenderer::Impl::run() {
       if (stop) return;
     }
     take_inbox();
-    if (scene != nullptr) step();
+    bool paused_now;
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      paused_now = paused;  // a terms change while paused is taken in, not rendered
+    }
+    if (scene != nullptr && !paused_now) step();
   }
 }
 
@@ -299,7 +304,9 @@ std::uint64_t ProgressiveRenderer::set_scene(const Scene& scene) {
     if (m_impl->last_set != nullptr && !diff_scenes(*m_impl->last_set, *copy).any) {
       generation = m_impl->generation;
       if (!was_paused) return generation;
-      m_impl->cancel.store(false);  // pause()'s; the worker goes on with the same scene
+      // pause()'s cancel: the worker goes on with the same scene (a pending one resets it when
+      // taken in; resetting it now would let a pass for an older scene finish).
+      if (m_impl->pending == nullptr) m_impl->cancel.store(false);
     } else {
       m_impl->last_set = copy;
       m_impl->pending = std::move(copy);

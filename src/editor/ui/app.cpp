@@ -287,7 +287,10 @@ void run_frame(App& app) {
   poll_exports(app);
   if (app.script) {
     app.script->step(app);
-    if (app.script->finished() && !app.quit) app.script.reset();  // the editor stays open
+    if (app.script->finished() && !app.quit) {
+      app.script.reset();                     // the editor stays open
+      app.script_mouse = App::ScriptMouse{};  // and the real mouse is the user's again
+    }
   }
   handle_shortcuts(app);
   animate_light(app, frame_start);

@@ -47,6 +47,9 @@ class EditorProcessTest : public ::testing::Test {
   EditorRun run_editor(const std::string& scene, const std::string& script_text,
                        bool with_display) {
     if (with_display && std::string(GLOSS_XVFB_RUN).empty()) return {};
+    for (const char* name : {"status.txt", "out.txt", "err.txt", "wrapper-err.txt"}) {
+      std::filesystem::remove(m_dir / name);  // a second run's files are its own
+    }
     std::ofstream(m_dir / "script.txt") << script_text;
     std::ofstream(m_dir / "run.sh") << "'" << GLOSS_EDITOR_PATH << "' '" << scene
                                     << "' --script script.txt > out.txt 2> err.txt\n"

@@ -94,6 +94,56 @@ TEST(AutomaticChoice, OtherwiseOneDragTimesTheRayTracerAndTheFasterWins) {
   }
 }
 
+// A light drag makes the ray tracer re-light, not re-trace: its pass at rest bounds nothing, so
+// the ray tracer is timed in a drag before raster is chosen.
+TEST(AutomaticChoice, ALightDragIsDecidedOnlyOnTheRayTracersDragDelay) {
+  AutomaticChoice choice;
+  DragSetup s = setup_1280();
+  s.light_drag = true;
+  choice.ray_traced_pass(s, 40.0);
+  choice.ray_traced_pass(s, 30.0);
+  EXPECT_TRUE(choice.raster_for(s));
+  choice.drag_image(s, true, 80.0);
+  choice.drag_image(s, true, 20.0);  // within the re-trace at rest, but that is no bound here
+  EXPECT_FALSE(choice.raster_for(s));
+  choice.drag_image(s, false, 12.0);  // re-lighting is quick
+  EXPECT_FALSE(choice.raster_for(s));
+  EXPECT_EQ(choice.ray_traced_ms(s), 12.0);
+}
+
+// Decisions are kept per setup: alternating camera and light drags re-times neither.
+TEST(AutomaticChoice, DecisionsOfSeveralSetupsAreKept) {
+  AutomaticChoice choice;
+  DragSetup camera = setup_1280();
+  DragSetup light = camera;
+  light.light_drag = true;
+  choice.ray_traced_pass(camera, 40.0);
+  choice.ray_traced_pass(camera, 30.0);
+  choice.drag_image(camera, true, 80.0);
+  choice.drag_image(camera, true, 20.0);
+  EXPECT_TRUE(choice.raster_for(camera));  // 20 <= 30: decided
+  choice.drag_image(light, true, 80.0);
+  choice.drag_image(light, true, 45.0);
+  choice.drag_image(light, false, 12.0);
+  EXPECT_FALSE(choice.raster_for(light));  // 45 > 12: decided
+  EXPECT_TRUE(choice.raster_for(camera));
+  EXPECT_EQ(choice.raster_ms(camera), 20.0);
+  EXPECT_FALSE(choice.raster_for(light));
+  EXPECT_EQ(choice.raster_ms(light), 45.0);
+}
+
+TEST(AutomaticChoice, ANewRayTracersFirstPassIsNotCounted) {
+  AutomaticChoice choice;
+  const DragSetup s = setup_1280();
+  choice.ray_traced_pass(s, 40.0);
+  choice.ray_traced_pass(s, 20.0);
+  choice.ray_tracer_restarted();
+  choice.ray_traced_pass(s, 90.0);  // cold
+  EXPECT_EQ(choice.ray_traced_pass_ms(s), 20.0);
+  choice.ray_traced_pass(s, 22.0);
+  EXPECT_EQ(choice.ray_traced_pass_ms(s), 22.0);
+}
+
 TEST(AutomaticChoice, ANewSetupIsMeasuredAfresh) {
   AutomaticChoice choice;
   DragSetup s = setup_1280();

@@ -217,9 +217,7 @@ ScriptAction parse_inspect(Tokens& t) {
   return a;
 }
 
-// ---- The GLSL path (issue 12): renderer choice and raster knobs ----
-// `renderer cpu|gl|auto`, `shading pixel|vertex`, `shadow-map SIZE`, `shadow-bias TEXELS`;
-// false when verb is none of them.
+// `mouse press X Y [left|right|middle]`, `mouse move X Y`, `mouse release` (script.h).
 MouseAction parse_mouse(Tokens& t) {
   MouseAction a;
   const std::string& what = t.word("mouse action");
@@ -254,6 +252,9 @@ MouseAction parse_mouse(Tokens& t) {
   return a;
 }
 
+// ---- The GLSL path (issue 12): renderer choice and raster knobs ----
+// `renderer cpu|gl|auto`, `shading pixel|vertex`, `shadow-map SIZE`, `shadow-bias TEXELS`;
+// false when verb is none of them.
 bool parse_raster_line(Tokens& t, const std::string& verb, ScriptAction& out) {
   if (verb == "renderer") {
     RendererAction a;

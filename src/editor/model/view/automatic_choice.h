@@ -7,12 +7,15 @@
 // ray tracer shares the cores with the UI.
 //
 // The figure compared is the viewport's edit -> full-size image delay during drags (the status
-// bar's "full res"), for each renderer. The ray tracer's full-size re-trace at rest is a lower
-// bound of its delay: a raster delay at or under it needs no further proof. Otherwise one drag
-// is given to the ray tracer to measure its delay, and the faster renderer takes the drags.
+// bar's "full res"), for each renderer. For a camera drag the ray tracer's full-size re-trace at
+// rest is a lower bound of its delay (each edit re-traces): a raster delay at or under it needs
+// no further proof. Otherwise, and always for a light drag (the ray tracer only re-lights, which
+// can be cheaper than a re-trace), one drag is given to the ray tracer to measure its delay, and
+// the faster renderer takes the drags.
 //
 // GL-free: the viewport reports the measurements (viewport.h) and asks here.
 #include <cstddef>
+#include <vector>
 
 #include "editor/model/view/raster_settings.h"
 #include "scene/scene.h"
@@ -48,6 +51,8 @@ class AutomaticChoice {
   // The ray tracer finished a full-size 1-spp re-trace of setup in ms (pass time). The first of
   // a setup is not counted: a new renderer's or a new size's first pass fills fresh caches.
   void ray_traced_pass(const DragSetup& setup, double ms);
+  // The viewport made a new ray tracer: its first pass is cold again.
+  void ray_tracer_restarted();
 
   // Whether a drag with setup goes to the raster path. Decided once per setup, on the first
   // figures that settle it (possibly within a drag: the ray tracer's timing drag ends on the
@@ -62,7 +67,14 @@ class AutomaticChoice {
   double ray_traced_pass_ms(const DragSetup& setup) const;  // its re-trace at rest
 
  private:
-  bool decided_for(const DragSetup& setup) const;
+  struct Decision {
+    DragSetup setup;
+    bool raster = true;
+    double raster_ms = -1.0, traced_ms = -1.0, pass_ms = -1.0;  // what it was decided on
+  };
+  // The decision for setup, or null. A few are kept (camera and light drags, a size or two), the
+  // oldest dropped first.
+  const Decision* decision(const DragSetup& setup) const;
   // Each figure with the setup it was measured for and how many were seen.
   struct Figure {
     DragSetup setup;
@@ -70,9 +82,7 @@ class AutomaticChoice {
     double ms = -1.0;
   };
   Figure m_raster, m_traced, m_pass;
-  DragSetup m_decided_setup;
-  bool m_decided = false, m_decided_raster = true;
-  double m_decided_ms[3] = {-1.0, -1.0, -1.0};  // raster, ray traced, pass: what it was decided on
+  std::vector<Decision> m_decisions;  // newest last
 };
 
 }  // namespace gloss

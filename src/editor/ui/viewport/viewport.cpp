@@ -120,7 +120,9 @@ void Viewport::frame_shown(double now_s) {
   }
   if (m_latency.pending_full_s >= 0.0) {
     m_latency.full_image_ms = (now_s - m_latency.edit_s) * 1000.0;
-    if (m_latency.drag) m_automatic.drag_image(m_setup, m_shown_raster_a, m_latency.full_image_ms);
+    if (m_latency.drag) {
+      m_automatic.drag_image(m_latency.setup, m_shown_raster_a, m_latency.full_image_ms);
+    }
     m_latency.pending_full_s = -1.0;
     m_latency.edit_s = -1.0;
   }
@@ -186,6 +188,7 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
                      : AbScenes{std::move(scene), Scene{}};
   pair.a.render.width = pair.b.render.width = width;  // the snapshot has its own size
   pair.a.render.height = pair.b.render.height = height;
+  std::uint64_t pushed_generation = 0;  // what the A side's ray tracer returned, 0: not handed
   if (changed) {
     if (!terms) {
       // Textures the view no longer shows: llvmpipe keeps each in RAM (12 B per pixel).
@@ -203,12 +206,15 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
     } else {
       if (!m_a) {
         m_a = make_cpu_renderer(terms);
-      } else if (terms != m_pushed_terms || !m_pushed_any) {
+        m_a_terms = terms;
+        m_automatic.ray_tracer_restarted();
+      } else if (terms != m_a_terms) {  // also a view switched while it was paused
         m_a->set_terms(terms);
+        m_a_terms = terms;
       }
-      const std::uint64_t generation = m_a->set_scene(pair.a);
+      pushed_generation = m_a->set_scene(pair.a);
       // Taking over from the raster path: frames of older generations show the scene before it.
-      if (m_shown_raster_a) m_handover_generation = generation;
+      if (m_shown_raster_a) m_handover_generation = pushed_generation;
       m_traced_setup = m_setup;
     }
     if (ab && !sides.b.raster) {
@@ -242,12 +248,16 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
     m_sides = sides;
   }
   if (new_edit) {
-    // now_s is the start of the frame in which the edit happened. A renderer just handed the
-    // edit has not published it yet: its newest frame is the generation before it.
+    // now_s is the start of the frame in which the edit happened. Frames of the generation the
+    // ray tracer was handed with it, or later, show it; without that, frames newer than its
+    // newest.
     const std::shared_ptr<const RenderedFrame> newest = m_a ? m_a->latest() : nullptr;
     m_latency.edit_s = now_s;
     m_latency.drag = moving_gesture(now_s);
-    m_latency.generation = newest ? newest->info.generation : 0;
+    m_latency.setup = m_setup;
+    m_latency.generation = pushed_generation > 0 ? pushed_generation - 1
+                           : newest              ? newest->info.generation
+                                                 : 0;
     m_latency.first_shown = false;
     m_latency.pending_first_s = m_latency.pending_full_s = -1.0;
   }

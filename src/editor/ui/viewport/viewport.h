@@ -34,6 +34,7 @@ struct LatencyProbe {
   double pending_first_s = -1.0;  // upload time waiting for the swap that shows it
   double pending_full_s = -1.0;
   bool drag = false;  // the edit came from a gesture that moves the camera or a light
+  DragSetup setup;    // the viewport's setup when the edit was made (automatic_choice.h)
 };
 
 // One pane of the viewport in screen coordinates (ImGui's, y down).
@@ -193,6 +194,7 @@ class Viewport {
   // The generation of the scene handed to the ray tracer when it took A over from the raster
   // path: its older frames (a paused renderer's) are not shown.
   std::uint64_t m_handover_generation = 0;
+  bool m_a_terms = false;       // what m_a was last told to publish (set_terms)
   bool m_raster_shown = false;  // m_raster_key describes frames on screen
   // render() threw for m_raster_key (too many lights, shadow maps too large, a GL error): the
   // ray tracer draws; the raster path is tried again when the setup changes (same_setup), not
