@@ -34,5 +34,5 @@ for renderer in cpu gl auto; do
   XDG_CONFIG_HOME=$out/config XDG_STATE_HOME=$out/state \
     xvfb-run -a -s "-screen 0 ${width}x${height}x24" "$build/src/editor/ui/gloss" --no-recovery \
     --window-width "$width" --window-height "$height" --script "$script" "$scene" |
-    sed -n 's/^stats: ui_frame_ms avg=\([0-9.]*\).*edit_to_first_image_ms=\([0-9.]*\) edit_to_full_image_ms=\([0-9.]*\) | pass=[0-9]* spp=[0-9/]* size=\([0-9x]*\).* renderer=\([a-z]*\)\(.*\)/  drag: edit->first image \2 ms, edit->full-size image \3 ms, UI frame avg \1 ms, \4, drawn by \5\6/p'
+    sed -n 's/^stats: ui_frame_ms avg=\([0-9.]*\).*edit_to_first_image_ms=\([0-9.]*\) edit_to_full_image_ms=\([0-9.]*\) | pass=[0-9]* spp=[0-9/]* size=\([0-9x]*\).* renderer=\([a-z]*\)\(.*\)/  drag: edit->first image \2 ms, edit->full-size image \3 ms, UI frame avg \1 ms, shown frame \4, drawn by \5\6/p'
 done
