@@ -4,7 +4,7 @@
 # scene with a generated script: for each of `renderer cpu`, `gl` and `auto`, two orbit drags of
 # 20 `mouse move` steps 50 ms apart, each followed by `stats` (edit_to_first_image_ms and
 # edit_to_full_image_ms of the drag's last step, the UI frame times) and, in Automatic, which
-# renderer it chose and the two frame times it compared.
+# renderer it chose and the figures it compared.
 #   scripts/measure_drag.sh [BUILD_DIR] [SCENE] [WINDOW_WIDTH WINDOW_HEIGHT]
 set -euo pipefail
 build=${1:-build}

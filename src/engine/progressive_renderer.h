@@ -57,7 +57,8 @@ class ProgressiveRenderer {
   // with the same scene), keeping the scene, the BVH and the caches: the editor pauses the ray
   // tracer while the raster path draws a drag, so the two do not share the cores.
   void pause();
-  // Whether the four term images are published (the editor turns this on for the term views).
+  // Whether the four term images are published (the editor turns this on for the term views);
+  // the same value again does nothing.
   void set_terms(bool terms);
 
   // The newest published frame, or null before the first. Never blocks on rendering; the frame

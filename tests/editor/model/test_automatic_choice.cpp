@@ -19,6 +19,15 @@ DragSetup setup_1280() {
   return s;
 }
 
+// The measurements before a decision: the ray tracer's cold then warm re-trace at rest (pass_ms
+// counted) and the raster path's first then second drag image (raster_ms counted).
+void time_both(AutomaticChoice& choice, const DragSetup& s, double pass_ms, double raster_ms) {
+  choice.ray_traced_pass(s, 40.0);
+  choice.ray_traced_pass(s, pass_ms);
+  choice.drag_image(s, true, 80.0);
+  choice.drag_image(s, true, raster_ms);
+}
+
 TEST(DragSetup, CountsTrianglesAndSpheresAndNeedsALightForShadows) {
   Scene scene;
   scene.render.shadows = true;
@@ -58,10 +67,7 @@ TEST(AutomaticChoice, TheFirstDragsGoToTheRasterPathWhileItIsTimed) {
 TEST(AutomaticChoice, RasterNoSlowerThanTheRayTracersPassAtRestIsDecidedAtOnce) {
   AutomaticChoice choice;
   const DragSetup s = setup_1280();
-  choice.ray_traced_pass(s, 40.0);
-  choice.ray_traced_pass(s, 22.0);
-  choice.drag_image(s, true, 80.0);
-  choice.drag_image(s, true, 21.0);
+  time_both(choice, s, 22.0, 21.0);
   EXPECT_TRUE(choice.raster_for(s));  // a drag's delay is at least the pass: raster no slower
   // Decided: later figures of this setup are not recorded, the decision stays.
   choice.drag_image(s, true, 90.0);
@@ -78,10 +84,7 @@ TEST(AutomaticChoice, OtherwiseOneDragTimesTheRayTracerAndTheFasterWins) {
   for (const double traced_drag : {100.0, 20.0}) {
     AutomaticChoice choice;
     const DragSetup s = setup_1280();
-    choice.ray_traced_pass(s, 40.0);
-    choice.ray_traced_pass(s, 22.0);
-    choice.drag_image(s, true, 80.0);
-    choice.drag_image(s, true, 35.0);
+    time_both(choice, s, 22.0, 35.0);
     EXPECT_FALSE(choice.raster_for(s)) << traced_drag;  // the ray tracer's timing drag
     EXPECT_FALSE(choice.raster_for(s)) << traced_drag;  // not decided: the same until timed
     choice.drag_image(s, false, traced_drag);
@@ -117,10 +120,7 @@ TEST(AutomaticChoice, DecisionsOfSeveralSetupsAreKept) {
   DragSetup camera = setup_1280();
   DragSetup light = camera;
   light.light_drag = true;
-  choice.ray_traced_pass(camera, 40.0);
-  choice.ray_traced_pass(camera, 30.0);
-  choice.drag_image(camera, true, 80.0);
-  choice.drag_image(camera, true, 20.0);
+  time_both(choice, camera, 30.0, 20.0);
   EXPECT_TRUE(choice.raster_for(camera));  // 20 <= 30: decided
   choice.drag_image(light, true, 80.0);
   choice.drag_image(light, true, 45.0);

@@ -43,61 +43,64 @@ const AutomaticChoice::Decision* AutomaticChoice::decision(const DragSetup& setu
   return nullptr;
 }
 
+void AutomaticChoice::Figure::take(const DragSetup& s, double measured_ms) {
+  if (!(s.*same)(setup)) *this = Figure{same, skip_first, s};
+  if (++count > 1 || !skip_first) ms = measured_ms;
+}
+
 void AutomaticChoice::drag_image(const DragSetup& setup, bool raster, double ms) {
   if (decision(setup) != nullptr) return;  // keep the figures it was decided on
-  Figure& f = raster ? m_raster : m_traced;
-  const bool same = raster ? setup.same_raster(f.setup) : setup.same_drag(f.setup);
-  if (!same) f = Figure{setup, 0, -1.0};
-  if (++f.count > 1 || !raster) f.ms = ms;
+  (raster ? m_raster : m_traced).take(setup, ms);
 }
 
 void AutomaticChoice::ray_traced_pass(const DragSetup& setup, double ms) {
-  if (!setup.same_image(m_pass.setup)) m_pass = Figure{setup, 0, -1.0};
-  if (++m_pass.count > 1) m_pass.ms = ms;
+  m_pass.take(setup, ms);
 }
 
 void AutomaticChoice::ray_tracer_restarted() {
   m_pass.count = 0;  // the figure stays; the next pass is not counted
 }
 
+AutomaticChoice::Verdict AutomaticChoice::verdict(const DragSetup& setup) const {
+  if (const Decision* d = decision(setup)) return {d->raster, true};
+  const double raster = m_raster.for_setup(setup);
+  const double traced = m_traced.for_setup(setup);
+  const double pass = m_pass.for_setup(setup);
+  if (raster < 0.0) return {true, false};  // the raster path is timed on a drag first
+  if (traced >= 0.0) return {raster <= traced, true};
+  if (setup.light_drag) return {false, false};  // no lower bound: one drag times the ray tracer
+  if (pass < 0.0) return {true, false};         // nothing known of the ray tracer yet
+  if (raster <= pass) return {true, true};      // within a lower bound of the ray tracer's delay
+  return {false, false};                        // one drag to time the ray tracer
+}
+
 bool AutomaticChoice::would_raster(const DragSetup& setup) const {
-  if (const Decision* d = decision(setup)) return d->raster;
-  const double raster = raster_ms(setup);
-  const double traced = ray_traced_ms(setup);
-  const double pass = ray_traced_pass_ms(setup);
-  if (raster < 0.0) return true;  // the raster path is timed on a drag first
-  if (traced >= 0.0) return raster <= traced;
-  if (setup.light_drag) return false;  // no lower bound: one drag times the ray tracer
-  if (pass < 0.0) return true;         // nothing known of the ray tracer yet
-  return raster <= pass;               // else one drag to time the ray tracer
+  return verdict(setup).raster;
 }
 
 bool AutomaticChoice::raster_for(const DragSetup& setup) {
-  const bool raster = would_raster(setup);
-  if (decision(setup) == nullptr) {
-    const double r = raster_ms(setup), t = ray_traced_ms(setup), p = ray_traced_pass_ms(setup);
-    const bool bound = !setup.light_drag && p >= 0.0 && r <= p;
-    if (r >= 0.0 && (t >= 0.0 || bound)) {
-      if (m_decisions.size() == kKeptDecisions) m_decisions.erase(m_decisions.begin());
-      m_decisions.push_back({setup, raster, r, t, p});
-    }
+  const Verdict v = verdict(setup);
+  if (v.settled && decision(setup) == nullptr) {
+    if (m_decisions.size() == kKeptDecisions) m_decisions.erase(m_decisions.begin());
+    m_decisions.push_back({setup, v.raster, m_raster.for_setup(setup), m_traced.for_setup(setup),
+                           m_pass.for_setup(setup)});
   }
-  return raster;
+  return v.raster;
 }
 
 double AutomaticChoice::raster_ms(const DragSetup& setup) const {
-  if (const Decision* d = decision(setup)) return d->raster_ms;
-  return setup.same_raster(m_raster.setup) ? m_raster.ms : -1.0;
+  const Decision* d = decision(setup);
+  return d ? d->raster_ms : m_raster.for_setup(setup);
 }
 
 double AutomaticChoice::ray_traced_ms(const DragSetup& setup) const {
-  if (const Decision* d = decision(setup)) return d->traced_ms;
-  return setup.same_drag(m_traced.setup) ? m_traced.ms : -1.0;
+  const Decision* d = decision(setup);
+  return d ? d->traced_ms : m_traced.for_setup(setup);
 }
 
 double AutomaticChoice::ray_traced_pass_ms(const DragSetup& setup) const {
-  if (const Decision* d = decision(setup)) return d->pass_ms;
-  return setup.same_image(m_pass.setup) ? m_pass.ms : -1.0;
+  const Decision* d = decision(setup);
+  return d ? d->pass_ms : m_pass.for_setup(setup);
 }
 
 }  // namespace gloss

@@ -75,14 +75,27 @@ class AutomaticChoice {
   // The decision for setup, or null. A few are kept (camera and light drags, a size or two), the
   // oldest dropped first.
   const Decision* decision(const DragSetup& setup) const;
-  // Each figure with the setup it was measured for and how many were seen.
+  // The rule, in one place: which renderer, and whether the figures settle it.
+  struct Verdict {
+    bool raster = true, settled = false;
+  };
+  Verdict verdict(const DragSetup& setup) const;
+
+  // One measured figure: the setups it holds for (same), the setup it was measured for, how
+  // many were seen and the newest counted, ms (-1: none yet).
   struct Figure {
+    bool (DragSetup::*same)(const DragSetup&) const;
+    bool skip_first;  // a setup's first is cold (program builds, fresh caches): not counted
     DragSetup setup;
     int count = 0;
     double ms = -1.0;
+    void take(const DragSetup& s, double measured_ms);
+    double for_setup(const DragSetup& s) const { return (s.*same)(setup) ? ms : -1.0; }
   };
-  Figure m_raster, m_traced, m_pass;
-  std::vector<Decision> m_decisions;  // newest last
+  Figure m_raster{&DragSetup::same_raster, true, {}};  // raster drag delay
+  Figure m_traced{&DragSetup::same_drag, false, {}};   // ray tracer's drag delay
+  Figure m_pass{&DragSetup::same_image, true, {}};     // its re-trace at rest
+  std::vector<Decision> m_decisions;                   // newest last
 };
 
 }  // namespace gloss

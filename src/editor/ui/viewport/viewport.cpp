@@ -206,11 +206,9 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
     } else {
       if (!m_a) {
         m_a = make_cpu_renderer(terms);
-        m_a_terms = terms;
         m_automatic.ray_tracer_restarted();
-      } else if (terms != m_a_terms) {  // also a view switched while it was paused
-        m_a->set_terms(terms);
-        m_a_terms = terms;
+      } else {
+        m_a->set_terms(terms);  // no work when unchanged; also a view switched while paused
       }
       pushed_generation = m_a->set_scene(pair.a);
       // Taking over from the raster path: frames of older generations show the scene before it.

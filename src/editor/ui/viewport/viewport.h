@@ -194,7 +194,6 @@ class Viewport {
   // The generation of the scene handed to the ray tracer when it took A over from the raster
   // path: its older frames (a paused renderer's) are not shown.
   std::uint64_t m_handover_generation = 0;
-  bool m_a_terms = false;       // what m_a was last told to publish (set_terms)
   bool m_raster_shown = false;  // m_raster_key describes frames on screen
   // render() threw for m_raster_key (too many lights, shadow maps too large, a GL error): the
   // ray tracer draws; the raster path is tried again when the setup changes (same_setup), not
