@@ -1,10 +1,10 @@
 #pragma once
-// Every panel and window of the editor, one function each (one file each). A function's
-// parameters are all it can touch: the parts of the App it reads (const) or changes (view
-// settings, selection, its own state), and for the document the door it writes through,
-// Commands (parts/commands.h: panels never change the document otherwise). An app-level action
-// comes as its own part: FileBrowser (the file panel), Exports (screenshots), FileActions (open,
-// save, quit). app.h's layout draws them (layout.cpp) in this order.
+// Every panel and window of the editor, one function each. A function's parameters are all it
+// can touch: the parts of the App it reads (const) or changes (view settings, selection, its own
+// state), and for the document the door it writes through, Commands (parts/commands.h: panels
+// never change the document otherwise). An app-level action comes as its own part: FileBrowser
+// (the file panel), Exports (screenshots), FileActions (open, save, quit). layout.cpp draws them,
+// handing each its parts from the App.
 #include <optional>
 
 #include <imgui.h>
