@@ -109,7 +109,10 @@ class ScriptPlayer::Host : public ScriptHost {
 
   CommandLayer& layer() override { return m_app.document; }
   ViewSettings& view() override { return m_app.view; }
-  void select(int object) override { m_app.selection.object = object; }
+  void select(int object) override { select_only(m_app.selection, object); }
+  void select_objects(const std::vector<int>& objects) override {
+    select_all_of(m_app.selection, objects);
+  }
   int selected_object() const override { return m_app.selection.object; }
   std::optional<Snapshot>& snapshot() override { return m_app.snapshot; }
 

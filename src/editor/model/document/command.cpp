@@ -8,6 +8,7 @@
 #include "io/material/preset_table.h"
 #include "io/scene/scene_loader.h"
 #include "scene/fields/validation.h"
+#include "scene/geometry/placement.h"
 
 namespace gloss {
 
@@ -23,6 +24,14 @@ Material& object_material(Scene& scene, int object) {
     throw CommandError("object " + std::to_string(object) + " has no valid material");
   }
   return scene.materials[material];
+}
+
+Object& scene_object(Scene& scene, int object) {
+  if (object < 0 || object >= static_cast<int>(scene.objects.size())) {
+    throw CommandError("no object " + std::to_string(object) + " (the scene has " +
+                       std::to_string(scene.objects.size()) + ")");
+  }
+  return scene.objects[static_cast<std::size_t>(object)];
 }
 
 PointLight& scene_light(Scene& scene, int light) {
@@ -68,6 +77,13 @@ void set_field(const SetField& c, Scene& scene) {
       return set_in(camera_fields(), c.part, scene.camera, c);
     case FieldPart::scene:
       return set_in(scene_fields(), c.part, scene, c);
+    case FieldPart::transform: {
+      Object& object = scene_object(scene, c.index);
+      set_in(transform_fields(), c.part, object.transform, c);
+      return place_object(object);
+    }
+    case FieldPart::object:
+      return set_in(object_fields(), c.part, scene_object(scene, c.index), c);
   }
 }
 
@@ -91,6 +107,10 @@ std::string describe(const SetField& c) {
       return "camera " + describe(camera_fields(), c);
     case FieldPart::scene:
       return describe(scene_fields(), c);
+    case FieldPart::transform:
+      return describe(transform_fields(), c) + " (object " + std::to_string(c.index) + ")";
+    case FieldPart::object:
+      return describe(object_fields(), c) + " (object " + std::to_string(c.index) + ")";
   }
   return c.key;
 }
@@ -113,6 +133,10 @@ bool continuous(const SetField& c) {
       return of(camera_fields());
     case FieldPart::scene:
       return of(scene_fields());
+    case FieldPart::transform:
+      return of(transform_fields());
+    case FieldPart::object:
+      return of(object_fields());
   }
   return false;
 }
@@ -129,7 +153,8 @@ void set_tessellation(int level, Scene& scene) {
     any = true;
     if (o.params.tessellation == level) continue;
     o.params.tessellation = level;
-    o.mesh = std::make_shared<const Mesh>(teapot_mesh(o.params));
+    o.shape = std::make_shared<const Mesh>(teapot_mesh(o.params));
+    place_object(o);
   }
   if (!any) throw CommandError("the scene has no teapot to tessellate");
 }
@@ -148,6 +173,10 @@ const char* to_string(FieldPart part) {
       return "camera";
     case FieldPart::scene:
       return "scene";
+    case FieldPart::transform:
+      return "transform";
+    case FieldPart::object:
+      return "object";
   }
   return "?";
 }
@@ -191,6 +220,7 @@ void apply_command(const Command& command, Scene& scene) {
                    if (!c.scene) throw CommandError("no scene to open");
                    next = *c.scene;
                  },
+                 [&](const auto& c) { apply_object_command(c, next); },  // object_commands.h
              },
              command);
   try {
@@ -228,6 +258,7 @@ std::string command_label(const Command& command) {
             return "set teapot tessellation to " + std::to_string(c.level);
           },
           [](const ReplaceScene& c) { return c.label; },
+          [](const auto& c) { return object_command_label(c); },  // object_commands.h
       },
       command);
 }
@@ -242,6 +273,7 @@ std::string merge_key(const Command& command) {
                         [](const SetCamera&) { return std::string("camera"); },
                         // A slider drag through the levels is one undo step.
                         [](const SetTessellation&) { return std::string("tessellation"); },
+                        [](const TransformObjects& c) { return transform_merge_key(c); },
                         [](const auto&) { return std::string(); },
                     },
                     command);

@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "editor/model/document/document.h"
+#include "editor/model/document/object_commands.h"
 #include "scene/fields/fields.h"
 
 namespace gloss {
@@ -20,11 +21,13 @@ class CommandError : public std::runtime_error {
 
 // The struct a field edit targets, and how SetField::index names it.
 enum class FieldPart {
-  material,  // the material object `index` uses (shared materials change on every user)
-  light,     // light `index`
-  render,    // the render settings
-  camera,    // the camera
-  scene,     // the scene's own fields: background, ambient
+  material,   // the material object `index` uses (shared materials change on every user)
+  light,      // light `index`
+  render,     // the render settings
+  camera,     // the camera
+  scene,      // the scene's own fields: background, ambient
+  transform,  // object `index`'s transform (translate, rotate, scale, pivot)
+  object,     // object `index`'s own fields (hidden)
 };
 const char* to_string(FieldPart part);
 
@@ -77,8 +80,12 @@ struct ReplaceScene {
   std::string label;
 };
 
-using Command = std::variant<SetField, ApplyPreset, SetMaterial, SetModel, AddLight, RemoveLight,
-                             SetCamera, OrbitCamera, SetTessellation, ReplaceScene>;
+using Command =
+    std::variant<SetField, ApplyPreset, SetMaterial, SetModel, AddLight, RemoveLight, SetCamera,
+                 OrbitCamera, SetTessellation, ReplaceScene,
+                 // objects and material identities (object_commands.h)
+                 AddObjects, DeleteObjects, DuplicateObjects, SetHidden, SoloObjects, RenameObject,
+                 TransformObjects, RenameMaterial, AssignMaterial, NewMaterial>;
 
 // Applies command to scene and validates the result (scene/fields/validation.h, the document's one
 // validator). Throws CommandError naming the bad argument or field; scene is then unchanged.

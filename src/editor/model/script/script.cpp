@@ -6,66 +6,11 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "editor/model/script/script_tokens.h"
 
 namespace gloss {
 
 namespace {
-
-// Tokens of one line and the parsing helpers that turn them into values, throwing plain
-// messages that parse_script turns into InputErrors with the line number.
-struct Tokens {
-  std::vector<std::string> words;
-  std::size_t next = 1;  // words[0] is the command
-
-  bool done() const { return next >= words.size(); }
-  const std::string& word(const char* what) {
-    if (done()) throw std::runtime_error(std::string("missing ") + what);
-    return words[next++];
-  }
-  float number(const char* what) {
-    const std::string& w = word(what);
-    char* end = nullptr;
-    const float value = std::strtof(w.c_str(), &end);
-    if (end == w.c_str() || *end != '\0') {
-      throw std::runtime_error(std::string("expected a number for ") + what + ", got '" + w + "'");
-    }
-    return value;
-  }
-  double whole(const char* what) {
-    const std::string& w = word(what);
-    char* end = nullptr;
-    const double value = std::strtod(w.c_str(), &end);
-    if (end == w.c_str() || *end != '\0' || value != std::floor(value)) {
-      throw std::runtime_error(std::string("expected a whole number for ") + what + ", got '" + w +
-                               "'");
-    }
-    return value;
-  }
-  int index(const char* what) {
-    const std::string& w = word(what);
-    char* end = nullptr;
-    const long value = std::strtol(w.c_str(), &end, 10);
-    if (end == w.c_str() || *end != '\0' || value < 0 || value > 1000000) {
-      throw std::runtime_error(std::string("expected an index for ") + what + ", got '" + w + "'");
-    }
-    return static_cast<int>(value);
-  }
-  glm::vec3 vec3(const char* what) {
-    const float x = number(what);
-    const float y = number(what);
-    const float z = number(what);
-    return {x, y, z};
-  }
-  bool on_off(const char* what) {
-    const std::string& w = word(what);
-    if (w == "on") return true;
-    if (w == "off") return false;
-    throw std::runtime_error(std::string(what) + " must be on or off, got '" + w + "'");
-  }
-  void end() {
-    if (!done()) throw std::runtime_error("unexpected '" + words[next] + "'");
-  }
-};
 
 // `quality raster PATH [WIDTH HEIGHT [REFERENCE_SPP]]` (issue 12: the raster path's rows).
 QualityAction parse_quality_raster(Tokens& t) {
@@ -83,50 +28,6 @@ QualityAction parse_quality_raster(Tokens& t) {
     throw std::runtime_error("quality raster: reference spp must be 1.." + std::to_string(kMaxSpp));
   }
   return q;
-}
-
-// A value of field from the rest of the line: one number for a grey colour or three for R G B,
-// three for a vector, one number, a whole number, on/off, or a choice's name.
-template <class S>
-FieldValue parse_value(Tokens& t, const Field<S>& field) {
-  FieldValue value;
-  switch (field.kind) {
-    case FieldKind::colour: {
-      const float r = t.number("colour");
-      if (t.done()) {
-        value.v = glm::vec3(r);
-        break;
-      }
-      const float g = t.number("colour");
-      value.v = {r, g, t.number("colour")};
-      break;
-    }
-    case FieldKind::vector:
-      value.v = t.vec3(field.key);
-      break;
-    case FieldKind::number:
-      value.x = t.number(field.key);
-      break;
-    case FieldKind::whole:
-      value.x = t.whole(field.key);
-      break;
-    case FieldKind::flag:
-      value.x = t.on_off(field.key) ? 1.0 : 0.0;
-      break;
-    case FieldKind::choice: {
-      const std::string& name = t.word(field.key);
-      const int index = choice_index(field, name);
-      if (index < 0) {
-        std::string names;
-        for (const char* c : field.choices) names += (names.empty() ? "" : ", ") + std::string(c);
-        throw std::runtime_error(std::string(field.key) + " must be one of " + names + ", got '" +
-                                 name + "'");
-      }
-      value.x = index;
-      break;
-    }
-  }
-  return value;
 }
 
 // "KEY VALUE..." of a part's table, as a SetField.
@@ -317,6 +218,8 @@ ScriptAction parse_line(Tokens& t) {
     return Command(c);
   }
   if (verb == "light") return parse_light(t);
+  // Issue 24: objects by index or name, material names (script_objects.cpp).
+  if (verb == "object" || verb == "material" || verb == "assign") return parse_object_line(t);
   if (verb == "tessellation") {  // every teapot's segments per patch side; the command checks it
     return Command(SetTessellation{static_cast<int>(t.whole("segments per patch side"))});
   }
@@ -415,12 +318,10 @@ Script parse_script(const std::string& text, const std::string& file) {
   std::istringstream in(text);
   std::string raw;
   for (int number = 1; std::getline(in, raw); ++number) {
-    std::string line = raw.substr(0, raw.find('#'));
-    Tokens t;
-    std::istringstream words(line);
-    for (std::string w; words >> w;) t.words.push_back(w);
-    if (t.words.empty()) continue;
+    std::string line;
     try {
+      Tokens t = split_words(raw, line);
+      if (t.words.empty()) continue;
       ScriptAction action = parse_line(t);
       t.end();
       script.lines.push_back({number, line, std::move(action)});
@@ -429,6 +330,46 @@ Script parse_script(const std::string& text, const std::string& file) {
     }
   }
   return script;
+}
+
+Tokens split_words(const std::string& line, std::string& text) {
+  Tokens t;
+  std::string word;
+  bool in_word = false, in_quotes = false, quoted = false;
+  std::size_t i = 0;
+  auto finish = [&] {
+    if (in_word) {
+      t.words.push_back(word);
+      t.quoted.push_back(quoted);
+    }
+    word.clear();
+    in_word = quoted = false;
+  };
+  for (; i < line.size(); ++i) {
+    const char c = line[i];
+    if (in_quotes) {
+      if (c == '\\' && i + 1 < line.size() && (line[i + 1] == '"' || line[i + 1] == '\\')) {
+        word += line[++i];
+      } else if (c == '"') {
+        in_quotes = false;
+      } else {
+        word += c;
+      }
+    } else if (c == '#') {
+      break;
+    } else if (c == '"') {
+      in_quotes = in_word = quoted = true;
+    } else if (c == ' ' || c == '\t' || c == '\r') {
+      finish();
+    } else {
+      word += c;
+      in_word = true;
+    }
+  }
+  if (in_quotes) throw std::runtime_error("a quote is not closed");
+  finish();
+  text = line.substr(0, i);
+  return t;
 }
 
 Script load_script(const std::string& path) {

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "base/error.h"
 #include "base/overloaded.h"
 #include "editor/model/export/glsl_export.h"
 #include "editor/model/measure/memory_report.h"
@@ -53,6 +54,35 @@ LineResult export_glsl_line(ScriptHost& host, const ExportGlslAction& a, const s
   }
   std::printf("export glsl: %s (material %d of object %d)\n", a.path.c_str(), material, object);
   std::fflush(stdout);
+  return LineResult::go_on();
+}
+
+// The object and material lines (issue 24): resolved against the document as it is now, then
+// one command; what was added is selected and named on stdout.
+LineResult object_line(ScriptHost& host, const ObjectLineAction& a, const std::string& where) {
+  std::vector<std::string> warnings;
+  const std::size_t before = host.layer().scene().objects.size();
+  Command command;
+  try {
+    command = object_line_command(host.layer().scene(), a, &warnings);
+  } catch (const InputError& e) {
+    return bad_line(where, e.what());
+  }
+  for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  host.layer().execute(command);
+  host.layer().seal();
+  const Scene& scene = host.layer().scene();
+  if (a.verb == ObjectLineAction::Verb::add || a.verb == ObjectLineAction::Verb::add_model) {
+    std::vector<int> added;
+    std::string names;
+    for (std::size_t i = before; i < scene.objects.size(); ++i) {
+      added.push_back(static_cast<int>(i));
+      names += (names.empty() ? "" : ", ") + std::to_string(i) + " '" + scene.objects[i].name + "'";
+    }
+    host.select_objects(added);
+    std::printf("added %s\n", names.c_str());
+    std::fflush(stdout);
+  }
   return LineResult::go_on();
 }
 
@@ -144,6 +174,7 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
               host.view().raster.shadow_map_size = a.size;
               return LineResult::go_on();
             },
+            [&](const ObjectLineAction& a) { return object_line(host, a, where); },
             [&](const ShadowBiasAction& a) {
               host.view().raster.shadow_bias = a.texels;
               return LineResult::go_on();

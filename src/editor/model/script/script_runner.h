@@ -7,6 +7,7 @@
 #include <string>
 
 #include <optional>
+#include <vector>
 
 #include "editor/model/document/command_layer.h"
 #include "editor/model/script/script.h"
@@ -37,6 +38,10 @@ class ScriptHost {
   virtual CommandLayer& layer() = 0;
   virtual ViewSettings& view() = 0;
   virtual void select(int object) = 0;
+  // Selects these objects (what an `object add` line added); by default the first alone.
+  virtual void select_objects(const std::vector<int>& objects) {
+    if (!objects.empty()) select(objects.front());
+  }
   // The object whose material `export glsl` writes when the line names none.
   virtual int selected_object() const { return 0; }
 

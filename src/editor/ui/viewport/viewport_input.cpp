@@ -320,7 +320,7 @@ void Viewport::handle_input(Commands& commands, ViewSettings& view, Selection& s
       const int hit =
           pick_object(scene, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
                       io.MousePos.x - pane.min.x, io.MousePos.y - pane.min.y);
-      if (hit >= 0) selection.object = hit;
+      if (hit >= 0) select_only(selection, hit);
     }
     m_drag_button = -1;
     m_drag_light = -1;

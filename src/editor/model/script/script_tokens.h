@@ -1,0 +1,138 @@
+#pragma once
+// The words of one script line and the helpers that turn them into values (private to
+// editor/model/script). Words are separated by blanks; a word in double quotes may hold blanks
+// ("gold ball"; \" and \\ inside stand for " and \); '#' outside quotes starts a comment. The
+// helpers throw plain messages that parse_script turns into errors naming the file and line.
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "editor/model/script/script.h"
+
+namespace gloss {
+
+// Tokens of one line and the parsing helpers that turn them into values, throwing plain
+// messages that parse_script turns into InputErrors with the line number.
+struct Tokens {
+  std::vector<std::string> words;
+  std::vector<bool> quoted;  // parallel to words: the word was written in quotes
+  std::size_t next = 1;      // words[0] is the command
+
+  bool done() const { return next >= words.size(); }
+  const std::string& word(const char* what) {
+    if (done()) throw std::runtime_error(std::string("missing ") + what);
+    return words[next++];
+  }
+  float number(const char* what) {
+    const std::string& w = word(what);
+    char* end = nullptr;
+    const float value = std::strtof(w.c_str(), &end);
+    if (end == w.c_str() || *end != '\0') {
+      throw std::runtime_error(std::string("expected a number for ") + what + ", got '" + w + "'");
+    }
+    return value;
+  }
+  double whole(const char* what) {
+    const std::string& w = word(what);
+    char* end = nullptr;
+    const double value = std::strtod(w.c_str(), &end);
+    if (end == w.c_str() || *end != '\0' || value != std::floor(value)) {
+      throw std::runtime_error(std::string("expected a whole number for ") + what + ", got '" + w +
+                               "'");
+    }
+    return value;
+  }
+  int index(const char* what) {
+    const std::string& w = word(what);
+    char* end = nullptr;
+    const long value = std::strtol(w.c_str(), &end, 10);
+    if (end == w.c_str() || *end != '\0' || value < 0 || value > 1000000) {
+      throw std::runtime_error(std::string("expected an index for ") + what + ", got '" + w + "'");
+    }
+    return static_cast<int>(value);
+  }
+  glm::vec3 vec3(const char* what) {
+    const float x = number(what);
+    const float y = number(what);
+    const float z = number(what);
+    return {x, y, z};
+  }
+  bool on_off(const char* what) {
+    const std::string& w = word(what);
+    if (w == "on") return true;
+    if (w == "off") return false;
+    throw std::runtime_error(std::string(what) + " must be on or off, got '" + w + "'");
+  }
+  void end() {
+    if (!done()) throw std::runtime_error("unexpected '" + words[next] + "'");
+  }
+};
+
+// A value of field from the rest of the line: one number for a grey colour or three for R G B,
+// three for a vector (or one, for a vector that takes one number), one number, a whole number,
+// on/off, or a choice's name.
+template <class S>
+FieldValue parse_value(Tokens& t, const Field<S>& field) {
+  FieldValue value;
+  switch (field.kind) {
+    case FieldKind::colour: {
+      const float r = t.number("colour");
+      if (t.done()) {
+        value.v = glm::vec3(r);
+        break;
+      }
+      const float g = t.number("colour");
+      value.v = {r, g, t.number("colour")};
+      break;
+    }
+    case FieldKind::vector:
+      if (field.one_number) {  // `scale 2` for 2 2 2
+        const float x = t.number(field.key);
+        if (t.done()) {
+          value.v = glm::vec3(x);
+          break;
+        }
+        const float y = t.number(field.key);
+        value.v = glm::vec3(x, y, t.number(field.key));
+        break;
+      }
+      value.v = t.vec3(field.key);
+      break;
+    case FieldKind::number:
+      value.x = t.number(field.key);
+      break;
+    case FieldKind::whole:
+      value.x = t.whole(field.key);
+      break;
+    case FieldKind::flag:
+      value.x = t.on_off(field.key) ? 1.0 : 0.0;
+      break;
+    case FieldKind::choice: {
+      const std::string& name = t.word(field.key);
+      const int index = choice_index(field, name);
+      if (index < 0) {
+        std::string names;
+        for (const char* c : field.choices) names += (names.empty() ? "" : ", ") + std::string(c);
+        throw std::runtime_error(std::string(field.key) + " must be one of " + names + ", got '" +
+                                 name + "'");
+      }
+      value.x = index;
+      break;
+    }
+  }
+  return value;
+}
+
+// The words of line (comment dropped). Throws for a quote that is not closed.
+// text: the line without its comment.
+Tokens split_words(const std::string& line, std::string& text);
+
+// The object and material lines (script_objects.cpp): `object ...`, `material rename OLD NEW`,
+// `assign OBJECT MATERIAL`; t.words[0] is one of object, material, assign.
+ScriptAction parse_object_line(Tokens& t);
+
+}  // namespace gloss
