@@ -1,5 +1,6 @@
 #include "engine/pick.h"
 
+#include <cmath>
 #include <limits>
 
 #include "engine/trace/embree_scene.h"
@@ -48,6 +49,21 @@ std::vector<SurfaceBelow> surfaces_below(const Scene& scene, const std::vector<g
     float t = 0.0f;
     out[i].object = first_hit(embree, points[i], glm::vec3(0.0f, -1.0f, 0.0f), t);
     if (out[i].object >= 0) out[i].y = points[i].y - t;
+  }
+  return out;
+}
+
+std::vector<bool> seen_from_eye(const Scene& scene, const std::vector<glm::vec3>& points) {
+  std::vector<bool> out(points.size(), true);
+  if (scene.objects.empty()) return out;
+  const EmbreeScene embree(scene);
+  const glm::vec3 eye = scene.camera.eye;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const glm::vec3 d = points[i] - eye;
+    const float distance = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    if (!(distance > 0.0f)) continue;
+    float t = 0.0f;
+    out[i] = first_hit(embree, eye, d / distance, t) < 0 || t >= 0.999f * distance;
   }
   return out;
 }

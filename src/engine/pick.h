@@ -23,4 +23,8 @@ struct SurfaceBelow {
 // One answer per point, from one Embree build of scene.
 std::vector<SurfaceBelow> surfaces_below(const Scene& scene, const std::vector<glm::vec3>& points);
 
+// Whether each point is seen from the camera's eye: no object between the eye and it (a hit
+// closer than 0.999 of its distance hides it). One Embree build of scene.
+std::vector<bool> seen_from_eye(const Scene& scene, const std::vector<glm::vec3>& points);
+
 }  // namespace gloss

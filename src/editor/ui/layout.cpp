@@ -1,4 +1,5 @@
-// The window's layout: the menu bar on top, the Material panel on the left, the Lights & Scene
+// The window's layout: the menu bar on top, the Outliner over the Material panel on the left,
+// the Lights & Scene
 // and View & Quality panels on the right, the viewport between them, the status bar below, the
 // floating windows and questions over them. Each is handed only the parts of the App it may
 // touch (panels/panels.h).
@@ -43,8 +44,8 @@ float splitter(const char* id, ImVec2 pos, ImVec2 size, bool vertical) {
 }  // namespace
 
 void draw_layout(App& app) {
-  draw_menu_bar(app.commands, app.view, app.snapshot, app.session, app.files, app.exports,
-                app.windows);
+  draw_menu_bar(app.commands, app.selection, app.view, app.snapshot, app.session, app.files,
+                app.exports, app.windows);
   LayoutState& layout = app.layout;
   const ImGuiViewport* main = ImGui::GetMainViewport();
   const float menu_h = ImGui::GetFrameHeight();
@@ -63,8 +64,13 @@ void draw_layout(App& app) {
   const float right_side = layout.right_width;
   const float left = main->Pos.x, right = main->Pos.x + main->Size.x;
   const float lights_h = std::floor(height * layout.lights_share);
+  layout.outliner_share = std::clamp(layout.outliner_share, 0.15f, 0.85f);
+  const float outliner_h = std::floor(height * layout.outliner_share);
+  draw_outliner(app.commands, app.selection, app.outliner, app.session.browser, ImVec2(left, top),
+                ImVec2(side, outliner_h));
   draw_material_panel(app.commands, app.selection, app.view, app.material_panel, app.library,
-                      ImVec2(left, top), ImVec2(side, height));
+                      app.files, app.session.browser, ImVec2(left, top + outliner_h),
+                      ImVec2(side, height - outliner_h));
   draw_lights_panel(app.commands, app.selection, app.view, app.session.browser,
                     ImVec2(right - right_side, top), ImVec2(right_side, lights_h));
   draw_view_panel(app.commands, app.view, app.viewport, app.snapshot, app.windows, app.exports,
@@ -81,6 +87,9 @@ void draw_layout(App& app) {
       splitter("##split-left", ImVec2(left + side - 3.0f, top), ImVec2(6.0f, height), true);
   layout.right_width -=
       splitter("##split-right", ImVec2(right - right_side - 3.0f, top), ImVec2(6.0f, height), true);
+  layout.outliner_share += splitter("##split-outliner", ImVec2(left, top + outliner_h - 3.0f),
+                                    ImVec2(side, 6.0f), false) /
+                           height;
   layout.lights_share +=
       splitter("##split-lights", ImVec2(right - right_side, top + lights_h - 3.0f),
                ImVec2(right_side, 6.0f), false) /

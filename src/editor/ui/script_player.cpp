@@ -130,8 +130,9 @@ class ScriptPlayer::Host : public ScriptHost {
     return LineResult::go_on();
   }
   LineResult memory() override {
-    const ViewMemory view{m_app.viewport.frame_bytes(), m_app.viewport.texture_bytes(),
-                          m_app.library.swatches.texture_bytes()};
+    const ViewMemory view{
+        m_app.viewport.frame_bytes(), m_app.viewport.texture_bytes(),
+        m_app.library.swatches.texture_bytes() + m_app.library.balls.texture_bytes()};
     std::printf("memory: %s\n", memory_text(m_app.document, view).c_str());
     std::fflush(stdout);
     return LineResult::go_on();

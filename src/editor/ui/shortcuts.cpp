@@ -7,6 +7,9 @@
 
 #include "editor/ui/shortcuts.h"
 
+#include <algorithm>
+
+#include "editor/model/session/file_defaults.h"
 #include "editor/ui/app.h"
 #include "editor/ui/panels/panels.h"
 
@@ -46,10 +49,56 @@ void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods)
   }
 }
 
+// Keys on the selected objects (issue 24): F frames them, Delete deletes, Ctrl+D duplicates, H
+// hides (or shows), Shift+H solos, Alt+H shows every object, F2 renames in the Outliner, W / E /
+// R pick the gizmo's move, rotate or scale.
+void object_shortcut(App& app, const KeyPress& press) {
+  const Scene& scene = app.document.scene();
+  const int count = static_cast<int>(scene.objects.size());
+  const std::vector<int> objects = selected_objects(app.selection, count);
+  const int mods = press.mods & (GLFW_MOD_CONTROL | GLFW_MOD_SHIFT | GLFW_MOD_ALT);
+  if (mods == 0 && press.key == GLFW_KEY_W) app.view.gizmo = GizmoMode::move;
+  if (mods == 0 && press.key == GLFW_KEY_E) app.view.gizmo = GizmoMode::rotate;
+  if (mods == 0 && press.key == GLFW_KEY_R) app.view.gizmo = GizmoMode::scale;
+  if (mods == GLFW_MOD_ALT && press.key == GLFW_KEY_H && count > 0) {
+    std::vector<int> all(static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i) all[static_cast<std::size_t>(i)] = i;
+    app.commands.execute(SetHidden{all, false});
+  }
+  if (objects.empty()) return;
+  if (mods == 0 && press.key == GLFW_KEY_F) frame_selection(app.commands, app.selection);
+  if (mods == 0 && press.key == GLFW_KEY_DELETE) {
+    if (app.commands.execute(DeleteObjects{objects})) {
+      select_only(app.selection, std::max(objects.front() - 1, 0));
+    }
+  }
+  if (mods == GLFW_MOD_CONTROL && press.key == GLFW_KEY_D &&
+      app.commands.execute(DuplicateObjects{objects})) {
+    std::vector<int> copies;
+    for (std::size_t k = 0; k < objects.size(); ++k) copies.push_back(count + int(k));
+    select_all_of(app.selection, copies);
+  }
+  if (mods == 0 && press.key == GLFW_KEY_H) {
+    const bool any_hidden =
+        std::any_of(objects.begin(), objects.end(), [&](int i) { return scene.objects[i].hidden; });
+    app.commands.execute(SetHidden{objects, !any_hidden});
+  }
+  if (mods == GLFW_MOD_SHIFT && press.key == GLFW_KEY_H) {
+    app.commands.execute(SoloObjects{objects});
+  }
+  if (mods == 0 && press.key == GLFW_KEY_F2) {
+    app.outliner.renaming = app.selection.object;
+    app.outliner.rename_text = scene.objects[static_cast<std::size_t>(objects.front())].name;
+    app.outliner.focus_rename = true;
+  }
+}
+
+// Ctrl+Shift+S: saves over the scene's own file; a scene without one, or a file gloss ships,
+// asks for a name in the user's folder instead.
 void save_scene_shortcut(App& app) {
   const std::string& path = app.document.scene().path;
-  if (path.empty()) {
-    app.session.browser.show(BrowsePurpose::save_scene, app.view.screenshot_dir, "scene.json");
+  if (path.empty() || is_shipped_path(path)) {
+    app.session.browser.start(BrowsePurpose::save_scene, path, scene_file_name(path));
     return;
   }
   try {
@@ -130,9 +179,7 @@ void handle_shortcuts(App& app) {
       shift ? save_scene_shortcut(app) : app.exports.start(app.view.screenshot_kind);
     }
     if (ctrl && press.key == GLFW_KEY_O) {
-      app.session.browser.show(BrowsePurpose::open_scene,
-                               scene_folder(app.document.scene().path, app.view.screenshot_dir),
-                               "");
+      app.session.browser.start(BrowsePurpose::open_scene, app.document.scene().path, "");
     }
     if (ctrl && press.key == GLFW_KEY_Q) app.files.request_quit();
     if (ctrl && press.key == GLFW_KEY_B) snapshot_and_compare(app.commands, app.snapshot, app.view);
@@ -145,6 +192,7 @@ void handle_shortcuts(App& app) {
     if (press.mods == 0 && press.key == GLFW_KEY_I && !ImGui::IsAnyItemActive()) {
       app.view.show_inspector = !app.view.show_inspector;
     }
+    if (!ImGui::IsAnyItemActive()) object_shortcut(app, press);
     if (press.key == GLFW_KEY_ESCAPE) {
       app.windows.help = false;
       app.session.browser.open = false;

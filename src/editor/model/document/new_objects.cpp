@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <memory>
 
@@ -12,6 +13,7 @@
 
 #include "base/error.h"
 #include "editor/model/document/command.h"
+#include "editor/model/view/camera_controller.h"
 #include "engine/pick.h"
 #include "io/model/model_loader.h"
 #include "io/scene/scene_loader.h"
@@ -94,17 +96,24 @@ glm::vec3 placement_offset(const Scene& scene, const glm::vec3& lo, const glm::v
   glm::vec3 scene_lo = boxes[0].lo;
   for (const Box& b : boxes) scene_lo = glm::min(scene_lo, b.lo);
 
-  // Candidate centres (x, z) on a grid a quarter of the footprint apart, nearest first: fine
-  // enough to find a gap the object fits (a room's corner beside a block).
+  // Candidate centres (x, z) on a grid a quarter of the footprint apart (fine enough to find a
+  // gap the object fits, a room's corner beside a block), nearest first, where distances along
+  // the view count three times: beside the objects as the camera sees them, rather than in front of
+  // them (hiding them) or behind them (hidden).
   const float side = std::max(largest_side(lo, hi), 1e-3f);
   const float step = 0.25f * std::max(std::max(size.x, size.z), 0.25f * side);
+  glm::vec2 view(target.x - scene.camera.eye.x, target.z - scene.camera.eye.z);
+  view = glm::length(view) > 0.0f ? glm::normalize(view) : glm::vec2(0.0f, -1.0f);
+  const auto cost = [&](const glm::vec2& g) {
+    const float along = glm::dot(g, view);
+    return glm::dot(g, g) + 8.0f * along * along;  // (3 along)^2 + across^2
+  };
   std::vector<glm::vec2> places;
   for (int i = -kRings; i <= kRings; ++i) {
     for (int j = -kRings; j <= kRings; ++j) places.emplace_back(i, j);
   }
-  std::stable_sort(places.begin(), places.end(), [](const glm::vec2& a, const glm::vec2& b) {
-    return glm::dot(a, a) < glm::dot(b, b);
-  });
+  std::stable_sort(places.begin(), places.end(),
+                   [&](const glm::vec2& a, const glm::vec2& b) { return cost(a) < cost(b); });
   // Five rays per candidate from above where it would rest, cast in one Embree build.
   const float from_y = std::max(target.y, scene_lo.y) + size.y + 1e-3f * side;
   const glm::vec2 corner(0.45f * size.x, 0.45f * size.z);
@@ -119,9 +128,10 @@ glm::vec3 placement_offset(const Scene& scene, const glm::vec3& lo, const glm::v
   const std::vector<SurfaceBelow> below = surfaces_below(scene, points);
 
   // Each candidate's support and whether it is a free place; the free places on the lowest
-  // support (the ground) come first, so a new object stands beside a box, not on it.
+  // support (the ground) come first, so a new object stands beside a box, not on it; among
+  // them the ones the camera sees (its centre in the image and no object before it).
   const float slack = 1e-3f * side;
-  std::vector<glm::vec3> offsets_of(places.size());
+  std::vector<glm::vec3> offsets_of(places.size()), centres(places.size());
   std::vector<bool> free(places.size(), false), supported(places.size(), false);
   float ground = std::numeric_limits<float>::infinity();
   for (std::size_t c = 0; c < places.size(); ++c) {
@@ -142,6 +152,7 @@ glm::vec3 placement_offset(const Scene& scene, const glm::vec3& lo, const glm::v
     if (supports.empty()) support = scene_lo.y;
     supported[c] = !supports.empty();
     offsets_of[c] = glm::vec3(places[c].x - centre.x, support - lo.y, places[c].y - centre.z);
+    centres[c] = centre + offsets_of[c];
     if (narrow) continue;
     const Box placed{lo + offsets_of[c], hi + offsets_of[c]};
     free[c] = std::none_of(boxes.begin(), boxes.end(), [&](const Box& b) {
@@ -150,16 +161,25 @@ glm::vec3 placement_offset(const Scene& scene, const glm::vec3& lo, const glm::v
     });
     if (!supports.empty()) ground = std::min(ground, support);
   }
-  // On the ground, then on any surface, then anywhere free (beside the scene, on the level of its
-  // lowest point).
-  for (std::size_t c = 0; c < places.size(); ++c) {
-    if (free[c] && supported[c] && offsets_of[c].y + lo.y <= ground + slack) return offsets_of[c];
-  }
-  for (std::size_t c = 0; c < places.size(); ++c) {
-    if (free[c] && supported[c]) return offsets_of[c];
-  }
-  for (std::size_t c = 0; c < places.size(); ++c) {
-    if (free[c]) return offsets_of[c];
+  const std::vector<bool> unhidden = seen_from_eye(scene, centres);
+  const int w = std::max(scene.render.width, 1), h = std::max(scene.render.height, 1);
+  const auto in_view = [&](std::size_t c) {
+    glm::vec2 at;
+    return unhidden[c] && project_point(scene.camera, w, h, centres[c], at) && at.x > 0.1f * w &&
+           at.x < 0.9f * w && at.y > 0.1f * h && at.y < 0.9f * h;
+  };
+  const auto on_ground = [&](std::size_t c) {
+    return supported[c] && offsets_of[c].y + lo.y <= ground + slack;
+  };
+  // Seen on the ground, then on the ground, then on any surface, then anywhere free (beside
+  // the scene, on the level of its lowest point).
+  const std::function<bool(std::size_t)> tiers[4] = {
+      [&](std::size_t c) { return on_ground(c) && in_view(c); }, on_ground,
+      [&](std::size_t c) { return bool(supported[c]); }, [](std::size_t) { return true; }};
+  for (const auto& tier : tiers) {
+    for (std::size_t c = 0; c < places.size(); ++c) {
+      if (free[c] && tier(c)) return offsets_of[c];
+    }
   }
   return offsets_of[0];
 }

@@ -5,6 +5,7 @@
 // exports all follow it.
 #include <string>
 
+#include "editor/model/view/gizmo.h"
 #include "editor/model/view/raster_settings.h"
 
 namespace gloss {
@@ -58,6 +59,10 @@ struct ViewSettings {
   // The lobe view (ViewMode::lobe).
   float lobe_elevation_deg = 45.0f;  // light above the surface, degrees, 0..90
   LobeEnergy lobe_energy = LobeEnergy::scene;
+
+  // The transform gizmo over the selected objects (gizmo.h): move, rotate or scale (W, E, R).
+  GizmoMode gizmo = GizmoMode::move;
+  bool show_gizmo = true;
 
   // The pixel inspector: a pixel of the document's render size, read at its centre.
   bool show_inspector = false;

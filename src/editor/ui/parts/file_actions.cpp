@@ -10,6 +10,8 @@
 #include "editor/model/document/document.h"
 #include "editor/model/document/new_objects.h"
 #include "editor/model/export/glsl_export.h"
+#include "editor/model/session/file_defaults.h"
+#include "editor/model/session/material_library_folder.h"
 #include "editor/ui/parts/commands.h"
 #include "editor/ui/parts/material_library.h"
 #include "editor/ui/parts/open_windows.h"
@@ -43,9 +45,14 @@ void FileActions::remember_recent(RecentKind kind, const std::string& path) {
 void FileActions::open_scene(const std::string& requested) {
   const std::string path = requested;  // may refer into the recent list, which changes below
   std::vector<std::string> warnings;
-  auto scene = std::make_shared<Scene>(load_scene(path, &warnings));
+  open_loaded(std::make_shared<Scene>(load_scene(path, &warnings)), path, warnings);
+}
+
+void FileActions::open_loaded(std::shared_ptr<const Scene> scene, const std::string& path,
+                              const std::vector<std::string>& warnings) {
   // Undoing the open gives back the earlier document with its own saved/unsaved state.
-  m_document.open_document(scene, "open " + std::filesystem::path(path).filename().string());
+  m_document.open_document(std::move(scene),
+                           "open " + std::filesystem::path(path).filename().string());
   select_only(m_selection, 0);
   m_selection.light = 0;
   remember_recent(RecentKind::scene, path);
@@ -53,9 +60,19 @@ void FileActions::open_scene(const std::string& requested) {
   m_commands.info("opened " + path);
 }
 
-void FileActions::request_open_scene(const std::string& path) {
+void FileActions::request_open_scene(const std::string& requested) {
+  const std::string path = requested;
+  // Read before asking: a file that does not read is refused here, with the edits untouched
+  // and no question about them.
+  std::vector<std::string> warnings;
+  auto scene = std::make_shared<Scene>(load_scene(path, &warnings));
   // Scripts answer no questions; they replace the document as they say.
-  if (m_session.unsaved.request_open(path, m_document.dirty() && !m_run.script)) open_scene(path);
+  if (m_session.unsaved.request_open(path, m_document.dirty() && !m_run.script)) {
+    open_loaded(scene, path, warnings);
+    return;
+  }
+  m_session.pending_open = scene;
+  m_session.pending_warnings = warnings;
 }
 
 void FileActions::add_model(const std::string& path) {
@@ -113,6 +130,37 @@ void FileActions::save_materials(const std::string& path) {
   m_commands.info("saved " + std::to_string(materials.size()) + " material(s) to " + path);
 }
 
+void FileActions::save_selected_material(const std::string& path) {
+  const Scene& scene = m_document.scene();
+  if (scene.objects.empty()) throw std::runtime_error("the scene has no object to take it from");
+  const int i = std::clamp(m_selection.object, 0, static_cast<int>(scene.objects.size()) - 1);
+  const int m = scene.objects[static_cast<std::size_t>(i)].material;
+  const std::vector<NamedMaterial> one = {{scene.material_names.at(m), scene.materials.at(m)}};
+  if (has_extension(path, ".mtl")) {
+    save_mtl(path, one);
+  } else {
+    save_materials_json(path, one);
+  }
+  m_commands.info("saved material '" + one[0].first + "' to " + path);
+}
+
+void FileActions::save_to_library() {
+  const Scene& scene = m_document.scene();
+  if (scene.objects.empty()) return;
+  const int i = std::clamp(m_selection.object, 0, static_cast<int>(scene.objects.size()) - 1);
+  const int m = scene.objects[static_cast<std::size_t>(i)].material;
+  const std::string name = scene.material_names.at(m);
+  const std::string path = gloss::save_to_library(m_library.folder, name, scene.materials.at(m));
+  reload_library();
+  m_commands.info("saved '" + name + "' to your library: " + path);
+}
+
+void FileActions::reload_library() {
+  std::vector<std::string> errors;
+  m_library.user = read_library(m_library.folder, &errors);
+  for (const std::string& e : errors) m_commands.error("library: " + e);
+}
+
 void FileActions::export_glsl_shader(const std::string& path) {
   const Scene& scene = m_document.scene();
   const int selected = m_selection.object;
@@ -143,11 +191,15 @@ void FileActions::browser_action(const std::string& path) {
       case BrowsePurpose::save_materials:
         save_materials(path);
         break;
+      case BrowsePurpose::save_material:
+        save_selected_material(path);
+        break;
       case BrowsePurpose::export_glsl:
         export_glsl_shader(path);
         break;
     }
     browser.open = false;
+    save_last_folder(m_session.config_folder, browser.last_folder);
   } catch (const std::exception& e) {
     // The action failed before touching the document; the panel stays open with the reason.
     browser.error = e.what();

@@ -18,6 +18,7 @@
 #include "editor/model/view/ab_compare.h"
 #include "editor/model/view/automatic_choice.h"
 #include "editor/model/view/view_settings.h"
+#include "editor/ui/viewport/gizmo.h"
 #include "engine/progressive_renderer.h"
 
 namespace gloss {
@@ -254,6 +255,7 @@ class Viewport {
   ExposureHistogram m_histogram;
 
   // Gesture state (viewport_input.cpp).
+  ViewportGizmo m_gizmo;          // the selection's transform gizmo and its drag (gizmo.h)
   int m_drag_button = -1;         // ImGuiMouseButton being dragged in the viewport, -1 none
   int m_drag_light = -1;          // light being dragged, -1 none
   bool m_marker_pressed = false;  // the press hit a light marker (no orbit, no pick)
