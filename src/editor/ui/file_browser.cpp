@@ -181,7 +181,14 @@ bool FileBrowser::draw(const RecentFiles& recent, std::string& chosen) {
     stale = true;
   }
   ImGui::SameLine();
-  ImGui::TextUnformatted(folder.string().c_str());
+  // The folder's path, its start cut ("...") where it would run under the checkbox.
+  const float room = ImGui::GetWindowWidth() - 160.0f - ImGui::GetCursorPosX();
+  std::string shown = folder.string();
+  while (shown.size() > 4 && ImGui::CalcTextSize(shown.c_str()).x > room) {
+    shown = "..." + shown.substr(std::min<std::size_t>(shown.size(), 8));
+  }
+  ImGui::TextUnformatted(shown.c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", folder.string().c_str());
   ImGui::SameLine(ImGui::GetWindowWidth() - 150.0f);
   if (ImGui::Checkbox("all files", &show_all)) stale = true;
 

@@ -18,16 +18,6 @@ namespace gloss {
 
 namespace {
 
-// The selected object's material's name, for the names Save and Export suggest.
-std::string selected_material_name(const Scene& scene, const Selection& selection) {
-  if (scene.objects.empty()) return "material";
-  const int i = std::clamp(selection.object, 0, static_cast<int>(scene.objects.size()) - 1);
-  const int m = scene.objects[static_cast<std::size_t>(i)].material;
-  return m >= 0 && m < static_cast<int>(scene.material_names.size())
-             ? scene.material_names[static_cast<std::size_t>(m)]
-             : std::string("material");
-}
-
 void file_menu(Commands& commands, const Selection& selection, Session& session, FileActions& files,
                Exports& exports, const ViewSettings& view) {
   if (!ImGui::BeginMenu("File")) return;
@@ -71,17 +61,18 @@ void file_menu(Commands& commands, const Selection& selection, Session& session,
   if (ImGui::MenuItem("Load materials (JSON, MTL)...")) {
     browser.start(BrowsePurpose::load_materials, path, "");
   }
-  const std::string material = selected_material_name(commands.scene(), selection);
-  const std::string save_one = "Save material '" + material + "'...";
-  if (ImGui::MenuItem(save_one.c_str())) {
-    browser.start(BrowsePurpose::save_material, path, file_name_for(material, ".json"));
+  const Scene& scene = commands.scene();
+  if (ImGui::MenuItem("Save the selected material...")) {
+    browser.start(BrowsePurpose::save_material, path,
+                  suggested_file_name(scene, selection.object, "save-material"));
   }
   if (ImGui::MenuItem("Save all materials (JSON, MTL)...")) {
-    const std::string stem = path.empty() ? "scene" : std::filesystem::path(path).stem().string();
-    browser.start(BrowsePurpose::save_materials, path, file_name_for(stem + " materials", ".json"));
+    browser.start(BrowsePurpose::save_materials, path,
+                  suggested_file_name(scene, selection.object, "save-materials"));
   }
   if (ImGui::MenuItem("Export GLSL...")) {
-    browser.start(BrowsePurpose::export_glsl, path, file_name_for(material, ".frag"));
+    browser.start(BrowsePurpose::export_glsl, path,
+                  suggested_file_name(scene, selection.object, "export-glsl"));
   }
   ImGui::Separator();
   if (ImGui::MenuItem("Screenshot", "Ctrl+S")) exports.start(view.screenshot_kind);

@@ -154,7 +154,9 @@ glm::vec3 placement_offset(const Scene& scene, const glm::vec3& lo, const glm::v
     offsets_of[c] = glm::vec3(places[c].x - centre.x, support - lo.y, places[c].y - centre.z);
     centres[c] = centre + offsets_of[c];
     if (narrow) continue;
-    const Box placed{lo + offsets_of[c], hi + offsets_of[c]};
+    // Clear of the others by a tenth of its size, so that it stands beside them, not against them.
+    const glm::vec3 gap(0.1f * side);
+    const Box placed{lo + offsets_of[c] - gap, hi + offsets_of[c] + gap};
     free[c] = std::none_of(boxes.begin(), boxes.end(), [&](const Box& b) {
       return std::find(supports.begin(), supports.end(), b.object) == supports.end() &&
              overlap(placed, b, slack);

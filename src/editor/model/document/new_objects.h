@@ -21,15 +21,16 @@ namespace gloss {
 float new_object_size(const Scene& scene);
 
 // The translation that moves an object whose own bounds are lo..hi (world units) to its place:
-// its lowest point on the surface below it, its box clear of every visible object's box (the
-// surface it rests on aside), as near the camera target as such a place is. Candidates lie on a
-// grid around the target, nearest first, distances along the view counting three times (beside
-// the objects as the camera sees them, not in front of or behind them), and places the camera
-// sees (centre in the image, no object before it) before others; the surface under a candidate is
-// the highest hit of rays cast straight down at its footprint's corners and centre from above where
-// it would rest, and a candidate whose rays meet anything but the top of an object at least as wide
-// as its footprint (the shoulder of a sphere, a post) is passed over; with no surface below, the
-// scene's lowest point. In an empty scene the object is centred on the camera target.
+// its lowest point on the surface below it, its box clear of every visible object's box by a
+// tenth of its largest side (the surface it rests on aside), as near the camera target as such a
+// place is. Candidates lie on a grid around the target, nearest first, distances along the view
+// counting three times (beside the objects as the camera sees them, not in front of or behind
+// them), and places the camera sees (centre in the image, no object before it) before others; the
+// surface under a candidate is the highest hit of rays cast straight down at its footprint's
+// corners and centre from above where it would rest, and a candidate whose rays meet anything but
+// the top of an object at least as wide as its footprint (the shoulder of a sphere, a post) is
+// passed over; with no surface below, the scene's lowest point. In an empty scene the object is
+// centred on the camera target.
 glm::vec3 placement_offset(const Scene& scene, const glm::vec3& lo, const glm::vec3& hi);
 
 // A new primitive of type (sphere, quad, box or teapot; not mesh) with its own grey material

@@ -219,7 +219,10 @@ ScriptAction parse_line(Tokens& t) {
   }
   if (verb == "light") return parse_light(t);
   // Issue 24: objects by index or name, material names (script_objects.cpp).
-  if (verb == "object" || verb == "material" || verb == "assign") return parse_object_line(t);
+  if (verb == "object" || verb == "material" || verb == "assign" || verb == "save" ||
+      verb == "browse" || verb == "gizmo") {
+    return parse_object_line(t);
+  }
   if (verb == "tessellation") {  // every teapot's segments per patch side; the command checks it
     return Command(SetTessellation{static_cast<int>(t.whole("segments per patch side"))});
   }

@@ -148,12 +148,27 @@ struct ObjectLineAction {
   SetField field;     // field: the transform field and value (index set when the line runs)
 };
 
+// `save PATH`: the scene saved to PATH as File > Save scene as does (PATH becomes its file).
+struct SaveAction {
+  std::string path;
+};
+// `browse save-scene|save-material|save-materials|export-glsl|open-scene|add-model`: the file
+// panel opened as the File menu opens it; prints `browse: FOLDER | NAME` (where it starts and
+// the name it suggests), so a script can check and a window screenshot can show them.
+struct BrowseAction {
+  std::string what;
+};
+// `gizmo move|rotate|scale`: the viewport gizmo's mode (keys W, E, R).
+struct GizmoAction {
+  GizmoMode mode = GizmoMode::move;
+};
+
 using ScriptAction =
     std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction, ViewAction,
                  ExposureAction, SelectAction, StatsAction, SleepAction, AnimateAction, QuitAction,
                  QualityAction, InspectAction, ClippedOverlayAction, SnapshotAction, MemoryAction,
                  ExportGlslAction, RendererAction, ShadingAction, ShadowMapAction, ShadowBiasAction,
-                 MouseAction, ObjectLineAction>;
+                 MouseAction, ObjectLineAction, SaveAction, BrowseAction, GizmoAction>;
 
 struct ScriptLine {
   int line = 0;  // 1-based line number in the file

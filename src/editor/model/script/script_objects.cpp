@@ -88,6 +88,25 @@ ObjectLineAction parse_object(Tokens& t) {
 ScriptAction parse_object_line(Tokens& t) {
   const std::string& verb = t.words[0];
   if (verb == "object") return parse_object(t);
+  if (verb == "save") return SaveAction{t.word("scene path")};
+  if (verb == "browse") {
+    const std::string& what = t.word("what to browse for");
+    for (const char* known : {"save-scene", "save-material", "save-materials", "export-glsl",
+                              "open-scene", "add-model"}) {
+      if (what == known) return BrowseAction{what};
+    }
+    throw std::runtime_error(
+        "browse takes save-scene, save-material, save-materials, export-glsl, open-scene or "
+        "add-model, got '" +
+        what + "'");
+  }
+  if (verb == "gizmo") {
+    const std::string& mode = t.word("gizmo mode");
+    if (mode == "move") return GizmoAction{GizmoMode::move};
+    if (mode == "rotate") return GizmoAction{GizmoMode::rotate};
+    if (mode == "scale") return GizmoAction{GizmoMode::scale};
+    throw std::runtime_error("gizmo takes move, rotate or scale, got '" + mode + "'");
+  }
   ObjectLineAction a;
   if (verb == "material") {
     const std::string& what = t.word("material action");

@@ -5,9 +5,12 @@
 
 #include "base/error.h"
 #include "base/overloaded.h"
+#include "editor/model/document/document.h"
 #include "editor/model/export/glsl_export.h"
 #include "editor/model/measure/memory_report.h"
 #include "editor/model/measure/pixel_report.h"
+#include "editor/model/session/file_defaults.h"
+#include "io/scene/scene_loader.h"
 #include "reference/pixel_inspection.h"
 
 namespace gloss {
@@ -175,6 +178,12 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
               return LineResult::go_on();
             },
             [&](const ObjectLineAction& a) { return object_line(host, a, where); },
+            [&](const SaveAction& a) { return host.save(a, where); },
+            [&](const BrowseAction& a) { return host.browse(a); },
+            [&](const GizmoAction& a) {
+              host.view().gizmo = a.mode;
+              return LineResult::go_on();
+            },
             [&](const ShadowBiasAction& a) {
               host.view().raster.shadow_bias = a.texels;
               return LineResult::go_on();
@@ -184,6 +193,32 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
   } catch (const CommandError& e) {
     return bad_line(where, e.what());
   }
+}
+
+LineResult ScriptHost::save(const SaveAction& a, const std::string& where) {
+  try {
+    Scene scene = layer().scene();
+    move_document(scene, a.path);  // relative model paths follow the new folder
+    save_scene(scene, a.path);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s%s\n", where.c_str(), e.what());
+    return LineResult::stop(1);
+  }
+  layer().set_path(a.path);
+  layer().mark_saved();
+  std::printf("saved scene %s\n", a.path.c_str());
+  std::fflush(stdout);
+  return LineResult::go_on();
+}
+
+LineResult ScriptHost::browse(const BrowseAction& a) {
+  const Scene& scene = layer().scene();
+  const bool save = a.what.rfind("save", 0) == 0 || a.what == "export-glsl";
+  const std::filesystem::path folder = save ? save_folder("") : open_folder("", scene.path);
+  std::printf("browse: %s | %s\n", folder.string().c_str(),
+              suggested_file_name(scene, selected_object(), a.what).c_str());
+  std::fflush(stdout);
+  return LineResult::go_on();
 }
 
 LineResult ScriptHost::memory() {

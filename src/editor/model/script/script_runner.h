@@ -56,6 +56,12 @@ class ScriptHost {
   virtual LineResult memory();
   // A viewport gesture (script.h, MouseAction); nothing without a display.
   virtual LineResult mouse(const MouseAction&) { return LineResult::go_on(); }
+  // `save PATH`: saves the document there and makes it the document's file; the editor's host
+  // goes through its file actions (recent files, the last folder).
+  virtual LineResult save(const SaveAction& action, const std::string& where);
+  // `browse WHAT`: prints where the file panel starts and what it suggests; this default has no
+  // panel and no last folder (file_defaults.h's rules alone).
+  virtual LineResult browse(const BrowseAction& action);
 
   // The snapshot `snapshot` takes and `view ab snapshot` compares with. Kept here by default
   // (headless runs, tests); the editor keeps it in its App so the panel's button shares it.

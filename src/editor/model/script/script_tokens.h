@@ -132,7 +132,8 @@ FieldValue parse_value(Tokens& t, const Field<S>& field) {
 Tokens split_words(const std::string& line, std::string& text);
 
 // The object and material lines (script_objects.cpp): `object ...`, `material rename OLD NEW`,
-// `assign OBJECT MATERIAL`; t.words[0] is one of object, material, assign.
+// `assign OBJECT MATERIAL`, and `save PATH`, `browse WHAT`, `gizmo MODE`; t.words[0] is one of
+// object, material, assign, save, browse, gizmo.
 ScriptAction parse_object_line(Tokens& t);
 
 }  // namespace gloss

@@ -1,5 +1,6 @@
 #include "editor/model/session/file_defaults.h"
 
+#include <algorithm>
 #include <fstream>
 #include <system_error>
 
@@ -66,6 +67,24 @@ std::string file_name_for(const std::string& name, const std::string& extension)
 std::string scene_file_name(const std::string& scene_path) {
   return scene_path.empty() ? std::string("untitled.json")
                             : fs::path(scene_path).filename().string();
+}
+
+std::string suggested_file_name(const Scene& scene, int object, const std::string& what) {
+  if (what == "save-scene") return scene_file_name(scene.path);
+  if (what == "save-materials") {
+    const std::string stem = scene.path.empty() ? "scene" : fs::path(scene.path).stem().string();
+    return file_name_for(stem + " materials", ".json");
+  }
+  if (what != "save-material" && what != "export-glsl") return "";
+  std::string material = "material";
+  if (!scene.objects.empty()) {
+    const int i = std::clamp(object, 0, static_cast<int>(scene.objects.size()) - 1);
+    const int m = scene.objects[static_cast<std::size_t>(i)].material;
+    if (m >= 0 && m < static_cast<int>(scene.material_names.size())) {
+      material = scene.material_names[static_cast<std::size_t>(m)];
+    }
+  }
+  return file_name_for(material, what == "export-glsl" ? ".frag" : ".json");
 }
 
 fs::path load_last_folder(const fs::path& config_folder) {

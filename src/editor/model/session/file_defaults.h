@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <string>
 
+#include "scene/scene.h"
+
 namespace gloss {
 
 // Whether path lies in the shipped assets (base/assets.h's asset_dir(): the source tree's
@@ -27,6 +29,11 @@ std::string file_name_for(const std::string& name, const std::string& extension)
 
 // The name Save as suggests: the scene file's name ("spheres.json") or "untitled.json".
 std::string scene_file_name(const std::string& scene_path);
+
+// The name the file panel suggests for what (a `browse` word: "save-scene", "save-material",
+// "save-materials", "export-glsl"; "" for the others): the scene's file name, the selected
+// object's material's name (.json, .frag), "<scene stem> materials.json".
+std::string suggested_file_name(const Scene& scene, int object, const std::string& what);
 
 // The last folder kept in folder/last-folder.txt; empty when there is none.
 std::filesystem::path load_last_folder(const std::filesystem::path& config_folder);

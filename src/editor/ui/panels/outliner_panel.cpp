@@ -94,7 +94,11 @@ void selection_items(Commands& commands, Selection& selection, OutlinerState& st
       std::any_of(objects.begin(), objects.end(), [&](int i) { return scene.objects[i].hidden; });
   auto item = [&](const char* label, const char* shortcut, const char* tip) {
     if (as_menu) return ImGui::MenuItem(label, shortcut);
-    ImGui::SameLine();
+    // On the same row while it fits, else on the next.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float width = ImGui::CalcTextSize(label).x + 2.0f * style.FramePadding.x;
+    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= right) ImGui::SameLine();
     const bool pressed = ImGui::SmallButton(label);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (%s)", tip, shortcut);
     return pressed;
@@ -131,7 +135,13 @@ void draw_row(Commands& commands, Selection& selection, OutlinerState& state,
   const Object o = scene.objects[static_cast<std::size_t>(i)];  // a copy: commands replace it
   ImGui::PushID(i);
   bool visible = !o.hidden;
-  if (ImGui::Checkbox("##visible", &visible)) commands.execute(SetHidden{{i}, !visible});
+  if (ImGui::Checkbox("##visible", &visible)) {
+    Object edited = o;  // the field of the object table (scene/fields/fields.h)
+    edited.hidden = !visible;
+    if (auto command = field_command(FieldPart::object, i, object_fields(), o, edited)) {
+      commands.execute(*command);
+    }
+  }
   if (ImGui::IsItemHovered()) ImGui::SetTooltip(visible ? "shown: click to hide" : "hidden");
   ImGui::SameLine();
   if (state.renaming == i) {
@@ -188,12 +198,18 @@ void draw_row(Commands& commands, Selection& selection, OutlinerState& state,
     }
     ImGui::EndPopup();
   }
-  // The type and material, dim, at the right.
-  const std::string note = std::string(to_string(o.type)) + "  " + material;
-  const float width = ImGui::CalcTextSize(note.c_str()).x;
-  const float right = ImGui::GetWindowContentRegionMax().x;
-  ImGui::SameLine(std::max(right - width, ImGui::GetCursorPosX() + 8.0f));
-  ImGui::TextDisabled("%s", note.c_str());
+  // The type and material, dim, at the right where the name leaves room (else the material
+  // alone, else nothing: the tooltip has them).
+  const float name_end = ImGui::GetItemRectMin().x + ImGui::GetStyle().FramePadding.x +
+                         ImGui::CalcTextSize(o.name.c_str()).x + 12.0f;
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  for (const std::string& note : {std::string(to_string(o.type)) + "  " + material, material}) {
+    const float width = ImGui::CalcTextSize(note.c_str()).x;
+    if (name_end + width > right) continue;
+    ImGui::SameLine(right - width - ImGui::GetWindowPos().x);
+    ImGui::TextDisabled("%s", note.c_str());
+    break;
+  }
   ImGui::PopID();
 }
 
@@ -224,7 +240,22 @@ void draw_selected_object(Commands& commands, Selection& selection, OutlinerStat
   const int i = std::clamp(selection.object, 0, count - 1);
   const Object o = scene.objects[static_cast<std::size_t>(i)];  // a copy: commands replace it
   const std::vector<int> objects = selected_objects(selection, count);
-  section_title(objects.size() > 1 ? "Selected objects (fields: the first)" : "Selected object");
+  // The section's title with the reset button at its right, then the rule.
+  ImGui::Spacing();
+  ImGui::TextDisabled("%s", objects.size() > 1 ? "First of the selection" : "Selected object");
+  ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - ImGui::CalcTextSize("Reset transform").x -
+                  2 * ImGui::GetStyle().FramePadding.x);
+  if (ImGui::SmallButton("Reset transform")) {
+    std::vector<ObjectTransform> identities(objects.size());
+    commands.execute(TransformObjects{objects, identities});
+    return;
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "back to the object's own fields: no move, rotation or scale, the pivot at "
+        "its centre");
+  }
+  ImGui::Separator();
   if (state.name_field_object != i) {
     state.name_field = o.name;
     state.name_field_object = i;
@@ -243,26 +274,12 @@ void draw_selected_object(Commands& commands, Selection& selection, OutlinerStat
     ImGui::EndCombo();
   }
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("give the selected objects an existing material");
-  Object edited = o;
-  field_widget(*find_field(object_fields(), "hidden"), edited);
-  if (auto command = field_command(FieldPart::object, i, object_fields(), o, edited)) {
-    commands.execute(*command);
-  }
   ObjectTransform t = o.transform;
   for (const Field<ObjectTransform>& field : transform_fields()) {
     transform_widget(field, t, o.type == ObjectType::sphere);
   }
   if (auto command = field_command(FieldPart::transform, i, transform_fields(), o.transform, t)) {
     commands.execute(*command);
-  }
-  if (ImGui::SmallButton("Reset transform")) {
-    std::vector<ObjectTransform> identities(objects.size());
-    commands.execute(TransformObjects{objects, identities});
-  }
-  if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip(
-        "back to the object's own fields: no move, rotation or scale, the pivot at "
-        "its centre");
   }
 }
 
@@ -313,9 +330,9 @@ void draw_outliner(Commands& commands, Selection& selection, OutlinerState& stat
     }
   }
   const std::vector<int> selected = selected_objects(selection, count);
-  // The list takes what the selected object's fields leave (about 9 rows), at least 4 rows.
+  // The list takes what the selected object's fields leave (about 8 rows), at least 4 rows.
   const float row = ImGui::GetFrameHeightWithSpacing();
-  const float list_h = std::max(ImGui::GetContentRegionAvail().y - 9.6f * row, 4.0f * row);
+  const float list_h = std::max(ImGui::GetContentRegionAvail().y - 8.2f * row, 4.0f * row);
   ImGui::BeginChild("##objects", ImVec2(0, list_h), true);
   ImGuiListClipper clipper;  // only the rows in view are drawn: 200 objects cost a screenful
   clipper.Begin(static_cast<int>(shown.size()));
