@@ -119,10 +119,15 @@ TEST(Gizmo, ARotationTurnsASelectionAboutItsCentre) {
 TEST(Gizmo, ScalingUniformlyAndAlongAnOwnAxis) {
   Scene scene = scene_with_spheres({{0, 0, 0}});
   GizmoDrag d = start(scene, {0}, GizmoMode::scale, GizmoHandle::view, {120.5f, 100.5f});
+  // 20 pixels farther from the centre, of half the gizmo's 90: 1 + 20 / 45.
   std::vector<ObjectTransform> t =
       gizmo_transforms(scene.camera, kSize, kSize, d, {140.5f, 100.5f}, false);
-  EXPECT_NEAR(t[0].scale.x, 2.0f, 1e-5f);  // twice as far from the centre
+  EXPECT_NEAR(t[0].scale.x, 1.0f + 20.0f / 45.0f, 1e-5f);
   EXPECT_EQ(t[0].translate, glm::vec3(0.0f));
+  // From a press on the centre itself: 45 pixels out doubles it.
+  d = start(scene, {0}, GizmoMode::scale, GizmoHandle::view, {100.5f, 100.5f});
+  t = gizmo_transforms(scene.camera, kSize, kSize, d, {100.5f, 55.5f}, false);
+  EXPECT_NEAR(t[0].scale.z, 2.0f, 1e-5f);
   // A sphere scales uniformly even from an axis handle.
   d = start(scene, {0}, GizmoMode::scale, GizmoHandle::x, {120.5f, 100.5f});
   t = gizmo_transforms(scene.camera, kSize, kSize, d, {130.5f, 100.5f}, false);

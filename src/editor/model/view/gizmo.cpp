@@ -251,10 +251,13 @@ std::vector<ObjectTransform> gizmo_transforms(const Camera& camera, int width, i
         k = s1 / s0;
       }
     } else {
+      // Uniform, from the centre disc: moving the cursor away from the centre by half the
+      // gizmo's length doubles the size, towards it shrinks it (the press may be at the centre,
+      // where a ratio of distances would be undefined).
       glm::vec2 c2;
       if (project_point(camera, width, height, f.centre, c2)) {
-        const double d0 = glm::length(drag.press - c2);
-        if (d0 > 1.0) k = glm::length(px - c2) / d0;
+        const double half = 0.5 * kGizmoPixels;
+        k = (half + glm::length(px - c2) - glm::length(drag.press - c2)) / half;
       }
     }
     if (snap) k = snap_to(k, kGizmoScaleSnap);

@@ -51,13 +51,13 @@ GLuint MaterialSwatches::texture(const std::string& slot, const Material& materi
 void MaterialSwatches::poll() {
   if (m_job.valid()) {
     if (m_job.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+    Slot& slot = m_slots[m_job_slot];
+    slot.key = m_job_key;  // shown, or failed: either way not asked for again
     try {
       const std::vector<unsigned char> rgb = m_job.get();
-      Slot& slot = m_slots[m_job_slot];
       slot.texture.upload_rgb8(Swatches::kSize, Swatches::kSize, rgb.data());
-      slot.key = m_job_key;
     } catch (const std::exception&) {
-      // A material the renderer refuses keeps its grey square; validation names it elsewhere.
+      // A material the renderer refuses keeps its last swatch (or grey square).
     }
   }
   if (m_wanted.empty()) return;
