@@ -23,7 +23,8 @@ App::App(GLFWwindow* glfw_window, Scene scene) : window(glfw_window), document(s
   session.config_folder = config_dir();
   session.recent = load_recent_lists(session.config_folder);
   std::error_code ec;
-  view.screenshot_dir = std::filesystem::current_path(ec).string();
+  // Screenshots go where gloss was started, unless that is the shipped assets' folder.
+  view.screenshot_dir = save_folder(std::filesystem::current_path(ec)).string();
   library.swatches.start();
   session.browser.last_folder = load_last_folder(session.config_folder);
   library.folder = library_folder();

@@ -51,6 +51,14 @@ void draw_help_window(OpenWindows& windows, const Session& session) {
     row("right or middle drag, Shift+left", "pan");
     row("mouse wheel", "zoom");
     row("left click", "select the object under the cursor");
+    // Objects (issue 24): docs/editor.md, "Objects".
+    row("drag a gizmo handle (Ctrl: snap)", "move, rotate or scale the selected objects");
+    row("W / E / R", "the gizmo moves / rotates / scales");
+    row("F", "frame the selected objects");
+    row("Delete, Ctrl+D", "delete, duplicate the selected objects");
+    row("H, Shift+H, Alt+H", "hide or show, solo the selection, show every object");
+    row("F2", "rename the selected object (the Outliner)");
+    row("Ctrl+click, Shift+click a row", "add to the selection, select a range (the Outliner)");
     row("drag a light marker", "move the light in the plane facing you");
     row("click an edge arrow", "select a light that is out of view");
     row("drag a panel's inner edge", "resize the side panels");

@@ -129,6 +129,15 @@ TEST(ScriptObjects, IndicesShiftDownAfterADeleteAndNamesFollowTheirObject) {
   EXPECT_EQ(host.layer().undo_count(), 5u);  // one step per line
 }
 
+TEST(ScriptObjects, SelectTakesANameToo) {
+  test::QuietScriptHost host(test::two_sphere_scene());
+  std::string errors;
+  ASSERT_EQ(run_all("select right\n", host, errors), 0) << errors;
+  EXPECT_EQ(host.selected_object(), 1);
+  EXPECT_EQ(run_all("select \"lefty\"\n", host, errors), 2);
+  EXPECT_NE(errors.find("run.txt:1: no object called 'lefty'"), std::string::npos) << errors;
+}
+
 TEST(ScriptObjects, AddedObjectsAreSelected) {
   test::QuietScriptHost host(test::two_sphere_scene());
   std::string errors;

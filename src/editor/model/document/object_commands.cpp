@@ -204,7 +204,7 @@ std::string object_command_label(const RenameObject& c) {
   return "rename object " + std::to_string(c.object) + " to '" + c.name + "'";
 }
 std::string object_command_label(const TransformObjects& c) {
-  return "move " + count_text(c.objects.size(), c.objects);
+  return "transform " + count_text(c.objects.size(), c.objects);
 }
 std::string object_command_label(const RenameMaterial& c) {
   return "rename material '" + c.from + "' to '" + c.to + "'";

@@ -1,5 +1,6 @@
 #include "editor/model/script/script.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -277,7 +278,10 @@ ScriptAction parse_line(Tokens& t) {
   }
   if (verb == "inspect") return parse_inspect(t);
   if (verb == "exposure") return ExposureAction{t.number("stops")};
-  if (verb == "select") return SelectAction{t.index("object index")};
+  if (verb == "select") {
+    const ObjectRef ref = parse_object_ref(t);
+    return SelectAction{std::max(ref.index, 0), ref.index < 0 ? ref.name : std::string()};
+  }
   if (verb == "stats") return StatsAction{};
   if (verb == "sleep") {
     const float seconds = t.number("seconds");

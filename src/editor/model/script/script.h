@@ -38,8 +38,10 @@ struct SnapshotAction {};
 struct ExposureAction {
   float stops = 0.0f;
 };
+// `select OBJECT`: an index, or a name resolved when the line runs (as ObjectRef below).
 struct SelectAction {
   int object = 0;
+  std::string name;  // when not empty: the object called so
 };
 // Prints the editor's frame and latency measurements on stdout, then restarts the frame-time
 // window so consecutive `stats` lines measure the interval between them.

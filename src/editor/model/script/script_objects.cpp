@@ -12,7 +12,9 @@ namespace {
 
 const char* const kPrimitives[] = {"sphere", "quad", "box", "teapot"};
 
-ObjectRef parse_ref(Tokens& t) {
+}  // namespace
+
+ObjectRef parse_object_ref(Tokens& t) {
   const bool quoted = !t.done() && t.quoted[t.next];
   const std::string& w = t.word("object (an index or a name)");
   ObjectRef ref;
@@ -25,6 +27,8 @@ ObjectRef parse_ref(Tokens& t) {
   }
   return ref;
 }
+
+namespace {
 
 ObjectLineAction parse_add(Tokens& t) {
   ObjectLineAction a;
@@ -50,7 +54,7 @@ ObjectLineAction parse_object(Tokens& t) {
     return parse_add(t);
   }
   ObjectLineAction a;
-  a.object = parse_ref(t);
+  a.object = parse_object_ref(t);
   const std::string& verb = t.word("what to do (move, rotate, scale, pivot, delete, ...)");
   using Verb = ObjectLineAction::Verb;
   const std::pair<const char*, Verb> plain[] = {{"delete", Verb::remove},
@@ -118,7 +122,7 @@ ScriptAction parse_object_line(Tokens& t) {
     return a;
   }
   a.verb = ObjectLineAction::Verb::assign;  // assign OBJECT MATERIAL
-  a.object = parse_ref(t);
+  a.object = parse_object_ref(t);
   a.text = t.word("material name");
   return a;
 }

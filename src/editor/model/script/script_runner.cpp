@@ -136,7 +136,12 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
               return LineResult::go_on();
             },
             [&](const SelectAction& a) {
-              if (a.object >= static_cast<int>(host.layer().scene().objects.size())) {
+              const Scene& scene = host.layer().scene();
+              if (!a.name.empty()) {
+                host.select(resolve_object(scene, ObjectRef{-1, a.name}));  // throws when absent
+                return LineResult::go_on();
+              }
+              if (a.object >= static_cast<int>(scene.objects.size())) {
                 return bad_line(where, "no object " + std::to_string(a.object));
               }
               host.select(a.object);

@@ -131,6 +131,10 @@ FieldValue parse_value(Tokens& t, const Field<S>& field) {
 // text: the line without its comment.
 Tokens split_words(const std::string& line, std::string& text);
 
+// An object named by the next word: a bare whole number is an index, any other word (or a quoted
+// one) a name (script_objects.cpp).
+ObjectRef parse_object_ref(Tokens& t);
+
 // The object and material lines (script_objects.cpp): `object ...`, `material rename OLD NEW`,
 // `assign OBJECT MATERIAL`, and `save PATH`, `browse WHAT`, `gizmo MODE`; t.words[0] is one of
 // object, material, assign, save, browse, gizmo.
