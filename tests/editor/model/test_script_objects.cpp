@@ -7,6 +7,7 @@
 #include "editor/model/script/script.h"
 #include "editor/model/script/script_runner.h"
 #include "support/quiet_script_host.h"
+#include "support/script_checks.h"
 #include "support/test_scene.h"
 
 namespace gloss {
@@ -68,15 +69,7 @@ TEST(ScriptObjects, ParsesEverySpelling) {
 }
 
 void expect_error_on_line(const std::string& text, int line, const std::string& words) {
-  try {
-    parse_script(text, "bad.txt");
-    ADD_FAILURE() << "no error for: " << text;
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.line(), line) << e.what();
-    EXPECT_NE(std::string(e.what()).find("bad.txt:" + std::to_string(line) + ": " + words),
-              std::string::npos)
-        << e.what();
-  }
+  test::expect_script_error(text, line, words);
 }
 
 TEST(ScriptObjects, BadLinesNameTheLine) {
@@ -91,23 +84,8 @@ TEST(ScriptObjects, BadLinesNameTheLine) {
   expect_error_on_line("object\n", 1, "missing object");
 }
 
-// Runs every line of text; returns the status of the line that stopped, 0 when none did, and
-// the error output.
 int run_all(const std::string& text, test::QuietScriptHost& host, std::string& errors) {
-  const Script s = parse_script(text, "run.txt");
-  testing::internal::CaptureStderr();
-  testing::internal::CaptureStdout();
-  int status = 0;
-  for (const ScriptLine& line : s.lines) {
-    const LineResult r = run_script_line(s, line, host);
-    if (r.next == LineResult::Next::stop) {
-      status = r.status;
-      break;
-    }
-  }
-  testing::internal::GetCapturedStdout();
-  errors = testing::internal::GetCapturedStderr();
-  return status;
+  return test::run_script_text(text, "run.txt", host, errors);
 }
 
 TEST(ScriptObjects, IndicesShiftDownAfterADeleteAndNamesFollowTheirObject) {
