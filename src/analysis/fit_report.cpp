@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/brdf_lobe.h"
 #include "physical/measured_metals.h"
 
 namespace gloss {
@@ -83,6 +84,7 @@ FitReport fit_reference_report(const PhysicalReference& reference, const FitOpti
   report.environment = match_environment(make_reference_brdf(reference), options.model);
   if (preset != nullptr) {
     report.preset = preset_name;
+    report.preset_material = *preset;
     report.preset_residual = phong_residual(
         phong_lobe(*preset, options.model, options.energy_normalize), reference, options.grid);
   }
@@ -160,6 +162,64 @@ std::vector<std::string> fit_report_lines(const FitReport& r) {
                     number("%.3f", e.residual) + ")");
   }
   return lines;
+}
+
+std::string fit_lobe_csv(const FitReport& r, double elevation_deg) {
+  // One curve: a material's diffuse plus the lobe of the given model, or its reference.
+  struct Curve {
+    std::string name;
+    Material material;
+    ShadingModel model;
+    bool energy;
+    bool reference;
+  };
+  std::vector<Curve> curves;
+  auto as_material = [](const PhongLobe& lobe) {
+    Material m;
+    m.diffuse = glm::vec3(lobe.kd);
+    m.specular = glm::vec3(lobe.ks);
+    m.shininess = static_cast<float>(lobe.alpha);
+    return m;
+  };
+  if (r.reference) {
+    Material m;
+    m.reference = r.reference;
+    curves.push_back({"reference", m, r.options.model, false, true});
+  }
+  if (r.source) {
+    curves.push_back(
+        {"source", as_material(*r.source), r.source->model, r.source->energy_normalize, false});
+  }
+  curves.push_back(
+      {"fit", as_material(r.fit.lobe), r.fit.lobe.model, r.fit.lobe.energy_normalize, false});
+  if (r.preset_material) {
+    curves.push_back(
+        {"preset", *r.preset_material, r.options.model, r.options.energy_normalize, false});
+  }
+  if (r.rule) {
+    curves.push_back(
+        {"rule", as_material(*r.rule), r.rule->model, r.rule->energy_normalize, false});
+  }
+  std::string text = "theta_deg";
+  for (const Curve& c : curves) text += "," + c.name;
+  text += "\n";
+  for (int i = 0; i <= 180; ++i) {
+    const double theta = -90.0 + i;
+    text += number("%g", theta);
+    for (const Curve& c : curves) {
+      LobeParams params;
+      params.elevation_deg = elevation_deg;
+      params.phong_alpha = params.blinn_alpha = c.material.shininess;
+      params.energy_normalize = c.energy;
+      const LobeSample s = lobe_sample(c.material, params, theta);
+      const glm::dvec3 value = c.reference                      ? s.reference
+                               : c.model == ShadingModel::phong ? s.diffuse + s.phong
+                                                                : s.diffuse + s.blinn;
+      text += "," + number("%.9g", luminance(value));
+    }
+    text += "\n";
+  }
+  return text;
 }
 
 std::string fit_report_json(const FitReport& r) {

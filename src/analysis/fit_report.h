@@ -24,6 +24,7 @@ struct FitReport {
   std::optional<EnvironmentMatch> environment;
   // ... with a preset named beside it: that preset's own lobe against the reference.
   std::string preset;
+  std::optional<Material> preset_material;
   std::optional<LobeResidual> preset_residual;
 
   // Fitted to another Phong or Blinn-Phong lobe (model to model):
@@ -44,6 +45,12 @@ FitReport fit_model_report(const PhongLobe& source, const FitOptions& options,
 std::vector<std::string> fit_report_lines(const FitReport& report);
 // ... and as a JSON document (gloss-cli fit --json).
 std::string fit_report_json(const FitReport& report);
+
+// The lobes in the plane of incidence for a light at elevation_deg (analysis/brdf_lobe.h's
+// frame and units), 181 outgoing angles from -90 to 90 degrees, as CSV with a header:
+// theta_deg, then the luminance of the reference (when fitted to one), of the source (model to
+// model), of the fitted lobe, of the preset (when named), each diffuse plus specular.
+std::string fit_lobe_csv(const FitReport& report, double elevation_deg);
 
 // The exponent of the editor's keep-highlight-size rule (Blinn-Phong = 4 x Phong), unclamped.
 double four_times_rule(double alpha, ShadingModel from, ShadingModel to);

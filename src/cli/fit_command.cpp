@@ -1,8 +1,9 @@
 // gloss-cli fit --reference gold|silver|aluminium|copper|chromium|brass|dielectric
 //               [--base R,G,B] --roughness R [--model phong|blinn-phong] [--energy-normalize]
 //               [--metric l2|lightness] [--max-angle DEG] [--preset NAME] [--json FILE]
-//               [--add-to FILE --name NAME]
-// gloss-cli fit --preset NAME --model phong|blinn-phong [--from phong|blinn-phong] ...
+//               [--lobe-csv FILE [--elevation DEG]] [--add-to FILE --name NAME]
+// gloss-cli fit --preset NAME --model phong|blinn-phong [--from phong|blinn-phong]
+//               [--source-shininess A] ...
 // The Phong or Blinn-Phong constants closest to a physical reference (docs/phong-vs-reference.md),
 // or to a preset shown in the other model (model to model, beside the 4x exponent rule).
 #include <cmath>
@@ -31,9 +32,11 @@ const char* const kWhere = "fit";
 
 struct FitArgs {
   std::string reference, base, model = "phong", from, metric = "l2", preset, json, add_to, name;
-  double roughness = 0.0, max_angle = 80.0;
+  std::string lobe_csv;
+  double roughness = 0.0, max_angle = 80.0, elevation = 45.0, source_shininess = 0.0;
   bool energy_normalize = false;
   CLI::Option *roughness_option = nullptr, *base_option = nullptr, *from_option = nullptr;
+  CLI::Option* source_shininess_option = nullptr;
 };
 
 std::vector<std::string> reference_names() {
@@ -165,6 +168,9 @@ void add_to_materials_file(const std::string& path, const std::string& name, con
 void run_fit(const FitArgs& args) {
   const FitOptions options = options_of(args);
   if (!args.add_to.empty() && args.name.empty()) fail("--name", "--add-to needs a --name");
+  if (!(args.elevation >= 0.0 && args.elevation <= 90.0)) {
+    fail("--elevation", "must be from 0 to 90 degrees, got " + number_text(args.elevation));
+  }
   if (args.reference.empty() && args.preset.empty()) {
     fail("--reference",
          "give --reference KIND with --roughness R, or --preset NAME to fit one "
@@ -174,6 +180,9 @@ void run_fit(const FitArgs& args) {
   const Preset* preset = args.preset.empty() ? nullptr : &preset_of(args.preset);
   if (!args.reference.empty()) {
     if (*args.from_option) fail("--from", "--from is for fitting a preset, not a reference");
+    if (*args.source_shininess_option) {
+      fail("--source-shininess", "--source-shininess is for fitting a preset, not a reference");
+    }
     report = fit_reference_report(reference_of(args), options,
                                   preset != nullptr ? &preset->material : nullptr, args.preset);
   } else {
@@ -181,13 +190,25 @@ void run_fit(const FitArgs& args) {
     const ShadingModel from = *args.from_option                      ? model_of("--from", args.from)
                               : options.model == ShadingModel::phong ? ShadingModel::blinn_phong
                                                                      : ShadingModel::phong;
-    report = fit_model_report(phong_lobe(preset->material, from, options.energy_normalize), options,
+    Material source = preset->material;
+    if (*args.source_shininess_option) {
+      if (!(args.source_shininess >= 0.0 && args.source_shininess <= kMaxFitExponent)) {
+        fail("--source-shininess",
+             "must be from 0 to 1e6, got " + number_text(args.source_shininess));
+      }
+      source.shininess = static_cast<float>(args.source_shininess);
+    }
+    report = fit_model_report(phong_lobe(source, from, options.energy_normalize), options,
                               "preset " + args.preset);
   }
   for (const std::string& line : fit_report_lines(report)) std::cout << line << "\n";
   if (!args.json.empty()) {
     write_text_atomically(args.json, fit_report_json(report));
     std::cout << "wrote " << args.json << "\n";
+  }
+  if (!args.lobe_csv.empty()) {
+    write_text_atomically(args.lobe_csv, fit_lobe_csv(report, args.elevation));
+    std::cout << "wrote " << args.lobe_csv << "\n";
   }
   if (!args.add_to.empty()) {
     add_to_materials_file(args.add_to, args.name, fitted_material(report, nullptr));
@@ -222,7 +243,14 @@ void add_fit_command(CLI::App& app) {
                   "preset shown in the other model (--from), beside the 4x exponent rule");
   args->from_option =
       cmd->add_option("--from", args->from, "The preset's model (default: the other one)");
+  args->source_shininess_option = cmd->add_option("--source-shininess", args->source_shininess,
+                                                  "The preset's exponent replaced by this one");
   cmd->add_option("--json", args->json, "Also write the result as JSON to FILE");
+  cmd->add_option("--lobe-csv", args->lobe_csv,
+                  "Also write the lobes in the plane of incidence (luminance per outgoing angle) "
+                  "as CSV to FILE");
+  cmd->add_option("--elevation", args->elevation,
+                  "The light's elevation for --lobe-csv, degrees (default 45)");
   cmd->add_option("--add-to", args->add_to,
                   "Add (or replace) the fitted material in the materials file FILE");
   cmd->add_option("--name", args->name, "The material's name in --add-to's file");

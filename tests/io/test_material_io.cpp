@@ -131,6 +131,7 @@ TEST(MaterialIo, ReferenceBlockRoundTrips) {
   EXPECT_EQ(m.preset, "gold");
   const json written = material_to_json(m);
   EXPECT_EQ(written["reference"]["kind"], "gold");
+  EXPECT_FALSE(written["reference"].contains("base"));  // a metal's unused default
   EXPECT_EQ(material_from_json(json::parse(written.dump()), "f", "m"), m);
 
   Material plastic;

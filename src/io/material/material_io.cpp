@@ -136,6 +136,12 @@ nlohmann::ordered_json material_to_json(const Material& material) {
   if (material.reference) {
     nlohmann::ordered_json reference = nlohmann::ordered_json::object();
     write_fields(reference_fields(), *material.reference, reference);
+    // A metal's base colour is kept but unused: a file shows it only when it is not the
+    // default, so a metal's block reads {"kind", "roughness"}.
+    if (is_metal(material.reference->kind) &&
+        material.reference->base == PhysicalReference{}.base) {
+      reference.erase("base");
+    }
     value[kReferenceKey] = reference;
   }
   return value;
