@@ -189,9 +189,12 @@ bool parse_view_extra(Tokens& t, const std::string& mode, ScriptAction& out) {
         v.ab_source = AbSource::cpu_gl;
       } else if (source == "pixel-vertex") {
         v.ab_source = AbSource::pixel_vertex;
+      } else if (source == "reference") {
+        v.ab_source = AbSource::reference;
       } else {
         throw std::runtime_error(
-            "view ab takes nothing, 'snapshot', 'cpu-gl' or 'pixel-vertex', got '" + source + "'");
+            "view ab takes nothing, 'snapshot', 'cpu-gl', 'pixel-vertex' or 'reference', got '" +
+            source + "'");
       }
     }
     out = v;
@@ -294,6 +297,46 @@ bool parse_raster_line(Tokens& t, const std::string& verb, ScriptAction& out) {
   return false;
 }
 
+// `reference METAL ROUGHNESS`, `reference dielectric R G B ROUGHNESS`, `reference none` and
+// `fit phong|blinn-phong [l2|lightness]` (issue 23). Ranges are the reference table's, checked
+// here so a bad line fails before the script runs.
+ScriptAction parse_reference(Tokens& t) {
+  const std::string& kind = t.word("reference (a metal, dielectric or none)");
+  if (kind == "none") return ReferenceAction{};
+  PhysicalReference r;
+  if (!parse_reference_kind(kind.c_str(), r.kind)) {
+    std::string names;
+    for (int i = 0; i < kReferenceKinds; ++i) {
+      names += std::string(names.empty() ? "" : ", ") + to_string(static_cast<ReferenceKind>(i));
+    }
+    throw std::runtime_error("reference must be one of " + names + " or none, got '" + kind + "'");
+  }
+  if (!is_metal(r.kind)) r.base = t.vec3("base colour R G B");
+  r.roughness = t.number("roughness");
+  for (const Field<PhysicalReference>& f : reference_fields()) {
+    const FieldProblem problem = field_problem(f, f.get(r));
+    if (!problem.message.empty()) {
+      throw std::runtime_error(std::string("reference ") + f.key + " " + problem.message);
+    }
+  }
+  return ReferenceAction{r};
+}
+
+ScriptAction parse_fit(Tokens& t) {
+  FitAction a;
+  const std::string& model = t.word("model to fit");
+  if (!parse_shading_model(model, a.model)) {
+    throw std::runtime_error("fit must be phong or blinn-phong, got '" + model + "'");
+  }
+  if (!t.done()) {
+    const std::string& metric = t.word("metric");
+    if (!parse_lobe_metric(metric.c_str(), a.metric)) {
+      throw std::runtime_error("the fit's metric must be l2 or lightness, got '" + metric + "'");
+    }
+  }
+  return a;
+}
+
 ScriptAction parse_line(Tokens& t) {
   const std::string& verb = t.words[0];
   if (verb == "preset") {
@@ -362,14 +405,16 @@ ScriptAction parse_line(Tokens& t) {
       if (!parse_term_view(term, v.term)) throw std::runtime_error("unknown term '" + term + "'");
     } else if (!parse_view_mode(mode, v.mode) || v.mode == ViewMode::single) {
       throw std::runtime_error(
-          "view must be render, terms, ab, lobe, 'term NAME', 'ab snapshot|cpu-gl|pixel-vertex' "
-          "or 'clipped on|off', got '" +
+          "view must be render, terms, ab, lobe, 'term NAME', "
+          "'ab snapshot|cpu-gl|pixel-vertex|reference' or 'clipped on|off', got '" +
           mode + "'");
     }
     if (v.mode == ViewMode::lobe && !t.done()) return parse_lobe_elevation(t, v);
     return v;
   }
   if (verb == "inspect") return parse_inspect(t);
+  if (verb == "reference") return parse_reference(t);
+  if (verb == "fit") return parse_fit(t);
   if (verb == "exposure") return ExposureAction{t.number("stops")};
   if (verb == "select") return SelectAction{t.index("object index")};
   if (verb == "stats") return StatsAction{};

@@ -25,7 +25,9 @@ bool parse_term_view(const std::string& name, TermView& term);
 // What the A/B view compares (ab_compare.h): the document as Phong | Blinn-Phong, the snapshot
 // taken with Snapshot | the live document, the ray tracer at 1 spp | the raster path (cpu_gl), or
 // the raster path per pixel | per vertex (pixel_vertex).
-enum class AbSource { models, snapshot, cpu_gl, pixel_vertex };
+// reference: the material (Phong or Blinn-Phong, as the scene) against its physical reference
+// (docs/spec/physical-reference.md), both at 1 spp.
+enum class AbSource { models, snapshot, cpu_gl, pixel_vertex, reference };
 
 enum class ScreenshotKind { viewport, terms, window };
 const char* to_string(ScreenshotKind kind);
