@@ -25,7 +25,10 @@ ReferenceFit fit_to_reference(const Scene& scene, int object, ShadingModel model
   options.metric = metric;
   options.energy_normalize = scene.render.energy_normalize;
   ReferenceFit out;
+  out.reference = *material.reference;
   out.report = fit_reference_report(*material.reference, options);
+  out.before = phong_residual(phong_lobe(material, model, options.energy_normalize),
+                              *material.reference, options.grid);
   out.command.object = object;
   out.command.material = apply_fit(material, out.report.fit);
   if (scene.render.model != model) out.command.model = model;

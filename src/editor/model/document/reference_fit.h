@@ -9,8 +9,10 @@
 namespace gloss {
 
 struct ReferenceFit {
-  ApplyFit command;  // the fitted material, and the model switch when the scene uses the other
-  FitReport report;  // constants, residuals, time
+  ApplyFit command;     // the fitted material, and the model switch when the scene uses the other
+  FitReport report;     // constants, residuals, time
+  LobeResidual before;  // the material as it was, in the fitted model, against the reference
+  PhysicalReference reference;  // what was fitted to
 };
 
 // Fits model to the reference of the material object `object` uses, with the scene's

@@ -203,13 +203,24 @@ bool parse_view_extra(Tokens& t, const std::string& mode, ScriptAction& out) {
   return false;
 }
 
-// `view lobe ELEVATION_DEG` and `inspect X Y` (the lobe view and the pixel inspector).
+// `view lobe [ELEVATION_DEG] [log|linear]` and `inspect X Y` (the lobe view and the pixel
+// inspector).
 ScriptAction parse_lobe_elevation(Tokens& t, ViewAction v) {
-  const float degrees = t.number("light elevation in degrees");
-  if (!(degrees >= 0.0f && degrees <= 90.0f)) {
-    throw std::runtime_error("the light elevation must be 0..90 degrees");
+  const std::string& first = t.words[t.next];
+  if (first != "log" && first != "linear") {
+    const float degrees = t.number("light elevation in degrees");
+    if (!(degrees >= 0.0f && degrees <= 90.0f)) {
+      throw std::runtime_error("the light elevation must be 0..90 degrees");
+    }
+    v.lobe_elevation_deg = degrees;
   }
-  v.lobe_elevation_deg = degrees;
+  if (!t.done()) {
+    const std::string& radius = t.word("radius scale");
+    if (radius != "log" && radius != "linear") {
+      throw std::runtime_error("the lobe's radius is log or linear, got '" + radius + "'");
+    }
+    v.lobe_log_radius = radius == "log" ? 1 : 0;
+  }
   return v;
 }
 

@@ -30,6 +30,7 @@ struct ViewAction {
   // `view ab reference`
   AbSource ab_source = AbSource::models;
   float lobe_elevation_deg = -1.0f;  // for ViewMode::lobe: 0..90, or -1 to keep the current one
+  int lobe_log_radius = -1;          // for ViewMode::lobe: 1 `log`, 0 `linear`, -1 keep
 };
 // ---- Exposure and snapshot comparison (issue 13, items 3 and 4) ----
 // `view clipped on|off`: the clipped-pixel overlay.

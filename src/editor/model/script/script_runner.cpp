@@ -116,6 +116,7 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
               if (a.lobe_elevation_deg >= 0.0f) {
                 host.view().lobe_elevation_deg = a.lobe_elevation_deg;
               }
+              if (a.lobe_log_radius >= 0) host.view().lobe_log_radius = a.lobe_log_radius == 1;
               return LineResult::go_on();
             },
             [&](const ExposureAction& a) {

@@ -60,6 +60,9 @@ struct ViewSettings {
   // The lobe view (ViewMode::lobe).
   float lobe_elevation_deg = 45.0f;  // light above the surface, degrees, 0..90
   LobeEnergy lobe_energy = LobeEnergy::scene;
+  // The plot's radius on a logarithmic scale (three decades below the largest value), so a
+  // physical reference's bright peak and a Phong lobe of ks <= 1 read in one plot.
+  bool lobe_log_radius = false;
 
   // The pixel inspector: a pixel of the document's render size, read at its centre.
   bool show_inspector = false;
