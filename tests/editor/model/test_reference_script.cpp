@@ -51,6 +51,24 @@ TEST(ReferenceScript, Parses) {
   EXPECT_EQ(std::get<ViewAction>(s.lines[5].action).ab_source, AbSource::reference);
 }
 
+// The lobe view's radius scale: `view lobe [ELEVATION] [log|linear]`.
+TEST(ReferenceScript, LobeViewLogRadius) {
+  const Script s = parse_script("view lobe 30 log\nview lobe linear\nview lobe 60\n", "l.txt");
+  const ViewAction& a = std::get<ViewAction>(s.lines[0].action);
+  EXPECT_EQ(a.lobe_elevation_deg, 30.0f);
+  EXPECT_EQ(a.lobe_log_radius, 1);
+  const ViewAction& b = std::get<ViewAction>(s.lines[1].action);
+  EXPECT_EQ(b.lobe_elevation_deg, -1.0f);
+  EXPECT_EQ(b.lobe_log_radius, 0);
+  EXPECT_EQ(std::get<ViewAction>(s.lines[2].action).lobe_log_radius, -1);
+  EXPECT_THROW(parse_script("view lobe 30 loud\n", "l.txt"), InputError);
+  test::QuietScriptHost host(test::two_sphere_scene());
+  std::string out, errors;
+  run_all("view lobe 20 log\n", host, out, errors);
+  EXPECT_TRUE(host.view().lobe_log_radius);
+  EXPECT_EQ(host.view().lobe_elevation_deg, 20.0f);
+}
+
 TEST(ReferenceScript, BadLinesNameTheLine) {
   const char* bad[] = {"reference gld 0.2",
                        "reference gold",
