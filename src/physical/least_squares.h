@@ -23,7 +23,7 @@ struct LeastSquaresProblem {
 
 struct LeastSquaresOptions {
   int max_iterations = 200;
-  double relative_tolerance = 1e-12;  // stop when a step lowers the cost by less than this
+  double relative_tolerance = 1e-10;  // stop when a step lowers the cost by less than this
   double step_tolerance = 1e-12;      // ... or moves x by less than this (relative)
 };
 

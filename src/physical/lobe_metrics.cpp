@@ -42,6 +42,17 @@ double lightness_slope(double x) {
   return 116.0 / (3.0 * c * c);
 }
 
+void lightness_and_slope(double x, double& value, double& slope) {
+  if (!(x > kDelta3)) {
+    value = lightness(x);
+    slope = 116.0 / (3.0 * kDelta * kDelta);
+    return;
+  }
+  const double c = std::cbrt(x);
+  value = 116.0 * c - 16.0;
+  slope = 116.0 / (3.0 * c * c);
+}
+
 double lobe_error(LobeMetric metric, const LobeSamples& samples, const SampledLobe& a,
                   const SampledLobe& b) {
   if (a.size() != samples.pairs.size() || b.size() != samples.pairs.size()) {

@@ -25,6 +25,8 @@ bool parse_lobe_metric(const char* name, LobeMetric& metric);
 // CIE 1976 L* of a linear value (white 1), and its derivative; negative values count as 0.
 double lightness(double x);
 double lightness_slope(double x);
+// Both at once (one cube root): the fit's residuals and their Jacobian.
+void lightness_and_slope(double x, double& value, double& slope);
 
 // The value a metric compares (x itself, or L*(x)).
 inline double metric_value(LobeMetric metric, double x) {
