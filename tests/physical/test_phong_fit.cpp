@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include "physical/microfacet.h"
 #include "physical/phong_fit.h"
@@ -99,7 +100,7 @@ TEST(PhongFit, GgxResidualIsReported) {
   }
 }
 
-// The same request twice gives the same constants, bit for bit.
+// The same request twice gives the same constants, bit for bit, on any number of threads.
 TEST(PhongFit, Deterministic) {
   PhysicalReference r;
   r.kind = ReferenceKind::dielectric;
@@ -113,6 +114,12 @@ TEST(PhongFit, Deterministic) {
   EXPECT_EQ(a.lobe.ks, b.lobe.ks);
   EXPECT_EQ(a.lobe.alpha, b.lobe.alpha);
   EXPECT_EQ(a.residual.l2, b.residual.l2);
+  // On one thread too: the rows are evaluated independently of how they are split.
+  const tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+  const PhongFit c = fit_phong_to_reference(r, options);
+  EXPECT_EQ(a.lobe.kd, c.lobe.kd);
+  EXPECT_EQ(a.lobe.ks, c.lobe.ks);
+  EXPECT_EQ(a.lobe.alpha, c.lobe.alpha);
 }
 
 // Model to model: the best Blinn-Phong lobe for a Phong one is closer than the 4x rule's (kd, ks
