@@ -14,9 +14,7 @@ namespace gloss {
 namespace {
 
 std::string rgb(const glm::dvec3& c) {
-  char text[96];
-  std::snprintf(text, sizeof text, "%.6g %.6g %.6g", c.x, c.y, c.z);
-  return text;
+  return rgb_text(c);
 }
 
 std::string number(const char* format, double x) {
@@ -67,6 +65,18 @@ double elapsed_ms(std::chrono::steady_clock::time_point start) {
 }
 
 }  // namespace
+
+std::string rgb_text(const glm::dvec3& c, int digits) {
+  char text[96];
+  std::snprintf(text, sizeof text, "%.*g %.*g %.*g", digits, c.x, digits, c.y, digits, c.z);
+  return text;
+}
+
+std::string number_text(double x, int digits) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*g", digits, x);
+  return text;
+}
 
 double four_times_rule(double alpha, ShadingModel from, ShadingModel to) {
   if (from == to) return alpha;

@@ -52,6 +52,10 @@ std::string fit_report_json(const FitReport& report);
 // model), of the fitted lobe, of the preset (when named), each diffuse plus specular.
 std::string fit_lobe_csv(const FitReport& report, double elevation_deg);
 
+// A colour and a number as the report writes them, with digits significant digits.
+std::string rgb_text(const glm::dvec3& c, int digits = 6);
+std::string number_text(double x, int digits = 6);
+
 // The exponent of the editor's keep-highlight-size rule (Blinn-Phong = 4 x Phong), unclamped.
 double four_times_rule(double alpha, ShadingModel from, ShadingModel to);
 

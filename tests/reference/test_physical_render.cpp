@@ -6,18 +6,14 @@
 #include <gtest/gtest.h>
 
 #include "reference/reference_renderer.h"
+#include "support/image_compare.h"
 #include "support/scene_fixtures.h"
 
 namespace gloss {
 namespace {
 
+using test::expect_rgb;
 using test::head_on_sphere_scene;
-
-void expect_rgb(const glm::vec3& got, double r, double g, double b, double tol) {
-  EXPECT_NEAR(got.x, r, tol);
-  EXPECT_NEAR(got.y, g, tol);
-  EXPECT_NEAR(got.z, b, tol);
-}
 
 ReferenceOptions physical() {
   ReferenceOptions o;

@@ -24,18 +24,6 @@ namespace gloss {
 
 namespace {
 
-std::string rgb_text(const glm::dvec3& c) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.3g %.3g %.3g", c.x, c.y, c.z);
-  return text;
-}
-
-std::string number_text(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", x);
-  return text;
-}
-
 // The kind combo: "none" or one of the reference kinds, each choice a command (a new kind keeps
 // the roughness and base colour; a material without a reference gets the last one removed).
 void draw_kind(Commands& commands, ReferencePanelState& state, int object,
@@ -92,9 +80,9 @@ void collect_fit(Commands& commands, ReferencePanelState& state) {
     state.report = {std::string(to_string(f.lobe.model)) +
                         (f.lobe.energy_normalize ? ", normalised" : "") + ", minimising " +
                         to_string(fit.report.options.metric),
-                    "kd " + rgb_text(f.lobe.kd),
-                    "ks " + rgb_text(f.lobe.ks),
-                    "alpha " + number_text(f.lobe.alpha),
+                    "kd " + rgb_text(f.lobe.kd, 4),
+                    "ks " + rgb_text(f.lobe.ks, 4),
+                    "alpha " + number_text(f.lobe.alpha, 4),
                     "residual now: " + residual_summary(f.residual),
                     "before the fit: " + residual_summary(fit.before)};
     char time[64];
@@ -169,7 +157,7 @@ void draw_reference_panel(Commands& commands, Selection& selection, ViewSettings
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
     if (is_metal(reference->kind)) {
       ImGui::TextWrapped("F0 %s, measured, linear sRGB (%s)",
-                         rgb_text(reference_f0(reference->kind)).c_str(), kMeasuredF0Source);
+                         rgb_text(reference_f0(reference->kind), 3).c_str(), kMeasuredF0Source);
     } else {
       ImGui::TextWrapped("F0 0.04 (index 1.5) over a Lambertian base colour");
     }
