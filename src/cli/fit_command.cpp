@@ -107,8 +107,9 @@ FitOptions options_of(const FitArgs& args) {
     fail("--metric",
          "unknown metric '" + args.metric + "'" + did_you_mean(args.metric, {"l2", "lightness"}));
   }
-  if (!(args.max_angle > 0.0 && args.max_angle <= 90.0)) {
-    fail("--max-angle", "must be > 0 and <= 90 degrees, got " + number_text(args.max_angle));
+  // Below 10 degrees too few light-view pairs are left to fit three parameters per channel.
+  if (!(args.max_angle >= 10.0 && args.max_angle <= 90.0)) {
+    fail("--max-angle", "must be from 10 to 90 degrees, got " + number_text(args.max_angle));
   }
   options.grid.max_angle_deg = args.max_angle;
   return options;
@@ -237,7 +238,7 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("--metric", args->metric,
                   "What is minimised: l2 (Ngan et al. 2005, default) or lightness (CIE L*)");
   cmd->add_option("--max-angle", args->max_angle,
-                  "Light and view within this many degrees of the normal (default 80)");
+                  "Light and view within this many degrees of the normal, 10..90 (default 80)");
   cmd->add_option("--preset", args->preset,
                   "With --reference: also the preset's own error; alone: fit --model to the "
                   "preset shown in the other model (--from), beside the 4x exponent rule");

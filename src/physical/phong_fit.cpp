@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -165,6 +167,10 @@ LeastSquaresResult refine(const std::vector<FitPair>& pairs, const SampledLobe& 
 PhongFit fit_phong_lobe(const LobeSamples& samples, const SampledLobe& target,
                         const FitOptions& options) {
   const std::vector<FitPair> pairs = fit_pairs(samples, options.model);
+  if (pairs.size() < 64 || target.size() != pairs.size()) {
+    throw std::invalid_argument("fit_phong_lobe: " + std::to_string(pairs.size()) +
+                                " light-view pairs, too few to fit (widen max_angle_deg)");
+  }
   PhongFit fit;
   fit.pairs = static_cast<int>(pairs.size());
   fit.lobe.model = options.model;

@@ -36,7 +36,8 @@ struct PhongFit {
   int pairs = 0;          // light-view pairs integrated over
 };
 
-// To a lobe sampled over samples (any target).
+// To a lobe sampled over samples (any target). Throws std::invalid_argument when the samples
+// hold fewer than 64 pairs (a max_angle_deg of a few degrees) or target is not sampled on them.
 PhongFit fit_phong_lobe(const LobeSamples& samples, const SampledLobe& target,
                         const FitOptions& options);
 

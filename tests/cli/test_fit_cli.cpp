@@ -124,6 +124,7 @@ TEST_F(FitCli, BadInputIsOneErrorLineAndExitTwo) {
   expect_bad_input("--reference gold --roughness 0.2 --model phon", "did you mean 'phong'");
   expect_bad_input("--reference gold --roughness 0.2 --metric l3", "--metric");
   expect_bad_input("--reference gold --roughness 0.2 --max-angle 95", "--max-angle");
+  expect_bad_input("--reference gold --roughness 0.2 --max-angle 1", "from 10 to 90 degrees");
   expect_bad_input("--preset gol", "unknown preset 'gol'");
   expect_bad_input("", "give --reference");
   expect_bad_input("--reference gold --roughness 0.2 --add-to m.json", "--name");
