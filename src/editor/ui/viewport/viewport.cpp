@@ -246,6 +246,11 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
           (view.ab_source == AbSource::cpu_gl || view.ab_source == AbSource::pixel_vertex)) {
         m_label_b += " - raster unavailable, ray traced";
       }
+      const auto has_reference = [](const Material& m) { return m.reference.has_value(); };
+      if (view.ab_source == AbSource::reference &&
+          std::none_of(document.materials.begin(), document.materials.end(), has_reference)) {
+        m_label_b += " - none set";
+      }
     }
     m_pushed_any = true;
     m_pushed_revision = revision;
