@@ -1,7 +1,7 @@
 // The window's layout: the menu bar on top, the Material and Reference panels on the left, the
 // Lights & Scene and View & Quality panels on the right, the viewport between them, the status
-// bar below, the floating windows and questions over them. Each is handed only the parts of the App it may
-// touch (panels/panels.h).
+// bar below, the floating windows and questions over them. Each is handed only the parts of
+// the App it may touch (panels/panels.h).
 #include <algorithm>
 #include <cmath>
 
