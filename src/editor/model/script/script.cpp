@@ -6,66 +6,11 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "editor/model/script/script_tokens.h"
 
 namespace gloss {
 
 namespace {
-
-// Tokens of one line and the parsing helpers that turn them into values, throwing plain
-// messages that parse_script turns into InputErrors with the line number.
-struct Tokens {
-  std::vector<std::string> words;
-  std::size_t next = 1;  // words[0] is the command
-
-  bool done() const { return next >= words.size(); }
-  const std::string& word(const char* what) {
-    if (done()) throw std::runtime_error(std::string("missing ") + what);
-    return words[next++];
-  }
-  float number(const char* what) {
-    const std::string& w = word(what);
-    char* end = nullptr;
-    const float value = std::strtof(w.c_str(), &end);
-    if (end == w.c_str() || *end != '\0') {
-      throw std::runtime_error(std::string("expected a number for ") + what + ", got '" + w + "'");
-    }
-    return value;
-  }
-  double whole(const char* what) {
-    const std::string& w = word(what);
-    char* end = nullptr;
-    const double value = std::strtod(w.c_str(), &end);
-    if (end == w.c_str() || *end != '\0' || value != std::floor(value)) {
-      throw std::runtime_error(std::string("expected a whole number for ") + what + ", got '" + w +
-                               "'");
-    }
-    return value;
-  }
-  int index(const char* what) {
-    const std::string& w = word(what);
-    char* end = nullptr;
-    const long value = std::strtol(w.c_str(), &end, 10);
-    if (end == w.c_str() || *end != '\0' || value < 0 || value > 1000000) {
-      throw std::runtime_error(std::string("expected an index for ") + what + ", got '" + w + "'");
-    }
-    return static_cast<int>(value);
-  }
-  glm::vec3 vec3(const char* what) {
-    const float x = number(what);
-    const float y = number(what);
-    const float z = number(what);
-    return {x, y, z};
-  }
-  bool on_off(const char* what) {
-    const std::string& w = word(what);
-    if (w == "on") return true;
-    if (w == "off") return false;
-    throw std::runtime_error(std::string(what) + " must be on or off, got '" + w + "'");
-  }
-  void end() {
-    if (!done()) throw std::runtime_error("unexpected '" + words[next] + "'");
-  }
-};
 
 // `quality raster PATH [WIDTH HEIGHT [REFERENCE_SPP]]` (issue 12: the raster path's rows).
 QualityAction parse_quality_raster(Tokens& t) {
@@ -306,46 +251,6 @@ bool parse_raster_line(Tokens& t, const std::string& verb, ScriptAction& out) {
     return true;
   }
   return false;
-}
-
-// `reference METAL ROUGHNESS`, `reference dielectric R G B ROUGHNESS`, `reference none` and
-// `fit phong|blinn-phong [l2|lightness]` (issue 23). Ranges are the reference table's, checked
-// here so a bad line fails before the script runs.
-ScriptAction parse_reference(Tokens& t) {
-  const std::string& kind = t.word("reference (a metal, dielectric or none)");
-  if (kind == "none") return ReferenceAction{};
-  PhysicalReference r;
-  if (!parse_reference_kind(kind.c_str(), r.kind)) {
-    std::string names;
-    for (int i = 0; i < kReferenceKinds; ++i) {
-      names += std::string(names.empty() ? "" : ", ") + to_string(static_cast<ReferenceKind>(i));
-    }
-    throw std::runtime_error("reference must be one of " + names + " or none, got '" + kind + "'");
-  }
-  if (!is_metal(r.kind)) r.base = t.vec3("base colour R G B");
-  r.roughness = t.number("roughness");
-  for (const Field<PhysicalReference>& f : reference_fields()) {
-    const FieldProblem problem = field_problem(f, f.get(r));
-    if (!problem.message.empty()) {
-      throw std::runtime_error(std::string("reference ") + f.key + " " + problem.message);
-    }
-  }
-  return ReferenceAction{r};
-}
-
-ScriptAction parse_fit(Tokens& t) {
-  FitAction a;
-  const std::string& model = t.word("model to fit");
-  if (!parse_shading_model(model, a.model)) {
-    throw std::runtime_error("fit must be phong or blinn-phong, got '" + model + "'");
-  }
-  if (!t.done()) {
-    const std::string& metric = t.word("metric");
-    if (!parse_lobe_metric(metric.c_str(), a.metric)) {
-      throw std::runtime_error("the fit's metric must be l2 or lightness, got '" + metric + "'");
-    }
-  }
-  return a;
 }
 
 ScriptAction parse_line(Tokens& t) {
