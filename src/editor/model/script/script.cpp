@@ -91,9 +91,12 @@ bool parse_view_extra(Tokens& t, const std::string& mode, ScriptAction& out) {
         v.ab_source = AbSource::cpu_gl;
       } else if (source == "pixel-vertex") {
         v.ab_source = AbSource::pixel_vertex;
+      } else if (source == "reference") {
+        v.ab_source = AbSource::reference;
       } else {
         throw std::runtime_error(
-            "view ab takes nothing, 'snapshot', 'cpu-gl' or 'pixel-vertex', got '" + source + "'");
+            "view ab takes nothing, 'snapshot', 'cpu-gl', 'pixel-vertex' or 'reference', got '" +
+            source + "'");
       }
     }
     out = v;
@@ -102,13 +105,24 @@ bool parse_view_extra(Tokens& t, const std::string& mode, ScriptAction& out) {
   return false;
 }
 
-// `view lobe ELEVATION_DEG` and `inspect X Y` (the lobe view and the pixel inspector).
+// `view lobe [ELEVATION_DEG] [log|linear]` and `inspect X Y` (the lobe view and the pixel
+// inspector).
 ScriptAction parse_lobe_elevation(Tokens& t, ViewAction v) {
-  const float degrees = t.number("light elevation in degrees");
-  if (!(degrees >= 0.0f && degrees <= 90.0f)) {
-    throw std::runtime_error("the light elevation must be 0..90 degrees");
+  const std::string& first = t.words[t.next];
+  if (first != "log" && first != "linear") {
+    const float degrees = t.number("light elevation in degrees");
+    if (!(degrees >= 0.0f && degrees <= 90.0f)) {
+      throw std::runtime_error("the light elevation must be 0..90 degrees");
+    }
+    v.lobe_elevation_deg = degrees;
   }
-  v.lobe_elevation_deg = degrees;
+  if (!t.done()) {
+    const std::string& radius = t.word("radius scale");
+    if (radius != "log" && radius != "linear") {
+      throw std::runtime_error("the lobe's radius is log or linear, got '" + radius + "'");
+    }
+    v.lobe_log_radius = radius == "log" ? 1 : 0;
+  }
   return v;
 }
 
@@ -269,14 +283,16 @@ ScriptAction parse_line(Tokens& t) {
       if (!parse_term_view(term, v.term)) throw std::runtime_error("unknown term '" + term + "'");
     } else if (!parse_view_mode(mode, v.mode) || v.mode == ViewMode::single) {
       throw std::runtime_error(
-          "view must be render, terms, ab, lobe, 'term NAME', 'ab snapshot|cpu-gl|pixel-vertex' "
-          "or 'clipped on|off', got '" +
+          "view must be render, terms, ab, lobe, 'term NAME', "
+          "'ab snapshot|cpu-gl|pixel-vertex|reference' or 'clipped on|off', got '" +
           mode + "'");
     }
     if (v.mode == ViewMode::lobe && !t.done()) return parse_lobe_elevation(t, v);
     return v;
   }
   if (verb == "inspect") return parse_inspect(t);
+  if (verb == "reference") return parse_reference(t);
+  if (verb == "fit") return parse_fit(t);
   if (verb == "exposure") return ExposureAction{t.number("stops")};
   if (verb == "select") {
     const ObjectRef ref = parse_object_ref(t);

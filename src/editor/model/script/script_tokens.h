@@ -1,6 +1,8 @@
 #pragma once
 // The words of one script line and the helpers that turn them into values (private to
-// editor/model/script). Words are separated by blanks; a word in double quotes may hold blanks
+// editor/model/script): script.cpp parses most lines with them, reference_lines.cpp the physical
+// reference's, script_objects.cpp the objects'. Words are separated by blanks; a word in double
+// quotes may hold blanks
 // ("gold ball"; \" and \\ inside stand for " and \); '#' outside quotes starts a comment. The
 // helpers throw plain messages that parse_script turns into errors naming the file and line.
 #include <cmath>
@@ -130,6 +132,12 @@ FieldValue parse_value(Tokens& t, const Field<S>& field) {
 // The words of line (comment dropped). Throws for a quote that is not closed.
 // text: the line without its comment.
 Tokens split_words(const std::string& line, std::string& text);
+
+// `reference METAL ROUGHNESS`, `reference dielectric R G B ROUGHNESS`, `reference none`
+// (reference_lines.cpp).
+ScriptAction parse_reference(Tokens& t);
+// `fit phong|blinn-phong [l2|lightness]` (reference_lines.cpp).
+ScriptAction parse_fit(Tokens& t);
 
 // An object named by the next word: a bare whole number is an index, any other word (or a quoted
 // one) a name (script_objects.cpp).

@@ -28,6 +28,7 @@ struct Notices;
 struct OpenWindows;
 struct OutlinerState;
 struct QualityState;
+struct ReferencePanelState;
 struct RunState;
 struct Selection;
 struct Session;
@@ -49,6 +50,10 @@ void draw_outliner(Commands& commands, Selection& selection, OutlinerState& stat
 // Turns the camera to the selected objects and fits them in the view (key F, the Outliner's
 // Frame): one command.
 void frame_selection(Commands& commands, const Selection& selection);
+// The Reference panel: the selected object's material against a physical reference, the
+// material | reference A/B view, Fit Phong / Fit Blinn-Phong (on a worker, applied in one step).
+void draw_reference_panel(Commands& commands, Selection& selection, ViewSettings& view,
+                          ReferencePanelState& state, ImVec2 pos, ImVec2 size);
 // The Lights & Scene panel: lights, the scene's own fields, opening files.
 void draw_lights_panel(Commands& commands, Selection& selection, ViewSettings& view,
                        FileBrowser& browser, ImVec2 pos, ImVec2 size);
