@@ -94,6 +94,28 @@ TEST(NewObjects, ASecondPrimitiveGoesBesideTheFirst) {
   expect_set_down_beside(scene, after, 0.0f, 2);
 }
 
+TEST(NewObjects, NewBoxesHideNeitherSphereFromTheCamera) {
+  // spheres.json frames its two spheres (centres (+-1.15, 1, 0)) from (0, 2.2, 7.5): the free
+  // ground in the image lies in front of and behind them. Three boxes 2 wide are added in turn;
+  // the sight line from the eye to each sphere's centre, sampled every 1/1000 of its length,
+  // enters none of them (a box placed straight in front, at z = 2.5, would cover both).
+  Scene scene = shipped("spheres");
+  const std::size_t first = scene.objects.size();
+  for (int n = 0; n < 3; ++n) scene = with(scene, primitive_objects(scene, ObjectType::box));
+  const glm::vec3 eye = scene.camera.eye;
+  for (std::size_t k = first; k < scene.objects.size(); ++k) {
+    glm::vec3 lo, hi;
+    ASSERT_TRUE(object_bounds(scene.objects[k], lo, hi));
+    for (const glm::vec3 centre : {glm::vec3(-1.15f, 1, 0), glm::vec3(1.15f, 1, 0)}) {
+      for (int i = 0; i <= 1000; ++i) {
+        const glm::vec3 p = eye + (centre - eye) * (i / 1000.0f);
+        const bool inside = glm::all(glm::greaterThan(p, lo)) && glm::all(glm::lessThan(p, hi));
+        ASSERT_FALSE(inside) << scene.objects[k].name << " hides the sphere at x " << centre.x;
+      }
+    }
+  }
+}
+
 TEST(NewObjects, AModelIsScaledSetDownAndPlacedInsideTheCornellRoom) {
   const Scene scene = shipped("cornell");  // floor at y = -1; walls at x, z = +-1
   const AddObjects add = model_objects(scene, std::string(GLOSS_TEST_DATA_DIR) + "/obj/cube.obj");

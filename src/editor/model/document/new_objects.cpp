@@ -58,6 +58,25 @@ bool overlap(const Box& a, const Box& b, float slack) {
   return true;
 }
 
+// Whether the segment from p to q passes through the box [lo, hi] (slab test).
+bool segment_meets_box(const glm::vec3& p, const glm::vec3& q, const glm::vec3& lo,
+                       const glm::vec3& hi) {
+  float t0 = 0.0f, t1 = 1.0f;
+  const glm::vec3 d = q - p;
+  for (int k = 0; k < 3; ++k) {
+    if (d[k] == 0.0f) {
+      if (p[k] < lo[k] || p[k] > hi[k]) return false;
+      continue;
+    }
+    float a = (lo[k] - p[k]) / d[k], b = (hi[k] - p[k]) / d[k];
+    if (a > b) std::swap(a, b);
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, b);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
 // The unique names of a new object and of its new material.
 void name_new(const Scene& scene, AddObjects& add, const std::string& base) {
   Object& o = add.objects.back();
@@ -129,7 +148,7 @@ glm::vec3 placement_offset(const Scene& scene, const glm::vec3& lo, const glm::v
 
   // Each candidate's support and whether it is a free place; the free places on the lowest
   // support (the ground) come first, so a new object stands beside a box, not on it; among
-  // them the ones the camera sees (its centre in the image and no object before it).
+  // them the ones the camera sees.
   const float slack = 1e-3f * side;
   std::vector<glm::vec3> offsets_of(places.size()), centres(places.size());
   std::vector<bool> free(places.size(), false), supported(places.size(), false);
@@ -163,12 +182,34 @@ glm::vec3 placement_offset(const Scene& scene, const glm::vec3& lo, const glm::v
     });
     if (!supports.empty()) ground = std::min(ground, support);
   }
-  const std::vector<bool> unhidden = seen_from_eye(scene, centres);
+  // Seen: its centre and three of four points of its upper part reach the eye (not behind the
+  // others), and it hides the centre of no solid object (not in front of them).
+  std::vector<glm::vec3> probes;
+  for (const glm::vec3& c : centres) {
+    probes.push_back(c);
+    for (std::size_t k = 1; k < 5; ++k) {
+      probes.push_back(
+          c + glm::vec3(0.3f * offsets[k].x * size.x, 0.3f * size.y, 0.3f * offsets[k].y * size.z));
+    }
+  }
+  const std::vector<bool> unhidden = seen_from_eye(scene, probes);
+  const auto seen = [&](std::size_t c) {
+    const auto first = unhidden.begin() + static_cast<std::ptrdiff_t>(5 * c);
+    return *first && std::count(first + 1, first + 5, true) >= 3;
+  };
+  const auto hides = [&](std::size_t c) {
+    const glm::vec3 a = lo + offsets_of[c], b = hi + offsets_of[c];
+    return std::any_of(boxes.begin(), boxes.end(), [&](const Box& o) {
+      const glm::vec3 e = o.hi - o.lo;
+      if (std::min(e.x, std::min(e.y, e.z)) <= 0.05f * largest_side(o.lo, o.hi)) return false;
+      return segment_meets_box(scene.camera.eye, 0.5f * (o.lo + o.hi), a, b);
+    });
+  };
   const int w = std::max(scene.render.width, 1), h = std::max(scene.render.height, 1);
   const auto in_view = [&](std::size_t c) {
     glm::vec2 at;
-    return unhidden[c] && project_point(scene.camera, w, h, centres[c], at) && at.x > 0.1f * w &&
-           at.x < 0.9f * w && at.y > 0.1f * h && at.y < 0.9f * h;
+    return project_point(scene.camera, w, h, centres[c], at) && at.x > 0.1f * w &&
+           at.x < 0.9f * w && at.y > 0.1f * h && at.y < 0.9f * h && seen(c) && !hides(c);
   };
   const auto on_ground = [&](std::size_t c) {
     return supported[c] && offsets_of[c].y + lo.y <= ground + slack;

@@ -25,7 +25,8 @@ float new_object_size(const Scene& scene);
 // tenth of its largest side (the surface it rests on aside), as near the camera target as such a
 // place is. Candidates lie on a grid around the target, nearest first, distances along the view
 // counting three times (beside the objects as the camera sees them, not in front of or behind
-// them), and places the camera sees (centre in the image, no object before it) before others; the
+// them), and places the camera sees before others (centre in the image; the centre and most of the
+// upper part reach the eye; the centre of no solid object hidden behind it); the
 // surface under a candidate is the highest hit of rays cast straight down at its footprint's
 // corners and centre from above where it would rest, and a candidate whose rays meet anything but
 // the top of an object at least as wide as its footprint (the shoulder of a sphere, a post) is
