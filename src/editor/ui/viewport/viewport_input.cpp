@@ -200,8 +200,12 @@ void Viewport::draw_light_markers(const Scene& scene, const ViewSettings& view,
         list->AddLine(k, ImVec2(k.x, k.y + sy * arm), colour, thick);
       }
       if (p == 0 && primary) {
-        list->AddText(ImVec2(a.x, std::max(a.y - 16.0f, pane.min.y + 20.0f)), colour,
-                      object_label(scene, object).c_str());
+        // Inside the pane where the object's box reaches past its left or right edge.
+        const std::string label = object_label(scene, object);
+        const float width = ImGui::CalcTextSize(label.c_str()).x;
+        const float x =
+            std::max(std::min(a.x, pane.min.x + pane.size.x - width - 2.0f), pane.min.x + 2.0f);
+        list->AddText(ImVec2(x, std::max(a.y - 16.0f, pane.min.y + 20.0f)), colour, label.c_str());
       }
     }
     for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i) {
