@@ -68,20 +68,18 @@ TEST(ScriptObjects, ParsesEverySpelling) {
   EXPECT_EQ(object_line(s.lines[16]).field.key, "pivot");
 }
 
-void expect_error_on_line(const std::string& text, int line, const std::string& words) {
-  test::expect_script_error(text, line, words);
-}
+using test::expect_script_error;
 
 TEST(ScriptObjects, BadLinesNameTheLine) {
-  expect_error_on_line("wait\nobject 0 spin 1 2 3\n", 2, "object OBJECT takes move, rotate");
-  expect_error_on_line("object add cone\n", 1, "object add takes sphere, quad, box, teapot");
-  expect_error_on_line("object 0 move 1 2\n", 1, "missing translate");
-  expect_error_on_line("object 0 scale 1 2\n", 1, "missing scale");
-  expect_error_on_line("object 0 hide now\n", 1, "unexpected 'now'");
-  expect_error_on_line("material delete red\n", 1, "material takes 'rename OLD NEW'");
-  expect_error_on_line("assign 0\n", 1, "missing material name");
-  expect_error_on_line("\n\nobject 0 name \"gold\n", 3, "a quote is not closed");
-  expect_error_on_line("object\n", 1, "missing object");
+  expect_script_error("wait\nobject 0 spin 1 2 3\n", 2, "object OBJECT takes move, rotate");
+  expect_script_error("object add cone\n", 1, "object add takes sphere, quad, box, teapot");
+  expect_script_error("object 0 move 1 2\n", 1, "missing translate");
+  expect_script_error("object 0 scale 1 2\n", 1, "missing scale");
+  expect_script_error("object 0 hide now\n", 1, "unexpected 'now'");
+  expect_script_error("material delete red\n", 1, "material takes 'rename OLD NEW'");
+  expect_script_error("assign 0\n", 1, "missing material name");
+  expect_script_error("\n\nobject 0 name \"gold\n", 3, "a quote is not closed");
+  expect_script_error("object\n", 1, "missing object");
 }
 
 int run_all(const std::string& text, test::QuietScriptHost& host, std::string& errors) {
