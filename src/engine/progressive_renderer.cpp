@@ -6,13 +6,12 @@
 #include <mutex>
 #include <thread>
 
-#include "engine/adaptive_refinement.h"
+#include "engine/adaptive_progression.h"
 #include "engine/frame_pool.h"
 #include "engine/render_context.h"
 #include "engine/render_plan.h"
 #include "engine/shade/pixel_factors.h"
 #include "engine/trace/embree_scene.h"
-#include "engine/trace/refined_samples.h"
 #include "engine/trace/sample_cache.h"
 #include "engine/trace/single_sample_pass.h"
 #include "scene/fields/scene_diff.h"
@@ -45,6 +44,10 @@ struct ProgressiveRenderer::Impl {
   bool stop = false;
   bool paused = false;  // pause(): no work until the next set_scene()
   std::atomic<bool> cancel{false};
+  // Publication pace (continuous edits): whether the pass in flight is the first image of its
+  // generation, and when the worker last published.
+  bool first_in_flight = false;
+  Clock::time_point published_at;
 
   // Published frame, guarded by publish_mutex.
   mutable std::mutex publish_mutex;
@@ -67,6 +70,11 @@ struct ProgressiveRenderer::Impl {
   Clock::time_point worker_changed_at;
   ChangeClass cause = ChangeClass::full;
   bool worker_terms = true;
+  AdaptiveProgression adaptive_state;  // the refined samples' placement and its currency
+  // The last published total is the current scene's centre image (no refined pixels), the image
+  // the adaptive rule reads.
+  bool published_centres = false;
+  std::size_t refined_traced = 0;  // pixels whose refined samples the pass traced afresh
 
   std::thread worker;
 
@@ -81,13 +89,16 @@ struct ProgressiveRenderer::Impl {
   bool adaptive() const {
     return scene->render.spp > 1 && scene->render.sampling == Sampling::adaptive;
   }
-  // Samples per pixel the cache stands for (adaptive: per refined pixel, once refined).
-  int cached_spp() const { return cache.refined.spp > 0 ? cache.refined.spp : cache.samples(); }
-  bool converged_state() const {
-    return dirty == ChangeClass::none && level == options.preview_levels &&
-           cached_spp() >= scene->render.spp;
+  // Samples per pixel of the images the factors make (adaptive: per refined pixel, if any).
+  int factors_spp() const {
+    return factors.refined_pixel.empty() ? factors.samples : cache.refined.spp;
   }
-  // Traces the refined samples the centre image asks for; false when cancelled.
+  bool converged_state() const {
+    if (dirty != ChangeClass::none || level != options.preview_levels) return false;
+    if (!adaptive()) return cache.samples() >= scene->render.spp;
+    return adaptive_state.current(cache, scene->render.spp);
+  }
+  // adaptive_progression.h's refine(), from the published centre image when there is one.
   bool refine();
 };
 
@@ -137,6 +148,8 @@ bool ProgressiveRenderer::Impl::take_inbox() {
       scene == nullptr ? ChangeClass::full : classify_change(*scene, *next, diff);
   cause = change;
   pass = 0;
+  published_centres = false;  // the published frame shows an older scene
+  adaptive_state.edit(change, cache);
   if (embree == nullptr || scene == nullptr || diff.geometry) {
     embree = std::make_unique<EmbreeScene>(*next);
   }
@@ -162,6 +175,11 @@ void ProgressiveRenderer::Impl::start_level(int new_level) {
 // stage leaves `dirty` at the class that redoes it, so the caches never mix two scenes.
 bool ProgressiveRenderer::Impl::step() {
   const Clock::time_point start = Clock::now();
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    first_in_flight = pass == 0;
+  }
+  refined_traced = 0;
   std::atomic<long long> rays{0};
   ctx.rays = &rays;
   ChangeClass redo = ChangeClass::none;  // what a cancellation leaves to do
@@ -175,6 +193,7 @@ bool ProgressiveRenderer::Impl::step() {
   const int previous_level = level;
   if (restart) {
     start_level(options.preview_levels > 0 ? 0 : options.preview_levels);
+    adaptive_state.restart();
   } else if (next_level) {
     previous = std::move(cache);
     const bool skip = last_full_pass_ms >= 0 && last_full_pass_ms <= options.preview_budget_ms;
@@ -194,7 +213,9 @@ bool ProgressiveRenderer::Impl::step() {
     factors_done = total_done = true;
   } else if (dirty == ChangeClass::light) {
     redo = ChangeClass::light;
-    if (cache.samples() == 1 && cache.refined.spp == 0) {  // one pass: light and pixel factors
+    // One plane (one sample per pixel, or adaptive sampling's centres): light and pixel factors
+    // in one pass. Refined samples are re-lit after it (refine()), once this image is shown.
+    if (cache.samples() == 1) {
       ok = relight_single_sample(cache, ctx, factors, total);
       factors_done = total_done = true;
     } else {
@@ -214,8 +235,8 @@ bool ProgressiveRenderer::Impl::step() {
       reclaim_planes(cache, std::move(traced));
     }
   } else if (dirty == ChangeClass::none && adaptive()) {
-    redo = ChangeClass::exponent;  // cancelled: the factors are rebuilt from the centres
-    ok = refine() && refine_pixel_factors(cache, ctx, factors);
+    redo = ChangeClass::exponent;  // cancelled: the factors are rebuilt from the samples
+    ok = refine();
     factors_done = true;
   } else if (dirty == ChangeClass::none) {
     // Double the samples each pass: 1, 2, 4, 8 ... up to the target.
@@ -224,7 +245,7 @@ bool ProgressiveRenderer::Impl::step() {
   }
   if (ok && dirty != ChangeClass::shade && !factors_done) {
     redo = std::max(redo, ChangeClass::exponent);
-    ok = build_pixel_factors(cache, ctx, factors);
+    ok = adaptive_state.build_factors(cache, ctx, factors);
   }
   ctx.rays = nullptr;
   if (!ok) {
@@ -241,15 +262,15 @@ bool ProgressiveRenderer::Impl::step() {
 }
 
 bool ProgressiveRenderer::Impl::refine() {
-  // The total the centre samples make, what the rule looks at: the frame published last.
-  std::shared_ptr<const RenderedFrame> centres;
-  {
+  std::shared_ptr<const RenderedFrame> shown;
+  if (published_centres) {
     std::lock_guard<std::mutex> lock(publish_mutex);
-    centres = published;
+    shown = published;
   }
-  std::vector<std::uint32_t> pixels = choose_refined_pixels(
-      cache, centres->images.total, scene->render.aa_threshold, 0, cache.height);
-  return trace_refined_samples(cache, ctx, std::move(pixels), scene->render.spp);
+  const bool ok =
+      adaptive_state.refine(cache, ctx, factors, shown ? &shown->images.total : nullptr);
+  refined_traced = adaptive_state.traced();
+  return ok;
 }
 
 void ProgressiveRenderer::Impl::publish(std::shared_ptr<RenderedFrame> frame, double pass_ms,
@@ -259,14 +280,22 @@ void ProgressiveRenderer::Impl::publish(std::shared_ptr<RenderedFrame> frame, do
   info.pass = pass++;
   info.width = cache.width;
   info.height = cache.height;
-  info.spp = cached_spp();
-  frame->refined = cache.refined.pixels;
+  info.spp = factors_spp();
+  info.refined_traced = refined_traced;
+  frame->refined = factors.refined_pixel;
   info.target_spp = scene->render.spp;
   info.pass_ms = pass_ms;
   info.since_change_ms = ms_between(worker_changed_at, Clock::now());
   info.rays = rays;
   info.converged = converged;
   info.cause = cause;
+  published_centres = adaptive() && level == options.preview_levels && factors.samples == 1 &&
+                      factors.refined_pixel.empty();
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    first_in_flight = false;
+    published_at = Clock::now();
+  }
   std::function<void()> callback;
   {
     std::lock_guard<std::mutex> lock(publish_mutex);
@@ -312,7 +341,13 @@ std::uint64_t ProgressiveRenderer::set_scene(const Scene& scene) {
       m_impl->pending = std::move(copy);
       generation = ++m_impl->generation;
       m_impl->changed_at = Clock::now();
-      m_impl->cancel.store(true);  // work in flight is for an older scene
+      // Work in flight is for an older scene and stops, unless it is a first image and nothing
+      // was published for max_publish_gap_ms: then it completes and is shown before the newest
+      // scene is taken, so edits faster than a pass (a drag, an animation) still move the image.
+      const bool starved =
+          m_impl->first_in_flight && ms_between(m_impl->published_at, m_impl->changed_at) >=
+                                         m_impl->options.max_publish_gap_ms;
+      if (!starved || was_paused) m_impl->cancel.store(true);
     }
   }
   m_impl->wake.notify_all();  // also resumes a paused worker on the same scene

@@ -134,6 +134,45 @@ TEST(ProgressiveRenderer, AFastFullPassSkipsTheFinerPreviews) {
   EXPECT_EQ(widths_after_camera_change(0.0), (std::vector<int>{10, 20, 40, 80, 80}));
 }
 
+// The frames an edit to `scene` publishes, up to and including its converged one.
+std::vector<std::shared_ptr<const RenderedFrame>> frames_of_edit(ProgressiveRenderer& engine,
+                                                                 const Scene& scene) {
+  std::vector<std::shared_ptr<const RenderedFrame>> frames;
+  std::mutex mutex;
+  engine.set_on_publish([&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    frames.push_back(engine.latest());
+  });
+  engine.set_scene(scene);
+  EXPECT_TRUE(engine.wait_converged(kWaitMs));
+  engine.set_on_publish(nullptr);
+  std::lock_guard<std::mutex> lock(mutex);
+  return frames;
+}
+
+// An edit that keeps the primary hits: its first image is made without primary rays (none at
+// all for constants and exponents), and the converged one is the fresh render's, placement and
+// all (the rule runs again on the new centre image: test_progressive_convergence.cpp).
+void expect_cached_edit(ProgressiveRenderer& engine, const Scene& scene, ChangeClass cause) {
+  const auto frames = frames_of_edit(engine, scene);
+  ASSERT_FALSE(frames.empty());
+  const FrameInfo& first = frames.front()->info;
+  EXPECT_EQ(first.cause, cause);
+  if (cause == ChangeClass::light) {
+    EXPECT_GT(first.rays, 0);
+    EXPECT_LT(first.rays, 80LL * 60);  // primary rays alone would be one per pixel
+  } else {
+    EXPECT_EQ(first.rays, 0);
+  }
+  EXPECT_EQ(frames.back()->info.spp, 4);
+  std::vector<std::uint32_t> placement;
+  RenderOptions options;
+  options.refined = &placement;
+  render(scene, options);
+  EXPECT_EQ(frames.back()->refined, placement);
+  expect_matches_fresh_render(*frames.back(), scene);
+}
+
 TEST(ProgressiveRenderer, MaterialConstantEditReshadesWithoutRaysAndMatchesFreshRender) {
   ProgressiveRenderer engine;
   Scene scene = test::sphere_on_floor_scene();
@@ -142,11 +181,7 @@ TEST(ProgressiveRenderer, MaterialConstantEditReshadesWithoutRaysAndMatchesFresh
   scene.materials[1].emission = {0.05f, 0.0f, 0.0f};
   scene.lights[0].specular = {0.3f, 0.6f, 0.9f};
   scene.ambient = glm::vec3(0.4f);
-  const auto frame = converge(engine, scene);
-  EXPECT_EQ(frame->info.cause, ChangeClass::shade);
-  EXPECT_EQ(frame->info.rays, 0);
-  EXPECT_EQ(frame->info.spp, 4);
-  expect_matches_fresh_render(*frame, scene);
+  expect_cached_edit(engine, scene, ChangeClass::shade);
 }
 
 TEST(ProgressiveRenderer, ShininessAndModelEditsReshadeWithoutRays) {
@@ -154,15 +189,9 @@ TEST(ProgressiveRenderer, ShininessAndModelEditsReshadeWithoutRays) {
   Scene scene = test::sphere_on_floor_scene();
   converge(engine, scene);
   scene.materials[0].shininess = 500;
-  auto frame = converge(engine, scene);
-  EXPECT_EQ(frame->info.cause, ChangeClass::exponent);
-  EXPECT_EQ(frame->info.rays, 0);
-  expect_matches_fresh_render(*frame, scene);
+  expect_cached_edit(engine, scene, ChangeClass::exponent);
   scene.render.model = ShadingModel::blinn_phong;
-  frame = converge(engine, scene);
-  EXPECT_EQ(frame->info.cause, ChangeClass::exponent);
-  EXPECT_EQ(frame->info.rays, 0);
-  expect_matches_fresh_render(*frame, scene);
+  expect_cached_edit(engine, scene, ChangeClass::exponent);
 }
 
 TEST(ProgressiveRenderer, LightMoveTracesOnlyShadowRays) {
@@ -170,12 +199,7 @@ TEST(ProgressiveRenderer, LightMoveTracesOnlyShadowRays) {
   Scene scene = test::sphere_on_floor_scene();
   converge(engine, scene);
   scene.lights[0].position = {-2, 3, 1};
-  const auto frame = converge(engine, scene);
-  EXPECT_EQ(frame->info.cause, ChangeClass::light);
-  const long long samples = 80LL * 60 * 4;
-  EXPECT_GT(frame->info.rays, 0);
-  EXPECT_LT(frame->info.rays, samples);  // primary rays alone would be `samples`
-  expect_matches_fresh_render(*frame, scene);
+  expect_cached_edit(engine, scene, ChangeClass::light);
 }
 
 TEST(ProgressiveRenderer, CameraEditRestartsFromTheCoarsestPass) {
