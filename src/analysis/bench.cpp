@@ -161,8 +161,8 @@ void measure_aa_quality(const Scene& base, const BenchOptions& options, BenchRep
   adaptive.refined = &refined;
   report.aa_rmse = compare_images(render(scene, adaptive).total, reference).rmse;
   report.aa_rmse_ratio = report.aa_rmse / report.uniform_rmse;
-  report.aa_refined_share =
-      static_cast<double>(refined.size()) / (static_cast<double>(base.render.width) * base.render.height);
+  report.aa_refined_share = static_cast<double>(refined.size()) /
+                            (static_cast<double>(base.render.width) * base.render.height);
 }
 
 }  // namespace
@@ -253,9 +253,9 @@ BenchReport run_benchmark(const Scene& input, const BenchOptions& options) {
   report.first_preview_ms = uniform.first_ms;
   report.converge_16spp_ms = uniform.converged_ms;
   // Paired with the 1-spp full render, as the retrace ratio is: a shared machine's speed drifts.
-  const EngineTimes adaptive =
-      measure_engine(scene, options, Sampling::adaptive,
-                     [&] { full_render(scene, embree, cache, factors, out, false); });
+  const EngineTimes adaptive = measure_engine(scene, options, Sampling::adaptive, [&] {
+    full_render(scene, embree, cache, factors, out, false);
+  });
   report.aa_ms = adaptive.converged_ms;
   report.aa_ratio = adaptive.ratio;
   measure_aa_quality(scene, options, report);
@@ -326,6 +326,21 @@ std::string format_bench_table(const BenchReport& r) {
       s += line;
     }
   }
+  if (!r.scaling.empty()) {
+    s += "  scaling, one factor at a time (own process per row): lights, triangles, size,\n"
+         "  retrace_ms, embree_raw_ms, ratio, peak_rss_mb\n";
+    for (const ScalingPoint& p : r.scaling) {
+      if (!p.skipped.empty()) {
+        std::snprintf(line, sizeof line, "    %3d %10lld %5dx%-5d skipped: %s\n", p.setup.lights,
+                      p.triangles, p.setup.width, p.setup.height, p.skipped.c_str());
+      } else {
+        std::snprintf(line, sizeof line, "    %3d %10lld %5dx%-5d %9.2f %9.2f %7.3f %8.1f\n",
+                      p.setup.lights, p.triangles, p.setup.width, p.setup.height, p.retrace_ms,
+                      p.embree_raw_ms, p.ratio, p.peak_rss_mb);
+      }
+      s += line;
+    }
+  }
   return s;
 }
 
@@ -369,6 +384,13 @@ std::string bench_to_json(const BenchReport& r) {
                     {"build_ms", p.build_ms}});
   }
   j["tessellation"] = tess;
+  if (!r.scaling.empty()) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const ScalingPoint& p : r.scaling) {
+      rows.push_back(nlohmann::json::parse(scaling_point_json_text(p)));
+    }
+    j["scaling"] = rows;
+  }
   return j.dump(2) + "\n";
 }
 
