@@ -39,8 +39,11 @@ bool AdaptiveProgression::refine(SampleCache& cache, const RenderContext& ctx,
     centre_total = &m_centres.total;
   }
   const RenderSettings& r = ctx.scene->render;
-  std::vector<std::uint32_t> pixels =
-      choose_refined_pixels(cache, *centre_total, r.aa_threshold, 0, cache.height);
+  std::vector<std::uint32_t> pixels;
+  if (!choose_refined_pixels(cache, *centre_total, r.aa_threshold, 0, cache.height, ctx.cancel,
+                             pixels)) {
+    return false;
+  }
   RefinedUpdate update;
   bool ok;
   if (cache.refined.spp == 0) {
