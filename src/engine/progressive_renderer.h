@@ -48,7 +48,15 @@ struct ProgressiveOptions {
   // come faster than a pass (a drag, an animation on a loaded machine) images keep coming, each
   // at most one pass behind the newest edit. 0: first images are never cancelled.
   double max_publish_gap_ms = 50.0;
+  // A light edit whose full-resolution re-light is expected to take longer than this (the last
+  // one did) first shows a coarse preview, traced afresh at the finest of 1/2, 1/4, 1/8 of the
+  // size expected within it (light_preview.h), then the full image. 0: never.
+  double light_preview_budget_ms = 25.0;
 };
+
+// The name of each engine's own thread (the one that takes edits in and publishes frames), as
+// the kernel shows it (/proc/self/task/TID/comm).
+inline constexpr char kEngineThreadName[] = "gloss-engine";
 
 class ProgressiveRenderer {
  public:

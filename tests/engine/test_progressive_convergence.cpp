@@ -296,6 +296,37 @@ TEST(ProgressiveConvergence, AnySequenceOfEditsEndsOnTheFreshRender) {
   }
 }
 
+// A machine too slow to re-light the full image within the budget: the light edit's first image
+// is a preview traced afresh at a fraction of the size (exactly render()'s at that size), then
+// the full image re-lit from the cached hits, then the refinement.
+TEST(ProgressiveConvergence, ASlowRelightShowsAPreviewFirst) {
+  ProgressiveOptions options;
+  options.light_preview_budget_ms = 1e-9;  // any measured re-light is too slow
+  ProgressiveRenderer engine(options);
+  Scene scene = shadow_scene();
+  expect_fresh(*frames_of(engine, scene).back(), scene);
+  scene.lights[0].position = {3, 4, 0};
+  frames_of(engine, scene);  // times the first full-resolution re-light
+  scene.lights[0].position = {-3, 4, 1};
+  const auto frames = frames_of(engine, scene);
+  ASSERT_GE(frames.size(), 3u);
+  const RenderedFrame& preview = *frames[0];
+  EXPECT_EQ(preview.info.cause, ChangeClass::light);
+  // The budget is never met, so the coarsest level: 1/8 of 96 x 72.
+  EXPECT_EQ(preview.info.width, kW / 8);
+  EXPECT_EQ(preview.info.height, kH / 8);
+  EXPECT_FALSE(preview.info.converged);
+  Scene small = scene;
+  small.render.width = kW / 8;
+  small.render.height = kH / 8;
+  small.render.spp = 1;
+  EXPECT_LE(max_abs_diff(preview.images.total, render(small).total), 1e-6);
+  const RenderedFrame& relit = *frames[1];  // the full size, from the cached hits
+  EXPECT_EQ(relit.info.width, kW);
+  EXPECT_LE(relit.info.rays, static_cast<long long>(kW) * kH);  // shadow rays only
+  expect_fresh(*frames.back(), scene);
+}
+
 // Edits that arrive faster than the engine renders them: with max_publish_gap_ms 0 a first
 // image in flight is never cancelled, so frames keep coming while the edits do. Before, each
 // edit cancelled the pass of the one before it, and a frame got through only when the editing

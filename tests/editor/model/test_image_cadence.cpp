@@ -1,6 +1,6 @@
 // The editor's measure of continuous edits (image_cadence.h) on event sequences worked out by
-// hand: edit delays measured from the oldest edit an image newly shows, gaps between images
-// with the open one at the end of the window counted.
+// hand: each image's delay measured from the edit of its generation, gaps between images with
+// the open one at the end of the window counted.
 #include "editor/model/measure/image_cadence.h"
 
 #include <gtest/gtest.h>
@@ -22,8 +22,8 @@ TEST(ImageCadence, ASingleEditIsMeasuredToItsFirstAndItsFullSizeImage) {
   EXPECT_EQ(d.full_ms, -1.0);
 }
 
-// Edits every 16 ms, frames that each show the newest edit taken when they began: each image
-// is measured from the oldest edit it newly shows, so a frozen image shows in the delay too.
+// Edits every 16 ms, frames that each show the newest edit taken when they began: each image is
+// measured from the edit of its own generation.
 TEST(ImageCadence, EditsFasterThanFramesAreMeasuredFromTheOldestTheyShow) {
   ImageCadence c;
   c.restart(0.0);
@@ -31,8 +31,9 @@ TEST(ImageCadence, EditsFasterThanFramesAreMeasuredFromTheOldestTheyShow) {
   c.edit(2, 0.016);
   c.edit(3, 0.032);
   ImageCadence::Delays d = c.shown(2, true, 0.050);  // shows edits 1 and 2
-  EXPECT_NEAR(d.first_ms, 50.0, 1e-9);
-  EXPECT_NEAR(d.full_ms, 50.0, 1e-9);
+  EXPECT_NEAR(d.first_ms, 34.0, 1e-9);
+  EXPECT_NEAR(d.full_ms, 34.0, 1e-9);
+  EXPECT_EQ(d.generation, 2u);
   d = c.shown(3, false, 0.070);  // edit 3, a preview
   EXPECT_NEAR(d.first_ms, 38.0, 1e-9);
   d = c.shown(3, true, 0.100);
@@ -43,8 +44,8 @@ TEST(ImageCadence, EditsFasterThanFramesAreMeasuredFromTheOldestTheyShow) {
   EXPECT_NEAR(w.max_gap_ms, 200.0, 1e-9);
   EXPECT_NEAR(w.median_gap_ms, 50.0, 1e-9);  // upper middle of 20, 30, 50, 200
   EXPECT_EQ(w.delays, 2);
-  EXPECT_NEAR(w.median_delay_ms, 50.0, 1e-9);  // upper middle of 38, 50
-  EXPECT_NEAR(w.max_delay_ms, 50.0, 1e-9);
+  EXPECT_NEAR(w.median_delay_ms, 38.0, 1e-9);  // upper middle of 34, 38
+  EXPECT_NEAR(w.max_delay_ms, 38.0, 1e-9);
   EXPECT_NEAR(w.seconds, 0.3, 1e-12);
 }
 
@@ -66,6 +67,7 @@ TEST(ImageCadence, RestartBeginsANewWindowAndKeepsTheEditsPending) {
   c.restart(2.0);
   const ImageCadence::Delays d = c.shown(ImageCadence::kNewest, true, 2.5);  // a raster frame
   EXPECT_NEAR(d.first_ms, 1300.0, 1e-9);
+  EXPECT_EQ(d.generation, 2u);
   const ImageCadence::Window w = c.window(3.0);
   EXPECT_EQ(w.images, 1);
   EXPECT_NEAR(w.max_gap_ms, 500.0, 1e-9);  // 500 to the image, then 500 open

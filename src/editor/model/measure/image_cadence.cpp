@@ -22,27 +22,28 @@ void push_capped(std::deque<T>& values, T value) {
 void ImageCadence::edit(std::uint64_t generation, double now_s) {
   if (m_window_s < 0) m_window_s = now_s;
   if (!m_pending.empty() && m_pending.back().generation >= generation) return;  // the same one
-  m_pending.push_back({generation, now_s});
+  push_capped(m_pending, Pending{generation, now_s});
 }
 
 ImageCadence::Delays ImageCadence::shown(std::uint64_t generation, bool full_size, double now_s) {
   if (m_window_s < 0) m_window_s = now_s;
   Delays out;
-  double oldest = -1;
+  bool first = false;
   while (!m_pending.empty() && m_pending.front().generation <= generation) {
-    if (oldest < 0) oldest = m_pending.front().edit_s;
+    m_shown = m_pending.front();  // the newest edit the frame shows: its own
     m_pending.pop_front();
+    first = true;
   }
-  if (oldest >= 0) {
-    out.first_ms = (now_s - oldest) * 1000.0;
+  if (first) {
+    out.first_ms = (now_s - m_shown.edit_s) * 1000.0;
     push_capped(m_delays, out.first_ms);
-    m_shown_edit_s = oldest;
     m_full_done = false;
   }
   if (full_size && !m_full_done) {
-    out.full_ms = (now_s - m_shown_edit_s) * 1000.0;
+    out.full_ms = (now_s - m_shown.edit_s) * 1000.0;
     m_full_done = true;
   }
+  out.generation = m_shown.generation;
   push_capped(m_images, now_s);
   return out;
 }

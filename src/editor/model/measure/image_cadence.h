@@ -1,8 +1,9 @@
 #pragma once
-// When new images reach the screen, and how long after the edits they show: the edit delay and
-// the gaps between shown images, for continuous edits (an orbiting light, a drag, a script of
-// edits 16 ms apart) as for single ones. The viewport feeds it; the status bar and `stats` read
-// it. Times are seconds on the editor's frame clock.
+// When new images reach the screen, and how long after the edits they show: the edit delay (from
+// an edit to the swap that first shows a frame of it) and the gaps between shown images, for
+// continuous edits (an orbiting light, a drag, a script of edits 16 ms apart) as for single
+// ones, where each new edit used to reset the measurement before any image completed it. The
+// viewport feeds it; the status bar and `stats` read it. Times are seconds on the frame clock.
 #include <cstddef>
 #include <cstdint>
 #include <deque>
@@ -21,13 +22,15 @@ class ImageCadence {
 
   // The delays a shown image completes (ms; -1 when it completes none).
   struct Delays {
-    double first_ms = -1;  // from the oldest edit it is the first image of (its first frame)
-    double full_ms = -1;   // the same to its first full-size frame
+    double first_ms = -1;          // from its edit to the first frame of it
+    double full_ms = -1;           // from its edit to the first full-size frame of it
+    std::uint64_t generation = 0;  // the edit's (the frame's, or the newest for kNewest)
   };
   // A new image reached the screen at now_s (the buffer swap that showed it): a frame of
-  // `generation`, full_size when it has the render's size. Each edit is measured from its own
-  // time: an image that shows several edits at once (an animation whose steps came faster than
-  // frames) completes the oldest of them.
+  // `generation`, full_size when it has the render's size. It is measured from the edit of its
+  // own generation; older edits it also shows (steps of an animation that came faster than
+  // frames) are done with, and an edit no frame showed on its own counts in no delay (the gaps
+  // show that the image stood still).
   Delays shown(std::uint64_t generation, bool full_size, double now_s);
 
   // Figures since the window began (restart(), or the first call), now_s its end.
@@ -50,7 +53,7 @@ class ImageCadence {
     double edit_s;
   };
   std::deque<Pending> m_pending;  // edits not shown yet, oldest first
-  double m_shown_edit_s = -1;     // the edit of the newest image, until its first full-size image
+  Pending m_shown{0, -1};         // the edit of the newest image, until its first full-size image
   bool m_full_done = true;
   double m_window_s = -1;       // the window's start; -1: at the first call
   std::deque<double> m_images;  // times the window's images were shown (the newest kept)
