@@ -11,6 +11,7 @@
 #include "editor/model/document/document.h"
 #include "editor/model/export/export_image.h"
 #include "editor/model/export/glsl_export.h"
+#include "editor/model/export/shown_image.h"
 #include "editor/model/script/script_runner.h"
 #include "editor/ui/app.h"
 #include "io/model/model_loader.h"
@@ -173,6 +174,20 @@ void start_screenshot(App& app, ScreenshotKind kind, const std::string& path, bo
   if (kind == ScreenshotKind::window) {
     app.capture = {true, path, from_script, from_script ? 0 : 1};
     if (!from_script) close_menus();
+    return;
+  }
+  if (kind == ScreenshotKind::shown) {
+    // The frame on screen as it is, written on a worker (shown_image.h).
+    PendingExport job;
+    job.from_script = from_script;
+    job.path = std::async(std::launch::async,
+                          [frame = app.viewport.shown_images(), scene = app.commands.scene(),
+                           view = app.view, raster = app.viewport.shown_raster_a(), path] {
+                            if (frame == nullptr) throw std::runtime_error("no frame is shown yet");
+                            return write_shown(path.empty() ? view.screenshot_dir + "/" : path,
+                                               *frame, scene, view, raster);
+                          });
+    app.exports.push_back(std::move(job));
     return;
   }
   const Scene scene = app.commands.scene();

@@ -68,6 +68,9 @@ void file_menu(App& app) {
   if (ImGui::MenuItem("Screenshot: term sheet")) {
     start_screenshot(app, ScreenshotKind::terms, "", false);
   }
+  if (ImGui::MenuItem("Screenshot: frame as shown")) {
+    start_screenshot(app, ScreenshotKind::shown, "", false);
+  }
   if (ImGui::MenuItem("Screenshot: whole window")) {
     start_screenshot(app, ScreenshotKind::window, "", false);
   }

@@ -74,6 +74,8 @@ class Viewport {
   }
 
   const RenderedFrame* shown_frame() const { return m_frame_a.get(); }
+  // The frame whose images the viewport's (A side's) textures hold, kept alive for a writer.
+  std::shared_ptr<const RenderedFrame> shown_images() const { return m_image_a; }
   const RenderedFrame* shown_frame_b() const { return m_frame_b.get(); }
   // Which renderer drew the frame shown on each side: true for the raster path.
   bool shown_raster_a() const { return m_shown_raster_a; }
