@@ -163,7 +163,8 @@ bool contains_all(const std::vector<std::uint32_t>& set, const std::vector<std::
   return std::includes(set.begin(), set.end(), items.begin(), items.end());
 }
 
-TEST(ProgressiveConvergence, TheShadowEdgeAfterALightMoveIsRefinedAndTheFrameIsTheFreshRender) {
+TEST(ProgressiveRendererConvergence,
+     TheShadowEdgeAfterALightMoveIsRefinedAndTheFrameIsTheFreshRender) {
   ProgressiveRenderer engine;
   Scene scene = shadow_scene();
   const auto before = frames_of(engine, scene).back();
@@ -200,7 +201,7 @@ TEST(ProgressiveConvergence, TheShadowEdgeAfterALightMoveIsRefinedAndTheFrameIsT
   EXPECT_GT(max_abs_diff(kept.images.total, fresh_render(scene).images.total), 0.01);
 }
 
-TEST(ProgressiveConvergence, AColourEditThatMovesTheRuleIsReshadedFirstThenRefinedAgain) {
+TEST(ProgressiveRendererConvergence, AColourEditThatMovesTheRuleIsReshadedFirstThenRefinedAgain) {
   ProgressiveOptions total_only;
   total_only.terms = false;  // the viewport's default
   ProgressiveRenderer engine(total_only);
@@ -233,7 +234,7 @@ TEST(ProgressiveConvergence, AColourEditThatMovesTheRuleIsReshadedFirstThenRefin
   EXPECT_EQ(redone->refined, after->refined);
 }
 
-TEST(ProgressiveConvergence, ShininessEditsMoveTheHighlightsRefinedPixels) {
+TEST(ProgressiveRendererConvergence, ShininessEditsMoveTheHighlightsRefinedPixels) {
   ProgressiveRenderer engine;
   Scene scene = shadow_scene();
   scene.materials[0].specular = glm::vec3(1.0f);
@@ -251,7 +252,7 @@ TEST(ProgressiveConvergence, ShininessEditsMoveTheHighlightsRefinedPixels) {
 
 // Edits of every class, term views switched, the engine paused and resumed, all without
 // waiting: whatever passes were cancelled on the way, the end is the fresh render.
-TEST(ProgressiveConvergence, AnySequenceOfEditsEndsOnTheFreshRender) {
+TEST(ProgressiveRendererConvergence, AnySequenceOfEditsEndsOnTheFreshRender) {
   for (const bool terms : {false, true}) {
     ProgressiveOptions options;
     options.terms = terms;
@@ -299,7 +300,7 @@ TEST(ProgressiveConvergence, AnySequenceOfEditsEndsOnTheFreshRender) {
 // A machine too slow to re-light the full image within the budget: the light edit's first image
 // is a preview traced afresh at a fraction of the size (exactly render()'s at that size), then
 // the full image re-lit from the cached hits, then the refinement.
-TEST(ProgressiveConvergence, ASlowRelightShowsAPreviewFirst) {
+TEST(ProgressiveRendererConvergence, ASlowRelightShowsAPreviewFirst) {
   ProgressiveOptions options;
   options.light_preview_budget_ms = 1e-9;  // any measured re-light is too slow
   ProgressiveRenderer engine(options);
@@ -332,14 +333,20 @@ TEST(ProgressiveConvergence, ASlowRelightShowsAPreviewFirst) {
 // edit cancelled the pass of the one before it, and a frame got through only when the editing
 // thread stalled for a whole pass (here a re-lit 1600 x 1200 image, tens of ms, against an edit
 // every millisecond). No time is asserted: the storm lasts until three frames were published.
-TEST(ProgressiveConvergence, ContinuousEditsStillPublishFrames) {
+TEST(ProgressiveRendererConvergence, ContinuousEditsStillPublishFrames) {
   ProgressiveOptions options;
   options.max_publish_gap_ms = 0;
   std::atomic<int> published{0};  // before the engine: its worker's callback uses it
   ProgressiveRenderer engine(options);
   Scene scene = shadow_scene();
+#if defined(__SANITIZE_THREAD__) || defined(__SANITIZE_ADDRESS__)
+  // Instrumented builds trace many times slower: a smaller image re-lights as slowly.
+  scene.render.width = 400;
+  scene.render.height = 300;
+#else
   scene.render.width = 1600;
   scene.render.height = 1200;
+#endif
   scene.render.spp = 1;
   engine.set_scene(scene);
   ASSERT_TRUE(engine.wait_converged(kWaitMs));
