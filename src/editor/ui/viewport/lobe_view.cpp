@@ -14,7 +14,8 @@
 
 #include "analysis/brdf_lobe.h"
 #include "editor/model/document/document.h"
-#include "editor/ui/app.h"
+#include "editor/ui/parts/selection.h"
+#include "editor/ui/viewport/viewport.h"
 
 namespace gloss {
 
@@ -152,9 +153,7 @@ const char* energy_label(LobeEnergy energy, bool document) {
   return "?";
 }
 
-void draw_controls(App& app) {
-  ViewSettings& view = app.view;
-  const bool document_energy = app.commands.scene().render.energy_normalize;
+void draw_controls(ViewSettings& view, bool document_energy) {
   ImGui::PushItemWidth(200.0f);
   ImGui::SliderFloat("light elevation", &view.lobe_elevation_deg, 0.0f, 90.0f,
                      "%.1f\xC2\xB0 above the surface");
@@ -211,15 +210,15 @@ void legend_swatch(ImDrawList* list, ImVec2 at, ImU32 colour, bool filled) {
 
 }  // namespace
 
-void draw_lobe_view(App& app, ImVec2 pos, ImVec2 size) {
-  const Scene& scene = app.commands.scene();
+void draw_lobe_view(const Scene& scene, const Selection& selection, ViewSettings& view, ImVec2 pos,
+                    ImVec2 size) {
   ImDrawList* list = ImGui::GetWindowDrawList();
   list->AddRectFilled(pos, ImVec2(pos.x + size.x, pos.y + size.y), kBackground);
   if (scene.objects.empty()) {
     list->AddText(ImVec2(pos.x + 16.0f, pos.y + 16.0f), kText, "no object to show");
     return;
   }
-  const int index = std::clamp(app.selected_object, 0, static_cast<int>(scene.objects.size()) - 1);
+  const int index = std::clamp(selection.object, 0, static_cast<int>(scene.objects.size()) - 1);
   const Object& object = scene.objects[static_cast<std::size_t>(index)];
   const Material& material = scene.materials[static_cast<std::size_t>(object.material)];
   const std::string material_name =
@@ -232,9 +231,8 @@ void draw_lobe_view(App& app, ImVec2 pos, ImVec2 size) {
   ImGui::Text("Lobe of material '%s' (object '%s'): reflected radiance in the plane of incidence",
               material_name.c_str(), object.name.c_str());
   ImGui::SetCursorScreenPos(ImVec2(pos.x + pad, ImGui::GetCursorScreenPos().y));
-  draw_controls(app);
+  draw_controls(view, scene.render.energy_normalize);
   const float top_y = ImGui::GetCursorScreenPos().y;
-  const ViewSettings& view = app.view;
 
   // The scene's model keeps the material's exponent; the other one gets the rescaled exponent
   // when the highlight size is kept (document.h).
@@ -288,7 +286,7 @@ void draw_lobe_view(App& app, ImVec2 pos, ImVec2 size) {
   ImGui::InvisibleButton("##lobe-plot",
                          ImVec2(2.0f * frame.radius_px + 80.0f, frame.radius_px + 44.0f));
   const ImVec2 mouse = ImGui::GetIO().MousePos;
-  if (ImGui::IsItemActive()) app.view.lobe_elevation_deg = elevation_at(frame, mouse);
+  if (ImGui::IsItemActive()) view.lobe_elevation_deg = elevation_at(frame, mouse);
   // The readout: at the hovered angle, else at the mirror direction.
   const bool hovered = ImGui::IsItemHovered() && !ImGui::IsItemActive();
   const double theta =

@@ -10,7 +10,6 @@
 
 #include "editor/model/document/document.h"
 #include "editor/model/view/heat_map.h"
-#include "editor/ui/app.h"
 
 namespace gloss {
 
