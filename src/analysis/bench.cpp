@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/image_metrics.h"
+#include "analysis/paired_timing.h"
 #include "analysis/ray_baseline.h"
 #include "base/timing.h"
 #include "engine/progressive_renderer.h"
@@ -31,43 +32,6 @@ namespace gloss {
 
 namespace {
 using Clock = std::chrono::steady_clock;
-
-// Median wall time of f over runs repetitions (after one warm-up run).
-double time_median(int runs, const std::function<void()>& f) {
-  f();
-  std::vector<double> t;
-  for (int i = 0; i < runs; ++i) {
-    const Clock::time_point start = Clock::now();
-    f();
-    t.push_back(ms_since(start));
-  }
-  return median(t);
-}
-
-// f timed against a baseline g: medians of each, and the median of the ratios f / g within
-// pairs. The runs alternate (f, g, f, g ... after one warm-up of each), so the two of a pair
-// see the same state of a noisy machine (a shared machine's speed drifts over minutes:
-// docs/engine.md, "Benchmark timing"); the median of the paired ratios is the report's ratio,
-// less disturbed by that drift than the ratio of the two medians.
-struct Paired {
-  double f_ms, g_ms, ratio;
-};
-
-Paired time_paired(int runs, const std::function<void()>& f, const std::function<void()>& g) {
-  f();
-  g();
-  std::vector<double> tf, tg, ratios;
-  for (int i = 0; i < runs; ++i) {
-    Clock::time_point start = Clock::now();
-    f();
-    tf.push_back(ms_since(start));
-    start = Clock::now();
-    g();
-    tg.push_back(ms_since(start));
-    ratios.push_back(tf.back() / tg.back());
-  }
-  return {median(tf), median(tg), median(ratios)};
-}
 
 // A full 1-spp render through the engine's stages, BVH already built: trace, light factors,
 // per-pixel factors and the total image in one fused pass, as the engine's first

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/paired_timing.h"
 #include "analysis/ray_baseline.h"
 #include "base/error.h"
 #include "base/timing.h"
@@ -131,21 +132,10 @@ ScalingPoint run_scaling_row(const Scene& base, const ScalingSetup& setup, int r
     trace_single_sample(cache, ctx, factors, &total);
   };
   auto raw = [&] { trace_rays_raw(scene, embree, setup.width, setup.height); };
-  render();
-  raw();
-  std::vector<double> tf, tg, ratios;
-  for (int i = 0; i < runs; ++i) {
-    Clock::time_point t = Clock::now();
-    render();
-    tf.push_back(ms_since(t));
-    t = Clock::now();
-    raw();
-    tg.push_back(ms_since(t));
-    ratios.push_back(tf.back() / tg.back());
-  }
-  point.retrace_ms = median(tf);
-  point.embree_raw_ms = median(tg);
-  point.ratio = median(ratios);
+  const Paired paired = time_paired(runs, render, raw);
+  point.retrace_ms = paired.f_ms;
+  point.embree_raw_ms = paired.g_ms;
+  point.ratio = paired.ratio;
   return point;
 }
 

@@ -16,6 +16,7 @@
 #include "engine/progressive_renderer.h"
 #include "engine/renderer.h"
 #include "scene/camera.h"
+#include "support/progressive_frames.h"
 #include "support/scene_fixtures.h"
 
 namespace gloss {
@@ -50,15 +51,6 @@ Scene shadow_scene() {
   return scene;
 }
 
-double max_abs_diff(const Image& a, const Image& b) {
-  if (a.width != b.width || a.height != b.height) return INFINITY;
-  double worst = 0;
-  for (std::size_t i = 0; i < a.pixels.size(); ++i)
-    for (int c = 0; c < 3; ++c)
-      worst = std::max(worst, std::abs(double(a.pixels[i][c]) - double(b.pixels[i][c])));
-  return worst;
-}
-
 struct Fresh {
   TermImages images;
   std::vector<std::uint32_t> refined;
@@ -78,28 +70,12 @@ void expect_fresh(const RenderedFrame& frame, const Scene& scene) {
   const Fresh fresh = fresh_render(scene);
   EXPECT_TRUE(frame.info.converged);
   EXPECT_EQ(frame.refined, fresh.refined);
-  EXPECT_LE(max_abs_diff(frame.images.total, fresh.images.total), 1e-6);
+  EXPECT_LE(test::max_abs_diff(frame.images.total, fresh.images.total), 1e-6);
   if (frame.images.diffuse.width > 0) {
-    EXPECT_LE(max_abs_diff(frame.images.diffuse, fresh.images.diffuse), 1e-6);
-    EXPECT_LE(max_abs_diff(frame.images.ambient, fresh.images.ambient), 1e-6);
-    EXPECT_LE(max_abs_diff(frame.images.specular, fresh.images.specular), 1e-6);
+    EXPECT_LE(test::max_abs_diff(frame.images.diffuse, fresh.images.diffuse), 1e-6);
+    EXPECT_LE(test::max_abs_diff(frame.images.ambient, fresh.images.ambient), 1e-6);
+    EXPECT_LE(test::max_abs_diff(frame.images.specular, fresh.images.specular), 1e-6);
   }
-}
-
-// Every frame the engine publishes for `scene`, up to its converged one.
-std::vector<std::shared_ptr<const RenderedFrame>> frames_of(ProgressiveRenderer& engine,
-                                                            const Scene& scene) {
-  std::vector<std::shared_ptr<const RenderedFrame>> frames;
-  std::mutex mutex;
-  engine.set_on_publish([&] {
-    std::lock_guard<std::mutex> lock(mutex);
-    frames.push_back(engine.latest());
-  });
-  engine.set_scene(scene);
-  EXPECT_TRUE(engine.wait_converged(kWaitMs));
-  engine.set_on_publish(nullptr);
-  std::lock_guard<std::mutex> lock(mutex);
-  return frames;
 }
 
 std::vector<std::uint32_t> minus(const std::vector<std::uint32_t>& a,
@@ -167,7 +143,7 @@ TEST(ProgressiveRendererConvergence,
      TheShadowEdgeAfterALightMoveIsRefinedAndTheFrameIsTheFreshRender) {
   ProgressiveRenderer engine;
   Scene scene = shadow_scene();
-  const auto before = frames_of(engine, scene).back();
+  const auto before = test::frames_of(engine, scene).back();
   expect_fresh(*before, scene);
   ASSERT_GT(shadow_edge(scene).size(), 40u);
   EXPECT_TRUE(contains_all(before->refined, shadow_edge(scene)));
@@ -176,7 +152,7 @@ TEST(ProgressiveRendererConvergence,
   // x = 3 - 3 * 5/4 = -0.75 (the centre's projection from the light onto y = -1), some nine
   // pixels, so most of the new edge lies where nothing was refined.
   scene.lights[0].position = {3, 4, 0};
-  const auto frames = frames_of(engine, scene);
+  const auto frames = test::frames_of(engine, scene);
   const std::vector<std::uint32_t> edge = shadow_edge(scene);
   ASSERT_GT(minus(edge, before->refined).size(), 20u);
   const RenderedFrame& first = *frames.front();
@@ -198,7 +174,7 @@ TEST(ProgressiveRendererConvergence,
   // The regression this guards against: the old placement kept. Its image differs from the
   // fresh render by far more than 1e-6 at the new shadow edge, so expect_fresh fails for it.
   const Fresh kept = fresh_render(scene, &before->refined);
-  EXPECT_GT(max_abs_diff(kept.images.total, fresh_render(scene).images.total), 0.01);
+  EXPECT_GT(test::max_abs_diff(kept.images.total, fresh_render(scene).images.total), 0.01);
 }
 
 TEST(ProgressiveRendererConvergence, AColourEditThatMovesTheRuleIsReshadedFirstThenRefinedAgain) {
@@ -206,14 +182,14 @@ TEST(ProgressiveRendererConvergence, AColourEditThatMovesTheRuleIsReshadedFirstT
   total_only.terms = false;  // the viewport's default
   ProgressiveRenderer engine(total_only);
   Scene scene = shadow_scene();
-  const auto before = frames_of(engine, scene).back();
+  const auto before = test::frames_of(engine, scene).back();
   expect_fresh(*before, scene);
   // The ball's kd 0.02 -> 2: every difference the diffuse term makes between neighbours grows
   // a hundredfold and nothing else changes, so every pixel refined before still is, and the
   // step and curvature tests now see the ball's shading gradient too.
   const Scene original = scene;
   scene.materials[0].diffuse = glm::vec3(2.0f);
-  const auto frames = frames_of(engine, scene);
+  const auto frames = test::frames_of(engine, scene);
   ASSERT_GE(frames.size(), 2u);
   EXPECT_EQ(frames.front()->info.cause, ChangeClass::shade);
   EXPECT_EQ(frames.front()->info.rays, 0);  // the first image re-shades the cached factors
@@ -225,11 +201,11 @@ TEST(ProgressiveRendererConvergence, AColourEditThatMovesTheRuleIsReshadedFirstT
   EXPECT_EQ(after->info.refined_traced, after->refined.size() - before->refined.size());
 
   // Undo, then redo: each placement comes back exactly, as a fresh render of that state.
-  const auto undone = frames_of(engine, original).back();
+  const auto undone = test::frames_of(engine, original).back();
   expect_fresh(*undone, original);
   EXPECT_EQ(undone->refined, before->refined);
   EXPECT_EQ(undone->info.refined_traced, 0u);  // pixels were only dropped
-  const auto redone = frames_of(engine, scene).back();
+  const auto redone = test::frames_of(engine, scene).back();
   expect_fresh(*redone, scene);
   EXPECT_EQ(redone->refined, after->refined);
 }
@@ -240,14 +216,14 @@ TEST(ProgressiveRendererConvergence, ShininessEditsMoveTheHighlightsRefinedPixel
   scene.materials[0].specular = glm::vec3(1.0f);
   scene.materials[0].shininess = 20;
   scene.lights[0].position = {2, 4, 3};
-  expect_fresh(*frames_of(engine, scene).back(), scene);
+  expect_fresh(*test::frames_of(engine, scene).back(), scene);
   scene.materials[0].shininess = 400;
-  const auto frames = frames_of(engine, scene);
+  const auto frames = test::frames_of(engine, scene);
   EXPECT_EQ(frames.front()->info.cause, ChangeClass::exponent);
   EXPECT_EQ(frames.front()->info.rays, 0);
   expect_fresh(*frames.back(), scene);
   scene.render.model = ShadingModel::blinn_phong;
-  expect_fresh(*frames_of(engine, scene).back(), scene);
+  expect_fresh(*test::frames_of(engine, scene).back(), scene);
 }
 
 // Edits of every class, term views switched, the engine paused and resumed, all without
@@ -293,7 +269,7 @@ TEST(ProgressiveRendererConvergence, AnySequenceOfEditsEndsOnTheFreshRender) {
     const Scene settled = scene;
     scene.lights[0].position = {-2, 4, 1};
     engine.set_scene(scene);
-    expect_fresh(*frames_of(engine, settled).back(), settled);
+    expect_fresh(*test::frames_of(engine, settled).back(), settled);
   }
 }
 
@@ -305,11 +281,11 @@ TEST(ProgressiveRendererConvergence, ASlowRelightShowsAPreviewFirst) {
   options.light_preview_budget_ms = 1e-9;  // any measured re-light is too slow
   ProgressiveRenderer engine(options);
   Scene scene = shadow_scene();
-  expect_fresh(*frames_of(engine, scene).back(), scene);
+  expect_fresh(*test::frames_of(engine, scene).back(), scene);
   scene.lights[0].position = {3, 4, 0};
-  frames_of(engine, scene);  // times the first full-resolution re-light
+  test::frames_of(engine, scene);  // times the first full-resolution re-light
   scene.lights[0].position = {-3, 4, 1};
-  const auto frames = frames_of(engine, scene);
+  const auto frames = test::frames_of(engine, scene);
   ASSERT_GE(frames.size(), 3u);
   const RenderedFrame& preview = *frames[0];
   EXPECT_EQ(preview.info.cause, ChangeClass::light);
@@ -321,7 +297,7 @@ TEST(ProgressiveRendererConvergence, ASlowRelightShowsAPreviewFirst) {
   small.render.width = kW / 8;
   small.render.height = kH / 8;
   small.render.spp = 1;
-  EXPECT_LE(max_abs_diff(preview.images.total, render(small).total), 1e-6);
+  EXPECT_LE(test::max_abs_diff(preview.images.total, render(small).total), 1e-6);
   const RenderedFrame& relit = *frames[1];  // the full size, from the cached hits
   EXPECT_EQ(relit.info.width, kW);
   EXPECT_LE(relit.info.rays, static_cast<long long>(kW) * kH);  // shadow rays only

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/renderer.h"
+#include "support/progressive_frames.h"
 #include "support/scene_fixtures.h"
 
 namespace gloss {
@@ -18,25 +19,16 @@ namespace {
 
 constexpr double kWaitMs = 60000;
 
-double max_abs_diff(const Image& a, const Image& b) {
-  if (a.width != b.width || a.height != b.height) return INFINITY;
-  double worst = 0;
-  for (std::size_t i = 0; i < a.pixels.size(); ++i)
-    for (int c = 0; c < 3; ++c)
-      worst = std::max(worst, std::abs(double(a.pixels[i][c]) - double(b.pixels[i][c])));
-  return worst;
-}
-
 // A fresh render with the frame's sample placement (adaptive sampling's refined pixels).
 void expect_matches_fresh_render(const RenderedFrame& frame, const Scene& scene) {
   RenderOptions options;
   options.placement = &frame.refined;
   const TermImages fresh = render(scene, options);
-  EXPECT_LE(max_abs_diff(frame.images.total, fresh.total), 1e-6);
-  EXPECT_LE(max_abs_diff(frame.images.emissive, fresh.emissive), 1e-6);
-  EXPECT_LE(max_abs_diff(frame.images.ambient, fresh.ambient), 1e-6);
-  EXPECT_LE(max_abs_diff(frame.images.diffuse, fresh.diffuse), 1e-6);
-  EXPECT_LE(max_abs_diff(frame.images.specular, fresh.specular), 1e-6);
+  EXPECT_LE(test::max_abs_diff(frame.images.total, fresh.total), 1e-6);
+  EXPECT_LE(test::max_abs_diff(frame.images.emissive, fresh.emissive), 1e-6);
+  EXPECT_LE(test::max_abs_diff(frame.images.ambient, fresh.ambient), 1e-6);
+  EXPECT_LE(test::max_abs_diff(frame.images.diffuse, fresh.diffuse), 1e-6);
+  EXPECT_LE(test::max_abs_diff(frame.images.specular, fresh.specular), 1e-6);
 }
 
 std::shared_ptr<const RenderedFrame> converge(ProgressiveRenderer& engine, const Scene& scene) {
@@ -105,7 +97,7 @@ TEST(ProgressiveRenderer, TotalOnlyFramesEachCarryTheirTotal) {
   for (const auto& [info_width, total_width] : sizes) EXPECT_EQ(total_width, info_width);
   RenderOptions fresh_options;
   fresh_options.placement = &frame->refined;
-  EXPECT_LE(max_abs_diff(frame->images.total, render(scene, fresh_options).total), 1e-6);
+  EXPECT_LE(test::max_abs_diff(frame->images.total, render(scene, fresh_options).total), 1e-6);
 }
 
 // The widths of the frames published for a camera change after a first convergence.
@@ -134,27 +126,11 @@ TEST(ProgressiveRenderer, AFastFullPassSkipsTheFinerPreviews) {
   EXPECT_EQ(widths_after_camera_change(0.0), (std::vector<int>{10, 20, 40, 80, 80}));
 }
 
-// The frames an edit to `scene` publishes, up to and including its converged one.
-std::vector<std::shared_ptr<const RenderedFrame>> frames_of_edit(ProgressiveRenderer& engine,
-                                                                 const Scene& scene) {
-  std::vector<std::shared_ptr<const RenderedFrame>> frames;
-  std::mutex mutex;
-  engine.set_on_publish([&] {
-    std::lock_guard<std::mutex> lock(mutex);
-    frames.push_back(engine.latest());
-  });
-  engine.set_scene(scene);
-  EXPECT_TRUE(engine.wait_converged(kWaitMs));
-  engine.set_on_publish(nullptr);
-  std::lock_guard<std::mutex> lock(mutex);
-  return frames;
-}
-
 // An edit that keeps the primary hits: its first image is made without primary rays (none at
 // all for constants and exponents), and the converged one is the fresh render's, placement and
 // all (the rule runs again on the new centre image: test_progressive_convergence.cpp).
 void expect_cached_edit(ProgressiveRenderer& engine, const Scene& scene, ChangeClass cause) {
-  const auto frames = frames_of_edit(engine, scene);
+  const auto frames = test::frames_of(engine, scene);
   ASSERT_FALSE(frames.empty());
   const FrameInfo& first = frames.front()->info;
   EXPECT_EQ(first.cause, cause);
