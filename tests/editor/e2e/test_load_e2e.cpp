@@ -9,7 +9,6 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -54,24 +53,22 @@ struct Window {
   int edits_shown = 0;
 };
 
-// The figures of the n-th `stats` line (0-based) of the editor's output.
+// The figures of the n-th `stats` line (0-based) of the editor's output; max_gap_ms stays -1
+// when there is none.
 Window stats_window(const std::string& out, int n) {
-  const std::regex line_re(
-      "new_images=(\\d+) image_gap_ms max=([0-9.]+) median=([0-9.]+) \\| edit_delay_ms "
-      "median=([0-9.]+) max=([0-9.]+) edits_shown=(\\d+)");
   Window w;
-  int k = 0;
-  for (auto it = std::sregex_iterator(out.begin(), out.end(), line_re);
-       it != std::sregex_iterator(); ++it, ++k) {
-    if (k != n) continue;
-    const std::smatch& m = *it;
-    w.images = std::stoi(m[1]);
-    w.max_gap_ms = std::stod(m[2]);
-    w.median_gap_ms = std::stod(m[3]);
-    w.median_delay_ms = std::stod(m[4]);
-    w.max_delay_ms = std::stod(m[5]);
-    w.edits_shown = std::stoi(m[6]);
+  std::size_t at = 0;
+  for (int k = 0; k <= n; ++k) {
+    at = out.find("new_images=", at);
+    if (at == std::string::npos) return w;
+    if (k < n) ++at;
   }
+  const int read = std::sscanf(out.c_str() + at,
+                               "new_images=%d image_gap_ms max=%lf median=%lf | edit_delay_ms "
+                               "median=%lf max=%lf edits_shown=%d",
+                               &w.images, &w.max_gap_ms, &w.median_gap_ms, &w.median_delay_ms,
+                               &w.max_delay_ms, &w.edits_shown);
+  if (read != 6) w.max_gap_ms = -1;
   return w;
 }
 
