@@ -77,13 +77,12 @@ class LoadE2E : public test::EditorProcessTest {
   LoadE2E() : EditorProcessTest("gloss-load-e2e-") {}
 };
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-constexpr double kLongestGapMs = 1000;  // instrumented builds run several times slower
-#else
 constexpr double kLongestGapMs = 250;
-#endif
 
 TEST_F(LoadE2E, AnOrbitingLightKeepsTheImageMovingBesideTwoBusyProcesses) {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  GTEST_SKIP() << "a bound on time means nothing in an instrumented build";
+#endif
   BusyProcesses busy(2);
   ASSERT_EQ(busy.running(), 2u);
   // The first window settles the animation in; the second, 3 s of orbiting, is measured.
