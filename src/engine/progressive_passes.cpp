@@ -26,12 +26,15 @@ bool ProgressiveRenderer::Impl::step() {
     first_in_flight = pass == 0;
   }
   refined_traced = 0;
-  // A light edit the full image cannot show within the budget shows a preview first.
-  if (dirty == ChangeClass::light && level == options.preview_levels && !previewed) {
-    const int shift = light_preview.shift(options.light_preview_budget_ms, options.preview_levels,
-                                          last_full_pass_ms);
-    if (shift > 0) return preview_light(shift, start);
+  // An edit whose full image is not expected within the budget shows a preview first.
+  const bool edit_pass =
+      level == options.preview_levels && dirty != ChangeClass::none && dirty != ChangeClass::full;
+  if (edit_pass && pass == 0) {
+    const int shift = edit_preview.shift(dirty, options.edit_preview_budget_ms,
+                                         options.preview_levels, last_full_pass_ms);
+    if (shift > 0) return preview_edit(shift, start);
   }
+  const ChangeClass edit = dirty;
   std::atomic<long long> rays{0};
   ctx.rays = &rays;
   ChangeClass redo = ChangeClass::none;  // what a cancellation leaves to do
@@ -41,7 +44,6 @@ bool ProgressiveRenderer::Impl::step() {
   // The image size first (a restart or the next preview level), then the frame to fill.
   const bool restart = dirty == ChangeClass::full;
   const bool next_level = dirty == ChangeClass::none && level < options.preview_levels;
-  const bool full_relight = dirty == ChangeClass::light && level == options.preview_levels;
   SampleCache previous;  // next_level: the current resolution, kept until the next is complete
   const int previous_level = level;
   if (restart) {
@@ -104,28 +106,27 @@ bool ProgressiveRenderer::Impl::step() {
   if (!ok) {
     dirty = std::max(dirty, redo);
     if (cache.samples() == 0) dirty = ChangeClass::full;
-    if (full_relight) light_preview.light_pass(ms_between(start, Clock::now()), false);
+    if (edit_pass) edit_preview.first_pass(edit, ms_between(start, Clock::now()), false);
     return false;
   }
   dirty = ChangeClass::none;
   if (!total_done || total == nullptr) combine_terms(factors, ctx, frame->images, worker_terms);
   const double pass_ms = ms_between(start, Clock::now());
   if ((restart || next_level) && level == options.preview_levels) last_full_pass_ms = pass_ms;
-  if (full_relight) light_preview.light_pass(pass_ms, true);
+  if (edit_pass) edit_preview.first_pass(edit, pass_ms, true);
   publish(frame, pass_ms, rays.load(), converged_state());
   return true;
 }
 
-bool ProgressiveRenderer::Impl::preview_light(int shift, Clock::time_point start) {
+bool ProgressiveRenderer::Impl::preview_edit(int shift, Clock::time_point start) {
   const int w = std::max(1, scene->render.width >> shift);
   const int h = std::max(1, scene->render.height >> shift);
   const std::shared_ptr<RenderedFrame> frame = FramePool::make(frame_pool, w, h, worker_terms);
   std::atomic<long long> rays{0};
   ctx.rays = &rays;
-  const bool ok = light_preview.render(ctx, w, h, frame->images, worker_terms);
+  const bool ok = edit_preview.render(ctx, w, h, frame->images, worker_terms);
   ctx.rays = nullptr;
-  if (!ok) return false;  // `dirty` stays `light`
-  previewed = true;
+  if (!ok) return false;  // `dirty` stays as it was
   published_centres = false;
   publish_frame(frame, w, h, 1, ms_between(start, Clock::now()), rays.load(), false);
   return true;

@@ -58,7 +58,6 @@ bool ProgressiveRenderer::Impl::take_inbox() {
       scene == nullptr ? ChangeClass::full : classify_change(*scene, *next, diff);
   cause = change;
   pass = 0;
-  previewed = false;
   published_centres = false;  // the published frame shows an older scene
   adaptive_state.edit(change, cache);
   if (embree == nullptr || scene == nullptr || diff.geometry) {

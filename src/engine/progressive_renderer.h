@@ -48,10 +48,11 @@ struct ProgressiveOptions {
   // come faster than a pass (a drag, an animation on a loaded machine) images keep coming, each
   // at most one pass behind the newest edit. 0: first images are never cancelled.
   double max_publish_gap_ms = 50.0;
-  // A light edit whose full-resolution re-light is expected to take longer than this (the last
-  // one did) first shows a coarse preview, traced afresh at the finest of 1/2, 1/4, 1/8 of the
-  // size expected within it (light_preview.h), then the full image. 0: never.
-  double light_preview_budget_ms = 25.0;
+  // An edit (shade, exponent, light) whose full-resolution first pass is expected to take longer
+  // than this (the last of its class did, or ran that long before it was cancelled) first shows
+  // a coarse preview traced afresh at the finest of 1/2, 1/4, 1/8 of the size expected within it
+  // (edit_preview.h), then the full image. 0: never.
+  double edit_preview_budget_ms = 25.0;
 };
 
 // The name of each engine's own thread (the one that takes edits in and publishes frames), as

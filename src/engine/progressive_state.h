@@ -14,8 +14,8 @@
 #include <thread>
 
 #include "engine/adaptive_progression.h"
+#include "engine/edit_preview.h"
 #include "engine/frame_pool.h"
-#include "engine/light_preview.h"
 #include "engine/progressive_renderer.h"
 #include "engine/render_context.h"
 #include "engine/shade/pixel_factors.h"
@@ -72,8 +72,7 @@ struct ProgressiveRenderer::Impl {
   ChangeClass cause = ChangeClass::full;
   bool worker_terms = true;
   AdaptiveProgression adaptive_state;  // the refined samples' placement and its currency
-  LightPreview light_preview;          // a light edit's coarse first image when re-lighting is slow
-  bool previewed = false;              // this generation's light preview is published
+  EditPreview edit_preview;            // an edit's coarse first image when its full pass is slow
   // The last published total is the current scene's centre image (no refined pixels), the image
   // the adaptive rule reads.
   bool published_centres = false;
@@ -87,8 +86,8 @@ struct ProgressiveRenderer::Impl {
   // progressive_passes.cpp: one unit of work, then a publication; false when cancelled.
   bool step();
   void start_level(int new_level);
-  // light_preview.h: the edit at 1 / 2^shift of the full size first; false when cancelled.
-  bool preview_light(int shift, Clock::time_point start);
+  // edit_preview.h: the edit at 1 / 2^shift of the full size first; false when cancelled.
+  bool preview_edit(int shift, Clock::time_point start);
   // Publishes frame, its images made from the current factors.
   void publish(std::shared_ptr<RenderedFrame> frame, double pass_ms, long long rays,
                bool converged);
