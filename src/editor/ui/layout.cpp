@@ -1,7 +1,7 @@
-// The window's layout: the menu bar on top, the Material panel on the left, the Lights & Scene
-// and View & Quality panels on the right, the viewport between them, the status bar below, the
-// floating windows and questions over them. Each is handed only the parts of the App it may
-// touch (panels/panels.h).
+// The window's layout: the menu bar on top, the Material and Reference panels on the left, the
+// Lights & Scene and View & Quality panels on the right, the viewport between them, the status
+// bar below, the floating windows and questions over them. Each is handed only the parts of
+// the App it may touch (panels/panels.h).
 #include <algorithm>
 #include <cmath>
 
@@ -59,12 +59,16 @@ void draw_layout(App& app) {
   layout.left_width = std::clamp(layout.left_width, 220.0f, most);
   layout.right_width = std::clamp(layout.right_width, 220.0f, most);
   layout.lights_share = std::clamp(layout.lights_share, 0.15f, 0.85f);
+  layout.material_share = std::clamp(layout.material_share, 0.2f, 0.9f);
   const float side = layout.left_width;
   const float right_side = layout.right_width;
   const float left = main->Pos.x, right = main->Pos.x + main->Size.x;
   const float lights_h = std::floor(height * layout.lights_share);
+  const float material_h = std::floor(height * layout.material_share);
   draw_material_panel(app.commands, app.selection, app.view, app.material_panel, app.library,
-                      ImVec2(left, top), ImVec2(side, height));
+                      ImVec2(left, top), ImVec2(side, material_h));
+  draw_reference_panel(app.commands, app.selection, app.view, app.reference_panel,
+                       ImVec2(left, top + material_h), ImVec2(side, height - material_h));
   draw_lights_panel(app.commands, app.selection, app.view, app.session.browser,
                     ImVec2(right - right_side, top), ImVec2(right_side, lights_h));
   draw_view_panel(app.commands, app.view, app.viewport, app.snapshot, app.windows, app.exports,
@@ -85,6 +89,9 @@ void draw_layout(App& app) {
       splitter("##split-lights", ImVec2(right - right_side, top + lights_h - 3.0f),
                ImVec2(right_side, 6.0f), false) /
       height;
+  layout.material_share += splitter("##split-material", ImVec2(left, top + material_h - 3.0f),
+                                    ImVec2(side, 6.0f), false) /
+                           height;
   draw_status_bar(app.viewport, app.view, app.frame.times, app.notices, app.session,
                   ImVec2(left, top + height), ImVec2(main->Size.x, status_h));
   // The Quality window opens over the viewport's right side (its table needs more width than a
