@@ -116,10 +116,10 @@ void ProgressiveRenderer::Impl::publish_frame(std::shared_ptr<RenderedFrame> fra
 ProgressiveRenderer::ProgressiveRenderer(ProgressiveOptions options)
     : m_impl(std::make_unique<Impl>(options)) {
   m_impl->worker_terms = options.terms;
-  m_impl->worker = std::thread([impl = m_impl.get()] {
-    pthread_setname_np(pthread_self(), kEngineThreadName);
-    impl->run();
-  });
+  m_impl->worker = std::thread([impl = m_impl.get()] { impl->run(); });
+  // Named by the creating thread before the constructor returns, so a caller that sets thread
+  // priorities by name (the editor's background_priority.h) sees the name from the start.
+  pthread_setname_np(m_impl->worker.native_handle(), kEngineThreadName);
 }
 
 ProgressiveRenderer::~ProgressiveRenderer() {
