@@ -20,6 +20,9 @@ find_package(nlohmann_json 3 REQUIRED)
 find_package(assimp 5.2 REQUIRED)
 # PNG with text chunks (io only). Debian 12: libpng 1.6.39.
 find_package(PNG REQUIRED)
+# OpenEXR (io only, private to gloss_io): the linear image as 32-bit float EXR beside the PFM.
+# Debian 12: libopenexr-dev 3.1.5 (with Imath 3.1.6).
+find_package(OpenEXR 3 REQUIRED)
 # Command lines of gloss-cli and gloss. Debian 12: 2.1.2.
 find_package(CLI11 REQUIRED)
 # stb_easy_font.h from libstb-dev (header only, public domain): the tiny bitmap font that labels

@@ -247,8 +247,8 @@ bool ProgressiveRenderer::Impl::refine() {
     std::lock_guard<std::mutex> lock(publish_mutex);
     centres = published;
   }
-  std::vector<std::uint32_t> pixels = choose_refined_pixels(
-      cache, centres->images.total, scene->render.aa_threshold, 0, cache.height);
+  std::vector<std::uint32_t> pixels =
+      choose_refined_pixels(cache, centres->images.total, scene->render, 0, cache.height);
   return trace_refined_samples(cache, ctx, std::move(pixels), scene->render.spp);
 }
 
