@@ -156,8 +156,9 @@ ScriptAction parse_light(Tokens& t) {
   return parse_field(t, light_fields(), FieldPart::light, light, t.word("light field"));
 }
 
-// Older spellings of render fields, kept working: `shadows on`, `energy on`, `spp 16`,
-// `encoding srgb`.
+// Shorter spellings of render fields, kept working: `shadows on`, `energy on`, `spp 16`,
+// `encoding srgb`, `exposure STOPS` (once a view preference, now the document's render.exposure),
+// `tone aces`.
 ScriptAction parse_render_alias(Tokens& t, const std::string& verb) {
   if (verb == "energy")
     return parse_field(t, render_fields(), FieldPart::render, 0, "energy_normalize");
@@ -252,6 +253,32 @@ MouseAction parse_mouse(Tokens& t) {
   return a;
 }
 
+// `layout`, `layout maximise on|off`, `layout collapse|expand left|right`, `layout reset`.
+LayoutAction parse_layout(Tokens& t) {
+  LayoutAction a;
+  if (t.done()) return a;
+  const std::string& what = t.word("layout action");
+  if (what == "maximise") {
+    a.verb = LayoutAction::Verb::maximise;
+    a.on = t.on_off("layout maximise");
+  } else if (what == "collapse" || what == "expand") {
+    a.verb = what == "collapse" ? LayoutAction::Verb::collapse : LayoutAction::Verb::expand;
+    const std::string& side = t.word("left or right");
+    if (side != "left" && side != "right") {
+      throw std::runtime_error("layout " + what + " takes left or right, got '" + side + "'");
+    }
+    a.right = side == "right";
+  } else if (what == "reset") {
+    a.verb = LayoutAction::Verb::reset;
+  } else {
+    throw std::runtime_error(
+        "layout takes nothing, 'maximise on|off', 'collapse left|right', 'expand left|right' or "
+        "'reset', got '" +
+        what + "'");
+  }
+  return a;
+}
+
 // ---- The GLSL path (issue 12): renderer choice and raster knobs ----
 // `renderer cpu|gl|auto`, `shading pixel|vertex`, `shadow-map SIZE`, `shadow-bias TEXELS`;
 // false when verb is none of them.
@@ -332,7 +359,8 @@ ScriptAction parse_line(Tokens& t) {
   if (find_field(scene_fields(), verb) != nullptr) {  // `ambient R G B`, `background R G B`
     return parse_field(t, scene_fields(), FieldPart::scene, 0, verb);
   }
-  if (verb == "shadows" || verb == "energy" || verb == "spp" || verb == "encoding") {
+  if (verb == "shadows" || verb == "energy" || verb == "spp" || verb == "encoding" ||
+      verb == "exposure" || verb == "tone") {
     return parse_render_alias(t, verb);
   }
   if (verb == "undo") return UndoAction{};
@@ -344,8 +372,8 @@ ScriptAction parse_line(Tokens& t) {
     if (!t.done()) {
       const std::string& kind = t.word("kind");
       if (!parse_screenshot_kind(kind, s.kind)) {
-        throw std::runtime_error("screenshot kind must be viewport, terms or window, got '" + kind +
-                                 "'");
+        throw std::runtime_error("screenshot kind must be viewport, terms, window or exr, got '" +
+                                 kind + "'");
       }
     }
     return s;
@@ -370,7 +398,6 @@ ScriptAction parse_line(Tokens& t) {
     return v;
   }
   if (verb == "inspect") return parse_inspect(t);
-  if (verb == "exposure") return ExposureAction{t.number("stops")};
   if (verb == "select") return SelectAction{t.index("object index")};
   if (verb == "stats") return StatsAction{};
   if (verb == "sleep") {
@@ -393,6 +420,8 @@ ScriptAction parse_line(Tokens& t) {
   }
   if (ScriptAction raster; parse_raster_line(t, verb, raster)) return raster;
   if (verb == "mouse") return parse_mouse(t);
+  if (verb == "layout") return parse_layout(t);
+  if (verb == "key") return KeyAction{t.word("keys, as the help window writes them")};
   // Issue 14: the memory report.
   if (verb == "memory") return MemoryAction{};
   // Issue 12: the GLSL path.

@@ -98,10 +98,6 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
               }
               return LineResult::go_on();
             },
-            [&](const ExposureAction& a) {
-              host.view().exposure = a.stops;
-              return LineResult::go_on();
-            },
             [&](const SelectAction& a) {
               if (a.object >= static_cast<int>(host.layer().scene().objects.size())) {
                 return bad_line(where, "no object " + std::to_string(a.object));
@@ -131,6 +127,8 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
             [&](const InspectAction& a) { return inspect(host, a, where); },
             [&](const MemoryAction&) { return host.memory(); },
             [&](const MouseAction& a) { return host.mouse(a); },
+            [&](const LayoutAction& a) { return host.layout(a, where); },
+            [&](const KeyAction& a) { return host.key(a, where); },
             [&](const ExportGlslAction& a) { return export_glsl_line(host, a, where); },
             [&](const RendererAction& a) {
               host.view().renderer = a.choice;
@@ -157,6 +155,18 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
 
 LineResult ScriptHost::memory() {
   std::printf("memory: %s\n", memory_text(layer(), ViewMemory{}).c_str());
+  std::fflush(stdout);
+  return LineResult::go_on();
+}
+
+LineResult ScriptHost::layout(const LayoutAction&, const std::string&) {
+  std::printf("layout: no display, no window\n");
+  std::fflush(stdout);
+  return LineResult::go_on();
+}
+
+LineResult ScriptHost::key(const KeyAction& action, const std::string&) {
+  std::printf("key %s: no display, no window\n", action.keys.c_str());
   std::fflush(stdout);
   return LineResult::go_on();
 }

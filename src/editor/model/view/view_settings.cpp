@@ -75,13 +75,15 @@ const char* to_string(ScreenshotKind kind) {
       return "terms";
     case ScreenshotKind::window:
       return "window";
+    case ScreenshotKind::exr:
+      return "exr";
   }
   return "?";
 }
 
 bool parse_screenshot_kind(const std::string& name, ScreenshotKind& kind) {
   const ScreenshotKind all[] = {ScreenshotKind::viewport, ScreenshotKind::terms,
-                                ScreenshotKind::window};
+                                ScreenshotKind::window, ScreenshotKind::exr};
   return parse_name(name, all, kind);
 }
 

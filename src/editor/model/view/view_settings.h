@@ -1,8 +1,8 @@
 #pragma once
-// How the editor shows the document: view mode, exposure, preview quality. These are
+// How the editor shows the document: view mode, preview quality, the pixel inspector. These are
 // preferences of the window, not part of the document, so they are not undone. The display
-// encoding (sRGB or clamp) is the document's (render.srgb): the viewport, screenshots and
-// exports all follow it.
+// transform (render.exposure, render.tone, render.srgb) is the document's: the viewport,
+// screenshots, exports and gloss-cli all follow it (display/display_transform.h).
 #include <string>
 
 #include "editor/model/view/raster_settings.h"
@@ -27,7 +27,10 @@ bool parse_term_view(const std::string& name, TermView& term);
 // the raster path per pixel | per vertex (pixel_vertex).
 enum class AbSource { models, snapshot, cpu_gl, pixel_vertex };
 
-enum class ScreenshotKind { viewport, terms, window };
+// viewport and terms render the document again at its size, through the display transform, as
+// PNG; exr is the viewport's linear image (before the transform) as 32-bit float OpenEXR; window
+// reads the window back.
+enum class ScreenshotKind { viewport, terms, window, exr };
 const char* to_string(ScreenshotKind kind);
 bool parse_screenshot_kind(const std::string& name, ScreenshotKind& kind);
 
@@ -41,7 +44,6 @@ struct ViewSettings {
   RendererChoice renderer = RendererChoice::cpu;
   RasterSettings raster;
   TermView single = TermView::specular;   // shown by ViewMode::single
-  float exposure = 0.0f;                  // stops: displayed value = linear * 2^exposure
   bool heat_auto_scale = true;            // heat scale = largest difference of the shown pair
   float heat_scale = 0.1f;                // linear difference at the top of the heat ramp, > 0
   float preview_scale = 1.0f;             // render pixels per screen pixel, 0.25..1

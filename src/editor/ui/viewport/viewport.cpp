@@ -100,12 +100,16 @@ void Viewport::upload_frames(double now_s) {
   if (new_a && m_frame_a->images.total.width > 0) m_image_a = m_frame_a;
   if (new_b && m_frame_b->images.total.width > 0) m_image_b = m_frame_b;
   if (new_a || new_b) max_difference_of_shown();
-  if (new_a && m_latency.edit_s >= 0.0 && m_frame_a->info.generation > m_latency.generation) {
+  // The edit's side (sync): a new frame of its generation there shows it.
+  const RenderedFrame* watched =
+      m_latency.watch_b ? (new_b ? m_frame_b.get() : nullptr) : (new_a ? m_frame_a.get() : nullptr);
+  if (watched != nullptr && m_latency.edit_s >= 0.0 &&
+      watched->info.generation > m_latency.generation) {
     if (!m_latency.first_shown) {
       m_latency.first_shown = true;
       m_latency.pending_first_s = now_s;
     }
-    if (m_frame_a->info.width == m_render_width && m_frame_a->info.height == m_render_height) {
+    if (watched->info.width == m_render_width && watched->info.height == m_render_height) {
       m_latency.pending_full_s = now_s;
     }
   }
@@ -187,7 +191,18 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
                      : AbScenes{std::move(scene), Scene{}};
   pair.a.render.width = pair.b.render.width = width;  // the snapshot has its own size
   pair.a.render.height = pair.b.render.height = height;
-  std::uint64_t pushed_generation = 0;  // what the A side's ray tracer returned, 0: not handed
+  if (m_fill) {
+    // Panes that fill their cells show each side's view, in the document's frame, and more
+    // around it (pane_camera); the snapshot keeps its own camera.
+    Scene framed = document;
+    for (Scene* side : {&pair.a, &pair.b}) {
+      framed.camera = side->camera;
+      side->camera = pane_camera(framed);
+    }
+  }
+  std::uint64_t pushed_generation = 0;    // what the A side's ray tracer returned, 0: not handed
+  std::uint64_t pushed_generation_b = 0;  // the same for the B side
+  bool a_changed = false, b_changed = false;  // a side's ray tracer has a new generation
   if (changed) {
     if (!terms) {
       // Textures the view no longer shows: llvmpipe keeps each in RAM (12 B per pixel).
@@ -206,17 +221,25 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
       if (!m_a) {
         m_a = make_cpu_renderer(terms);
         m_automatic.ray_tracer_restarted();
+        m_last_generation_a = 0;
       } else {
         m_a->set_terms(terms);  // no work when unchanged; also a view switched while paused
       }
       pushed_generation = m_a->set_scene(pair.a);
+      a_changed = pushed_generation != m_last_generation_a;
+      m_last_generation_a = pushed_generation;
       // Taking over from the raster path: frames of older generations show the scene before it.
       if (m_shown_raster_a) m_handover_generation = pushed_generation;
       m_traced_setup = m_setup;
     }
     if (ab && !sides.b.raster) {
-      if (!m_b) m_b = make_cpu_renderer(false);
-      m_b->set_scene(pair.b);
+      if (!m_b) {
+        m_b = make_cpu_renderer(false);
+        m_last_generation_b = 0;
+      }
+      pushed_generation_b = m_b->set_scene(pair.b);
+      b_changed = pushed_generation_b != m_last_generation_b;
+      m_last_generation_b = pushed_generation_b;
     } else {
       m_b.reset();
     }
@@ -247,16 +270,24 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
   if (new_edit) {
     // now_s is the start of the frame in which the edit happened. Frames of the generation the
     // ray tracer was handed with it, or later, show it; without that, frames newer than its
-    // newest.
+    // newest. The side watched is the one the edit changed: in the snapshot | live view an edit
+    // changes only B (live); watching A there, whose frames never came, made the next view
+    // switch read as the edit's delay (20 to 127 s).
     const std::shared_ptr<const RenderedFrame> newest = m_a ? m_a->latest() : nullptr;
     m_latency.edit_s = now_s;
     m_latency.drag = moving_gesture(now_s);
     m_latency.setup = m_setup;
-    m_latency.generation = pushed_generation > 0 ? pushed_generation - 1
-                           : newest              ? newest->info.generation
-                                                 : 0;
+    m_latency.watch_b = b_changed && !a_changed;
+    m_latency.generation = m_latency.watch_b       ? pushed_generation_b - 1
+                           : pushed_generation > 0 ? pushed_generation - 1
+                           : newest                ? newest->info.generation
+                                                   : 0;
     m_latency.first_shown = false;
     m_latency.pending_first_s = m_latency.pending_full_s = -1.0;
+    // An edit that changed no ray-traced side (a raster side shows it below; a name changes no
+    // image) is not waited for: a later, unrelated frame would read as its delay.
+    const bool raster_side = sides.a.raster || (ab && sides.b.raster);
+    if (!a_changed && !b_changed && !raster_side) m_latency.edit_s = -1.0;
   }
   if (raster_dirty) {
     m_raster_key = key;
