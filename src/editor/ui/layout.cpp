@@ -177,7 +177,8 @@ void draw_layout(App& app) {
   }
   const ImVec2 viewport_pos = at(l.viewport, origin);
   const ImVec2 viewport_size = size_of(l.viewport);
-  app.viewport.draw(app.commands, app.view, app.selection, app.input, app.now_s(), viewport_pos,
+  app.viewport.draw(app.commands, app.view, app.selection, app.input,
+                    app.snapshot ? &*app.snapshot : nullptr, app.now_s(), viewport_pos,
                     viewport_size);
   draw_inspector(app.inspector, app.view, app.document, app.snapshot, app.viewport, viewport_pos,
                  viewport_size);

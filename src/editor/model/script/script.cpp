@@ -6,6 +6,7 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "io/material/preset_table.h"
 
 namespace gloss {
 
@@ -253,6 +254,50 @@ MouseAction parse_mouse(Tokens& t) {
   return a;
 }
 
+// `lobe plot NAME`, `lobe overlay none|snapshot|material NAME|preset NAME`, `lobe turn A T`.
+LobeAction parse_lobe(Tokens& t) {
+  LobeAction a;
+  const std::string& what = t.word("lobe action (plot, overlay or turn)");
+  if (what == "plot") {
+    const std::string& name = t.word("plot");
+    if (!parse_lobe_plot(name, a.plot)) {
+      throw std::runtime_error("lobe plot must be plane, 3d or albedo, got '" + name + "'");
+    }
+    return a;
+  }
+  if (what == "turn") {
+    a.verb = LobeAction::Verb::turn;
+    a.azimuth_deg = t.number("azimuth degrees");
+    a.tilt_deg = t.number("tilt degrees");
+    if (!(a.tilt_deg >= -10.0f && a.tilt_deg <= 89.0f) || !std::isfinite(a.azimuth_deg)) {
+      throw std::runtime_error("lobe turn takes an azimuth and a tilt of -10..89 degrees");
+    }
+    return a;
+  }
+  if (what != "overlay") {
+    throw std::runtime_error("lobe takes plot, overlay or turn, got '" + what + "'");
+  }
+  a.verb = LobeAction::Verb::overlay;
+  const std::string& kind = t.word("overlay (none, snapshot, material NAME, preset NAME)");
+  if (kind == "none") return a;
+  if (kind == "snapshot") {
+    a.overlay = LobeOverlay::snapshot;
+    return a;
+  }
+  if (kind != "material" && kind != "preset") {
+    throw std::runtime_error(
+        "lobe overlay takes none, snapshot, 'material NAME' or 'preset NAME', "
+        "got '" +
+        kind + "'");
+  }
+  a.overlay = kind == "material" ? LobeOverlay::material : LobeOverlay::preset;
+  a.name = t.word("name");
+  if (a.overlay == LobeOverlay::preset && find_preset(a.name) == nullptr) {
+    throw std::runtime_error("no preset '" + a.name + "'");
+  }
+  return a;
+}
+
 // `layout`, `layout maximise on|off`, `layout collapse|expand left|right`, `layout reset`.
 LayoutAction parse_layout(Tokens& t) {
   LayoutAction a;
@@ -421,6 +466,7 @@ ScriptAction parse_line(Tokens& t) {
   if (ScriptAction raster; parse_raster_line(t, verb, raster)) return raster;
   if (verb == "mouse") return parse_mouse(t);
   if (verb == "layout") return parse_layout(t);
+  if (verb == "lobe") return parse_lobe(t);
   if (verb == "key") return KeyAction{t.word("keys, as the help window writes them")};
   // Issue 14: the memory report.
   if (verb == "memory") return MemoryAction{};

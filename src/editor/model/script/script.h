@@ -127,12 +127,24 @@ struct KeyAction {
   std::string keys;
 };
 
+// ---- The lobe view's plots (issue 24, item 7) ----
+// `lobe plot plane|3d|albedo`, `lobe overlay none|snapshot`, `lobe overlay material NAME`,
+// `lobe overlay preset NAME`, `lobe turn AZIMUTH_DEG TILT_DEG` (the 3D plot's camera).
+struct LobeAction {
+  enum class Verb { plot, overlay, turn };
+  Verb verb = Verb::plot;
+  LobePlot plot = LobePlot::plane;
+  LobeOverlay overlay = LobeOverlay::none;
+  std::string name;  // overlay material or preset
+  float azimuth_deg = 0.0f, tilt_deg = 0.0f;
+};
+
 using ScriptAction =
     std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction, ViewAction,
                  SelectAction, StatsAction, SleepAction, AnimateAction, QuitAction, QualityAction,
                  InspectAction, ClippedOverlayAction, SnapshotAction, MemoryAction,
                  ExportGlslAction, RendererAction, ShadingAction, ShadowMapAction, ShadowBiasAction,
-                 MouseAction, LayoutAction, KeyAction>;
+                 MouseAction, LayoutAction, KeyAction, LobeAction>;
 
 struct ScriptLine {
   int line = 0;  // 1-based line number in the file

@@ -1,5 +1,6 @@
 #include "editor/model/script/script_runner.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -128,6 +129,34 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
             [&](const MemoryAction&) { return host.memory(); },
             [&](const MouseAction& a) { return host.mouse(a); },
             [&](const LayoutAction& a) { return host.layout(a, where); },
+            [&](const LobeAction& a) {
+              ViewSettings& view = host.view();
+              switch (a.verb) {
+                case LobeAction::Verb::plot:
+                  view.lobe_plot = a.plot;
+                  break;
+                case LobeAction::Verb::overlay:
+                  if (a.overlay == LobeOverlay::material) {
+                    const std::vector<std::string>& names = host.layer().scene().material_names;
+                    if (std::find(names.begin(), names.end(), a.name) == names.end()) {
+                      return bad_line(where, "no material '" + a.name + "'");
+                    }
+                  }
+                  if (a.overlay == LobeOverlay::snapshot && !host.snapshot()) {
+                    return bad_line(where,
+                                    "no snapshot to compare with: take one with "
+                                    "'snapshot' first");
+                  }
+                  view.lobe_overlay = a.overlay;
+                  view.lobe_overlay_name = a.name;
+                  break;
+                case LobeAction::Verb::turn:
+                  view.lobe_azimuth_deg = a.azimuth_deg;
+                  view.lobe_tilt_deg = a.tilt_deg;
+                  break;
+              }
+              return LineResult::go_on();
+            },
             [&](const KeyAction& a) { return host.key(a, where); },
             [&](const ExportGlslAction& a) { return export_glsl_line(host, a, where); },
             [&](const RendererAction& a) {

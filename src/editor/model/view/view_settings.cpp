@@ -87,6 +87,23 @@ bool parse_screenshot_kind(const std::string& name, ScreenshotKind& kind) {
   return parse_name(name, all, kind);
 }
 
+const char* to_string(LobePlot plot) {
+  switch (plot) {
+    case LobePlot::plane:
+      return "plane";
+    case LobePlot::hemisphere:
+      return "3d";
+    case LobePlot::albedo:
+      return "albedo";
+  }
+  return "?";
+}
+
+bool parse_lobe_plot(const std::string& name, LobePlot& plot) {
+  const LobePlot all[] = {LobePlot::plane, LobePlot::hemisphere, LobePlot::albedo};
+  return parse_name(name, all, plot);
+}
+
 bool lobe_energy_normalize(LobeEnergy energy, bool document_setting) {
   return energy == LobeEnergy::scene ? document_setting : energy == LobeEnergy::on;
 }

@@ -38,6 +38,17 @@ bool parse_screenshot_kind(const std::string& name, ScreenshotKind& kind);
 // forced on or off for the view alone (the document is not changed).
 enum class LobeEnergy { scene, on, off };
 
+// What the lobe view plots: the plane of incidence (polar), the whole hemisphere of outgoing
+// directions (3D), or the directional albedo against the incidence angle.
+enum class LobePlot { plane, hemisphere, albedo };
+const char* to_string(LobePlot plot);
+bool parse_lobe_plot(const std::string& name, LobePlot& plot);
+
+// The lobe view's second material, drawn over the selected one's: none, the snapshot's material
+// of the same object (the A side of the snapshot A/B view), a material of the document or a
+// preset, by name (lobe_overlay.h resolves it).
+enum class LobeOverlay { none, snapshot, material, preset };
+
 struct ViewSettings {
   ViewMode mode = ViewMode::render;
   // Which renderer draws the viewport (raster_settings.h) and the raster path's knobs.
@@ -60,6 +71,11 @@ struct ViewSettings {
   // The lobe view (ViewMode::lobe).
   float lobe_elevation_deg = 45.0f;  // light above the surface, degrees, 0..90
   LobeEnergy lobe_energy = LobeEnergy::scene;
+  LobePlot lobe_plot = LobePlot::plane;
+  LobeOverlay lobe_overlay = LobeOverlay::none;
+  std::string lobe_overlay_name;   // LobeOverlay::material and ::preset: which one
+  float lobe_azimuth_deg = 35.0f;  // the 3D plot's camera about the normal, degrees
+  float lobe_tilt_deg = 25.0f;     // ... above the surface, degrees, -10..89
 
   // The pixel inspector: a pixel of the document's render size, read at its centre.
   bool show_inspector = false;

@@ -312,6 +312,12 @@ bool Viewport::converged_and_shown(std::uint64_t revision, const ViewSettings& v
       (view.mode == ViewMode::ab && view.ab_source != m_pushed_source)) {
     return false;
   }
+  // The lobe view's albedo plot is shown once its curves (a worker's) are the current ones.
+  if (view.mode == ViewMode::lobe && view.lobe_plot == LobePlot::albedo &&
+      (!m_lobe.albedo.current() ||
+       (view.lobe_overlay != LobeOverlay::none && m_lobe.overlay_albedo.busy()))) {
+    return false;
+  }
   // A raster frame is final once it is on screen; the ray tracer's when it has converged.
   auto side_done = [&](const AbSide& side, const ProgressiveRenderer* renderer,
                        const std::shared_ptr<const RenderedFrame>& frame, bool shown_raster) {

@@ -16,6 +16,7 @@
 #include "editor/gl/render_target.h"
 #include "editor/model/measure/exposure_histogram.h"
 #include "editor/model/view/ab_compare.h"
+#include "editor/model/view/albedo_curves.h"
 #include "editor/model/view/automatic_choice.h"
 #include "editor/model/view/camera_controller.h"
 #include "editor/model/view/pane_layout.h"
@@ -42,6 +43,11 @@ struct LatencyProbe {
   DragSetup setup;       // the viewport's setup when the edit was made (automatic_choice.h)
 };
 
+// What the lobe view keeps between frames: its albedo curves, computed on workers.
+struct LobeViewState {
+  AlbedoCurves albedo, overlay_albedo;
+};
+
 // One pane of the viewport in screen coordinates (ImGui's, y down).
 struct Pane {
   ImVec2 min{0, 0};
@@ -63,7 +69,7 @@ class Viewport {
   // camera or a light through commands, a click selects, with the inspector open it pins a pixel
   // (view). input: where the buttons went down; now_s: the frame clock.
   void draw(Commands& commands, ViewSettings& view, Selection& selection, const InputState& input,
-            double now_s, ImVec2 pos, ImVec2 size);
+            const Snapshot* snapshot, double now_s, ImVec2 pos, ImVec2 size);
   // Copies the viewport's image into the window's back buffer (framebuffer_height: the window's
   // in framebuffer pixels); call after clearing it and before ImGui draws on top.
   void blit(int framebuffer_height) const;
@@ -258,6 +264,7 @@ class Viewport {
   TargetKey m_target_key;
   std::uint64_t m_uploads = 0;  // counts texture uploads
   LatencyProbe m_latency;
+  LobeViewState m_lobe;  // the lobe view's (lobe_view.cpp)
 
   // The last histogram (histogram()) and what it was computed from.
   struct HistogramKey {
@@ -288,8 +295,9 @@ class Viewport {
 };
 
 // lobe_view.cpp: the lobe view of the selected object's material, drawn by the viewport in its
-// place when view.mode is ViewMode::lobe; dragging in the plot moves the view's light.
-void draw_lobe_view(const Scene& scene, const Selection& selection, ViewSettings& view, ImVec2 pos,
-                    ImVec2 size);
+// place when view.mode is ViewMode::lobe; dragging in the plot moves the view's light. snapshot:
+// the A/B snapshot (the second material it may draw), may be null.
+void draw_lobe_view(const Scene& scene, const Selection& selection, ViewSettings& view,
+                    const Snapshot* snapshot, LobeViewState& state, ImVec2 pos, ImVec2 size);
 
 }  // namespace gloss

@@ -118,7 +118,8 @@ bool Viewport::moving_gesture(double now_s) const {
 }
 
 void Viewport::draw(Commands& commands, ViewSettings& view, Selection& selection,
-                    const InputState& input, double now_s, ImVec2 pos, ImVec2 size) {
+                    const InputState& input, const Snapshot* snapshot, double now_s, ImVec2 pos,
+                    ImVec2 size) {
   m_pos = pos;
   m_size = size;
   m_framebuffer_scale = ImGui::GetIO().DisplayFramebufferScale.x;
@@ -156,7 +157,7 @@ void Viewport::draw(Commands& commands, ViewSettings& view, Selection& selection
     return;
   }
   if (view.mode == ViewMode::lobe) {  // the renderer keeps the render pane's size meanwhile
-    draw_lobe_view(commands.scene(), selection, view, pos, size);
+    draw_lobe_view(commands.scene(), selection, view, snapshot, m_lobe, pos, size);
     ImGui::End();
     return;
   }
