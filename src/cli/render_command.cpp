@@ -2,6 +2,7 @@
 //                  [--width N] [--height N] [--spp N] [--model phong|blinn-phong]
 //                  [--shadows on|off] [--srgb] [--exposure STOPS] [--tone none|reinhard|aces]
 //                  [--sampling adaptive|uniform] [--aa-threshold T] [--precision float|double]
+//                  [--physical]
 // Options override the scene's render block; the result is validated again before rendering.
 #include <chrono>
 #include <cmath>
@@ -42,6 +43,8 @@ struct RenderArgs {
   double aa_threshold = 0, exposure = 0;
   std::string precision = "float";  // float: the fast renderer; double: the reference path
   bool srgb = false;
+  bool physical = false;  // materials with a `reference` shaded by it (double path)
+  CLI::Option* precision_option = nullptr;
   CLI::Option *png_option = nullptr, *pfm_option = nullptr, *exr_option = nullptr;
   CLI::Option* terms_option = nullptr;
   CLI::Option *width_option = nullptr, *height_option = nullptr, *spp_option = nullptr;
@@ -107,6 +110,10 @@ void apply_overrides(const RenderArgs& args, Scene& scene) {
   }
   if (args.precision != "float" && args.precision != "double") {
     throw InputError(args.scene, "expected 'float' or 'double', got '" + args.precision + "'", 0, 0,
+                     "--precision");
+  }
+  if (args.physical && *args.precision_option && args.precision != "double") {
+    throw InputError(args.scene, "--physical renders on the double-precision path", 0, 0,
                      "--precision");
   }
   validate_scene(scene);
@@ -190,6 +197,7 @@ void run_render(RenderArgs args) {
   std::vector<std::string> warnings;
   Scene scene = load_scene(args.scene, &warnings);
   apply_overrides(args, scene);
+  if (args.physical) args.precision = "double";
 
   if (!*args.png_option && !*args.pfm_option && !*args.exr_option && !*args.terms_option) {
     // In the current folder; a PNG given as the scene is not overwritten by its own re-render.
@@ -216,6 +224,7 @@ void run_render(RenderArgs args) {
     // Adaptive sampling: the fast renderer's placement, then every sample in double.
     std::vector<std::uint8_t> mask;
     ReferenceOptions reference;
+    reference.physical = args.physical;
     if (adaptive) {
       options.terms = false;
       options.refined = &refined;
@@ -232,7 +241,8 @@ void run_render(RenderArgs args) {
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
-  OutputWriter writer(scene, args.precision);
+  const std::string precision = args.physical ? "double, physical reference" : args.precision;
+  OutputWriter writer(scene, precision);
   if (!args.png.empty()) writer.png(args.png, images.total);
   if (!args.pfm.empty()) writer.pfm(args.pfm, images.total);
   if (!args.exr.empty()) writer.exr(args.exr, images.total);
@@ -246,7 +256,7 @@ void run_render(RenderArgs args) {
 
   char time_text[64];
   std::snprintf(time_text, sizeof time_text, "%.1f ms", ms);
-  std::cout << "rendered " << args.scene << " (" << settings_summary(scene.render, args.precision)
+  std::cout << "rendered " << args.scene << " (" << settings_summary(scene.render, precision)
             << ") in " << time_text;
   if (adaptive) {
     char share[64];
@@ -298,9 +308,12 @@ void add_render_command(CLI::App& app) {
   args->tone_option = sub->add_option(
       "--tone", args->tone,
       "the PNGs' tone curve after the exposure: none (default), reinhard or aces (render.tone)");
-  sub->add_option(
+  args->precision_option = sub->add_option(
       "--precision", args->precision,
       "float (default: the fast renderer) or double (the reference path, docs/accuracy.md)");
+  sub->add_flag("--physical", args->physical,
+                "Shade materials that have a physical `reference` by it (GGX, "
+                "docs/spec/physical-reference.md) on the double path; others stay Phong");
   sub->callback([args] { run_render(*args); });
 }
 

@@ -13,6 +13,8 @@
 #include "engine/parallel_loops.h"
 #include "engine/trace/embree_scene.h"
 #include "engine/trace/self_shadow.h"
+#include "physical/microfacet.h"
+#include "physical/reference_brdf.h"
 #include "reference/pixel_inspection.h"
 #include "reference/reference_hit.h"
 #include "scene/camera.h"
@@ -66,6 +68,8 @@ struct Job {
   PowMode pow = PowMode::exact;
   bool gouraud = false;
   Vec3<T> ambient_light{0};  // A_scene + sum_i La_i
+  // Per material, its physical reference's BRDF when ReferenceOptions::physical asks for it.
+  std::vector<std::optional<ReferenceBrdf>> physical;
 };
 
 // The spec's shadow test for one light from a hit: the segment from the offset origin
@@ -108,6 +112,25 @@ LightFactors<T> light_weights(const Job<T>& job, const Vec3<T>& p, const Vec3<T>
   dw = f.diffuse_weight;
   sw = f.spec_weight * specular_power<T>(model_cosine(f, job.scene->render.model), alpha, job.pow);
   return f;
+}
+
+// A light's physical-reference terms at a hit (ReferenceOptions::physical), unshadowed:
+// pi f(l, v) Ld ndl att, split into the dielectric base (diffuse) and the microfacet lobe
+// (specular). ndl att comes from the contract's light_factors, so ndl <= 0 and d = 0 add nothing
+// as for Phong; f is 0 where n.v <= 0 (a shading normal turned away from the eye).
+template <class T>
+void physical_terms(const ReferenceBrdf& brdf, const Vec3<T>& p, const Vec3<T>& n, const Vec3<T>& v,
+                    const PointLight& light, glm::dvec3& diffuse, glm::dvec3& specular) {
+  const glm::dvec3 dp(p), dn(n), dv(v);
+  const LightFactors<double> f = light_factors<double>(dp, dn, dv, glm::dvec3(light.position),
+                                                       glm::dvec3(light.attenuation), false, 1.0);
+  diffuse = specular = glm::dvec3(0.0);
+  if (!(f.diffuse_weight > 0.0)) return;
+  const glm::dvec3 l = glm::normalize(glm::dvec3(light.position) - dp);
+  const BrdfValue value = evaluate_brdf(brdf, glm::normalize(dn), l, glm::normalize(dv));
+  const glm::dvec3 scale = glm::dvec3(light.diffuse) * (kPi * f.diffuse_weight);
+  diffuse = value.diffuse * scale;
+  specular = value.specular * scale;
 }
 
 // Gouraud weights at a mesh hit: the corners' unshadowed weights interpolated with the
@@ -219,8 +242,23 @@ void shade_sample(const Job<T>& job, int x, int y, int s, int count, PixelSums<T
     record->alpha = double(alpha);
     record->energy_factor = double(norm);
   }
+  const std::optional<ReferenceBrdf>& physical =
+      job.physical.empty() ? std::optional<ReferenceBrdf>()
+                           : job.physical[static_cast<std::size_t>(object.material)];
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const PointLight& light = scene.lights[i];
+    if (physical) {
+      if (!(glm::dot(h.n, Vec3<T>(light.position) - h.p) > T(0))) continue;
+      if (scene.render.shadows && occluded(job, key.object, h, light.position)) {
+        key.shadowed |= std::uint64_t(1) << (i % 64);
+        continue;
+      }
+      glm::dvec3 diffuse, specular;
+      physical_terms(*physical, h.p, h.n, h.v, light, diffuse, specular);
+      sum.diffuse += Vec3<T>(diffuse);
+      sum.specular += Vec3<T>(specular);
+      continue;
+    }
     if (record != nullptr) record_light(job, key.object, h, light, alpha, record->lights[i]);
     T dw = 0, sw = 0;
     bool lit_side;
@@ -294,6 +332,13 @@ TermImages render_reference(const Scene& scene, const ReferenceOptions& options)
   Job<T> job = make_job<T>(scene, embree.handle(), options.spp > 0 ? options.spp : scene.render.spp,
                            options.pow.value_or(scene.render.pow));
   job.gouraud = options.gouraud;
+  if (options.physical) {
+    for (const Material& m : scene.materials) {
+      job.physical.push_back(m.reference
+                                 ? std::optional<ReferenceBrdf>(make_reference_brdf(*m.reference))
+                                 : std::nullopt);
+    }
+  }
 
   const int w = job.width, h = job.height;
   const std::size_t pixels = static_cast<std::size_t>(w) * h;

@@ -72,6 +72,7 @@ struct App {
 
   Viewport viewport;
   MaterialPanelState material_panel;
+  ReferencePanelState reference_panel;
   InspectorState inspector;
   QualityState quality;  // the Quality window's speed/accuracy measurements
 

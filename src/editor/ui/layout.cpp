@@ -1,9 +1,9 @@
 // The window's layout (editor/model/view/panel_layout.h has its rules): the menu bar on top, the
-// Material panel on the left, the Lights & Scene and View & Quality panels on the right, the
-// viewport between them, the status bar below, the floating windows and questions over them.
-// Panels collapse to strips and the viewport can take the whole width; the splitters and the
-// panels' collapse buttons are small windows kept above the panels. Each panel is handed only
-// the parts of the App it may touch (panels/panels.h).
+// Material and Reference panels on the left, the Lights & Scene and View & Quality panels on the
+// right, the viewport between them, the status bar below, the floating windows and questions
+// over them. Panels collapse to strips and the viewport can take the whole width; the splitters
+// and the panels' collapse buttons are small windows kept above the panels. Each panel is handed
+// only the parts of the App it may touch (panels/panels.h).
 #include <algorithm>
 #include <cmath>
 
@@ -168,6 +168,8 @@ void draw_layout(App& app) {
   if (l.left.visible()) {
     draw_material_panel(app.commands, app.selection, app.view, app.material_panel, app.library,
                         at(l.left, origin), size_of(l.left));
+    draw_reference_panel(app.commands, app.selection, app.view, app.reference_panel,
+                         at(l.reference, origin), size_of(l.reference));
   }
   if (l.lights.visible()) {
     draw_lights_panel(app.commands, app.selection, app.view, app.session.browser,
@@ -192,9 +194,11 @@ void draw_layout(App& app) {
   panels.right_width = l.right_width - splitter("##split-right", l.right_split, origin, true);
   panels.lights_share +=
       splitter("##split-lights", l.lights_split, origin, false) / std::max(l.viewport.h, 1.0f);
+  panels.material_share +=
+      splitter("##split-material", l.material_split, origin, false) / std::max(l.viewport.h, 1.0f);
   clamp_panel_widths(panels, main->Size.x);
   if (l.left.visible() &&
-      corner_button("##collapse-left", "<", "collapse the Material panel to a strip ([)",
+      corner_button("##collapse-left", "<", "collapse Material and Reference to a strip ([)",
                     origin.x + l.left.right(), origin.y + l.left.y)) {
     panels.left_collapsed = true;
   }

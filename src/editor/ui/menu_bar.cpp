@@ -131,6 +131,12 @@ void view_menu(Commands& commands, ViewSettings& view, std::optional<Snapshot>& 
     view.mode = ViewMode::ab;
     view.ab_source = AbSource::pixel_vertex;
   }
+  // Issue 23: the material beside its physical reference.
+  if (ImGui::MenuItem("A/B material vs physical reference", nullptr,
+                      view.mode == ViewMode::ab && view.ab_source == AbSource::reference)) {
+    view.mode = ViewMode::ab;
+    view.ab_source = AbSource::reference;
+  }
   ImGui::MenuItem("Show clipped pixels", nullptr, &view.show_clipped);
   ImGui::Separator();
   const bool srgb = commands.scene().render.srgb;

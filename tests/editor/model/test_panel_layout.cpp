@@ -24,9 +24,13 @@ TEST(PanelLayout, AtLaptopSizeTheViewportKeepsHalfTheWidth) {
   EXPECT_EQ(l.viewport.y, kMenu);
   EXPECT_EQ(l.viewport.h, 640.0f - kMenu - kStatus);
   EXPECT_EQ(l.status.y, 640.0f - kStatus);
-  // Lights & Scene on top of View & Quality, half each, the column's full height.
+  // Lights & Scene on top of View & Quality, half each, the column's full height; Material on
+  // top of Reference (two thirds, floor(596 x 0.66) = 393), likewise.
   EXPECT_EQ(l.lights.h + l.view.h, l.viewport.h);
   EXPECT_EQ(l.view.y, l.lights.bottom());
+  EXPECT_EQ(l.left.h, 393.0f);
+  EXPECT_EQ(l.reference.y, l.left.bottom());
+  EXPECT_EQ(l.left.h + l.reference.h, l.viewport.h);
 }
 
 TEST(PanelLayout, DraggedPanelsNeverTakeMoreThanHalf) {
@@ -55,6 +59,7 @@ TEST(PanelLayout, CollapsedPanelsAreStripsAndGiveTheirRoomToTheViewport) {
   c.left_collapsed = true;
   PanelLayout l = panel_layout(c, 1024, 640, kMenu, kStatus);
   EXPECT_FALSE(l.left.visible());
+  EXPECT_FALSE(l.reference.visible());
   EXPECT_FALSE(l.left_split.visible());
   EXPECT_EQ(l.left_strip.w, kStripWidth);
   EXPECT_EQ(l.viewport.x, kStripWidth);
@@ -91,6 +96,7 @@ TEST(PanelLayout, SplittersAreSeveralPixelsWideOnTheBorders) {
   EXPECT_EQ(l.left_split.x + l.left_split.w * 0.5f, l.left.right());
   EXPECT_EQ(l.right_split.x + l.right_split.w * 0.5f, l.lights.x);
   EXPECT_EQ(l.lights_split.y + l.lights_split.h * 0.5f, l.lights.bottom());
+  EXPECT_EQ(l.material_split.y + l.material_split.h * 0.5f, l.left.bottom());
 }
 
 TEST(PaneLayout, TermsFillTheViewportWithTheArrangementOfLargestFrames) {

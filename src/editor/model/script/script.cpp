@@ -6,67 +6,11 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
-#include "io/material/preset_table.h"
+#include "editor/model/script/script_tokens.h"
 
 namespace gloss {
 
 namespace {
-
-// Tokens of one line and the parsing helpers that turn them into values, throwing plain
-// messages that parse_script turns into InputErrors with the line number.
-struct Tokens {
-  std::vector<std::string> words;
-  std::size_t next = 1;  // words[0] is the command
-
-  bool done() const { return next >= words.size(); }
-  const std::string& word(const char* what) {
-    if (done()) throw std::runtime_error(std::string("missing ") + what);
-    return words[next++];
-  }
-  float number(const char* what) {
-    const std::string& w = word(what);
-    char* end = nullptr;
-    const float value = std::strtof(w.c_str(), &end);
-    if (end == w.c_str() || *end != '\0') {
-      throw std::runtime_error(std::string("expected a number for ") + what + ", got '" + w + "'");
-    }
-    return value;
-  }
-  double whole(const char* what) {
-    const std::string& w = word(what);
-    char* end = nullptr;
-    const double value = std::strtod(w.c_str(), &end);
-    if (end == w.c_str() || *end != '\0' || value != std::floor(value)) {
-      throw std::runtime_error(std::string("expected a whole number for ") + what + ", got '" + w +
-                               "'");
-    }
-    return value;
-  }
-  int index(const char* what) {
-    const std::string& w = word(what);
-    char* end = nullptr;
-    const long value = std::strtol(w.c_str(), &end, 10);
-    if (end == w.c_str() || *end != '\0' || value < 0 || value > 1000000) {
-      throw std::runtime_error(std::string("expected an index for ") + what + ", got '" + w + "'");
-    }
-    return static_cast<int>(value);
-  }
-  glm::vec3 vec3(const char* what) {
-    const float x = number(what);
-    const float y = number(what);
-    const float z = number(what);
-    return {x, y, z};
-  }
-  bool on_off(const char* what) {
-    const std::string& w = word(what);
-    if (w == "on") return true;
-    if (w == "off") return false;
-    throw std::runtime_error(std::string(what) + " must be on or off, got '" + w + "'");
-  }
-  void end() {
-    if (!done()) throw std::runtime_error("unexpected '" + words[next] + "'");
-  }
-};
 
 // `quality raster PATH [WIDTH HEIGHT [REFERENCE_SPP]]` (issue 12: the raster path's rows).
 QualityAction parse_quality_raster(Tokens& t) {
@@ -191,9 +135,12 @@ bool parse_view_extra(Tokens& t, const std::string& mode, ScriptAction& out) {
         v.ab_source = AbSource::cpu_gl;
       } else if (source == "pixel-vertex") {
         v.ab_source = AbSource::pixel_vertex;
+      } else if (source == "reference") {
+        v.ab_source = AbSource::reference;
       } else {
         throw std::runtime_error(
-            "view ab takes nothing, 'snapshot', 'cpu-gl' or 'pixel-vertex', got '" + source + "'");
+            "view ab takes nothing, 'snapshot', 'cpu-gl', 'pixel-vertex' or 'reference', got '" +
+            source + "'");
       }
     }
     out = v;
@@ -202,13 +149,24 @@ bool parse_view_extra(Tokens& t, const std::string& mode, ScriptAction& out) {
   return false;
 }
 
-// `view lobe ELEVATION_DEG` and `inspect X Y` (the lobe view and the pixel inspector).
+// `view lobe [ELEVATION_DEG] [log|linear]` and `inspect X Y` (the lobe view and the pixel
+// inspector).
 ScriptAction parse_lobe_elevation(Tokens& t, ViewAction v) {
-  const float degrees = t.number("light elevation in degrees");
-  if (!(degrees >= 0.0f && degrees <= 90.0f)) {
-    throw std::runtime_error("the light elevation must be 0..90 degrees");
+  const std::string& first = t.words[t.next];
+  if (first != "log" && first != "linear") {
+    const float degrees = t.number("light elevation in degrees");
+    if (!(degrees >= 0.0f && degrees <= 90.0f)) {
+      throw std::runtime_error("the light elevation must be 0..90 degrees");
+    }
+    v.lobe_elevation_deg = degrees;
   }
-  v.lobe_elevation_deg = degrees;
+  if (!t.done()) {
+    const std::string& radius = t.word("radius scale");
+    if (radius != "log" && radius != "linear") {
+      throw std::runtime_error("the lobe's radius is log or linear, got '" + radius + "'");
+    }
+    v.lobe_log_radius = radius == "log" ? 1 : 0;
+  }
   return v;
 }
 
@@ -250,76 +208,6 @@ MouseAction parse_mouse(Tokens& t) {
     } else {
       throw std::runtime_error("mouse button must be left, right or middle, got '" + button + "'");
     }
-  }
-  return a;
-}
-
-// `lobe plot NAME`, `lobe overlay none|snapshot|material NAME|preset NAME`, `lobe turn A T`.
-LobeAction parse_lobe(Tokens& t) {
-  LobeAction a;
-  const std::string& what = t.word("lobe action (plot, overlay or turn)");
-  if (what == "plot") {
-    const std::string& name = t.word("plot");
-    if (!parse_lobe_plot(name, a.plot)) {
-      throw std::runtime_error("lobe plot must be plane, 3d or albedo, got '" + name + "'");
-    }
-    return a;
-  }
-  if (what == "turn") {
-    a.verb = LobeAction::Verb::turn;
-    a.azimuth_deg = t.number("azimuth degrees");
-    a.tilt_deg = t.number("tilt degrees");
-    if (!(a.tilt_deg >= -10.0f && a.tilt_deg <= 89.0f) || !std::isfinite(a.azimuth_deg)) {
-      throw std::runtime_error("lobe turn takes an azimuth and a tilt of -10..89 degrees");
-    }
-    return a;
-  }
-  if (what != "overlay") {
-    throw std::runtime_error("lobe takes plot, overlay or turn, got '" + what + "'");
-  }
-  a.verb = LobeAction::Verb::overlay;
-  const std::string& kind = t.word("overlay (none, snapshot, material NAME, preset NAME)");
-  if (kind == "none") return a;
-  if (kind == "snapshot") {
-    a.overlay = LobeOverlay::snapshot;
-    return a;
-  }
-  if (kind != "material" && kind != "preset") {
-    throw std::runtime_error(
-        "lobe overlay takes none, snapshot, 'material NAME' or 'preset NAME', "
-        "got '" +
-        kind + "'");
-  }
-  a.overlay = kind == "material" ? LobeOverlay::material : LobeOverlay::preset;
-  a.name = t.word("name");
-  if (a.overlay == LobeOverlay::preset && find_preset(a.name) == nullptr) {
-    throw std::runtime_error("no preset '" + a.name + "'");
-  }
-  return a;
-}
-
-// `layout`, `layout maximise on|off`, `layout collapse|expand left|right`, `layout reset`.
-LayoutAction parse_layout(Tokens& t) {
-  LayoutAction a;
-  if (t.done()) return a;
-  const std::string& what = t.word("layout action");
-  if (what == "maximise") {
-    a.verb = LayoutAction::Verb::maximise;
-    a.on = t.on_off("layout maximise");
-  } else if (what == "collapse" || what == "expand") {
-    a.verb = what == "collapse" ? LayoutAction::Verb::collapse : LayoutAction::Verb::expand;
-    const std::string& side = t.word("left or right");
-    if (side != "left" && side != "right") {
-      throw std::runtime_error("layout " + what + " takes left or right, got '" + side + "'");
-    }
-    a.right = side == "right";
-  } else if (what == "reset") {
-    a.verb = LayoutAction::Verb::reset;
-  } else {
-    throw std::runtime_error(
-        "layout takes nothing, 'maximise on|off', 'collapse left|right', 'expand left|right' or "
-        "'reset', got '" +
-        what + "'");
   }
   return a;
 }
@@ -435,14 +323,16 @@ ScriptAction parse_line(Tokens& t) {
       if (!parse_term_view(term, v.term)) throw std::runtime_error("unknown term '" + term + "'");
     } else if (!parse_view_mode(mode, v.mode) || v.mode == ViewMode::single) {
       throw std::runtime_error(
-          "view must be render, terms, ab, lobe, 'term NAME', 'ab snapshot|cpu-gl|pixel-vertex' "
-          "or 'clipped on|off', got '" +
+          "view must be render, terms, ab, lobe, 'term NAME', "
+          "'ab snapshot|cpu-gl|pixel-vertex|reference' or 'clipped on|off', got '" +
           mode + "'");
     }
     if (v.mode == ViewMode::lobe && !t.done()) return parse_lobe_elevation(t, v);
     return v;
   }
   if (verb == "inspect") return parse_inspect(t);
+  if (verb == "reference") return parse_reference(t);
+  if (verb == "fit") return parse_fit(t);
   if (verb == "select") return SelectAction{t.index("object index")};
   if (verb == "stats") return StatsAction{};
   if (verb == "sleep") {

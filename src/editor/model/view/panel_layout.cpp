@@ -26,6 +26,7 @@ void clamp_panel_widths(PanelChoices& c, float width) {
   c.left_width = std::clamp(c.left_width, lo, hi);
   c.right_width = std::clamp(c.right_width, lo, hi);
   c.lights_share = std::clamp(c.lights_share, 0.15f, 0.85f);
+  c.material_share = std::clamp(c.material_share, 0.2f, 0.9f);
   // The panels shown share half the window: past it, the wider gives way first (down to the
   // narrower's width), then both alike; never below lo.
   const float budget = std::floor(width * 0.5f);
@@ -69,7 +70,11 @@ PanelLayout panel_layout(const PanelChoices& choices, float width, float height,
     out.left_strip = {0, top, kStripWidth, body_h};
     x0 = kStripWidth;
   } else {
-    out.left = {0, top, c.left_width, body_h};
+    const float material_h = std::floor(body_h * c.material_share);
+    out.left = {0, top, c.left_width, material_h};
+    out.reference = {0, top + material_h, c.left_width, body_h - material_h};
+    out.material_split = {0, top + material_h - kSplitterWidth * 0.5f, c.left_width,
+                          kSplitterWidth};
     x0 = c.left_width;
     out.left_split = {x0 - kSplitterWidth * 0.5f, top, kSplitterWidth, body_h};
   }

@@ -1,7 +1,8 @@
 #pragma once
 // Where the window's parts sit (editor/ui/layout.cpp draws them there): the menu bar on top, the
-// status bar below, the Material panel on the left, the Lights & Scene and View & Quality panels
-// in a column on the right, the viewport between. GL-free, so the rules are tested as numbers:
+// status bar below, the Material and Reference panels in a column on the left, the Lights & Scene
+// and View & Quality panels in a column on the right, the viewport between. GL-free, so the rules
+// are tested as numbers:
 //   - the viewport keeps at least half the window's width: the side panels share the other half
 //     (each between kMinPanelWidth, or a quarter of the window when that is less, and 40% of it);
 //   - a collapsed panel is a strip of kStripWidth pixels with its name, which expands it again;
@@ -15,9 +16,10 @@ constexpr float kStripWidth = 24.0f;      // a collapsed panel
 constexpr float kSplitterWidth = 8.0f;    // what a user grabs to resize, centred on the border
 
 // What the user chose: sizes dragged to (0: the default share of the window), collapsed panels,
-// the maximised viewport. lights_share: the Lights panel's part of the right column's height.
+// the maximised viewport. lights_share: the Lights panel's part of the right column's height;
+// material_share: the Material panel's part of the left column's (the Reference panel's the rest).
 struct PanelChoices {
-  float left_width = 0.0f, right_width = 0.0f, lights_share = 0.5f;
+  float left_width = 0.0f, right_width = 0.0f, lights_share = 0.5f, material_share = 0.66f;
   bool left_collapsed = false, right_collapsed = false;
   bool viewport_maximised = false;
 };

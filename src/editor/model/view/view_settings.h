@@ -25,7 +25,9 @@ bool parse_term_view(const std::string& name, TermView& term);
 // What the A/B view compares (ab_compare.h): the document as Phong | Blinn-Phong, the snapshot
 // taken with Snapshot | the live document, the ray tracer at 1 spp | the raster path (cpu_gl), or
 // the raster path per pixel | per vertex (pixel_vertex).
-enum class AbSource { models, snapshot, cpu_gl, pixel_vertex };
+// reference: the material (Phong or Blinn-Phong, as the scene) against its physical reference
+// (docs/spec/physical-reference.md), both at 1 spp.
+enum class AbSource { models, snapshot, cpu_gl, pixel_vertex, reference };
 
 // viewport and terms render the document again at its size, through the display transform, as
 // PNG; exr is the viewport's linear image (before the transform) as 32-bit float OpenEXR; window
@@ -76,6 +78,9 @@ struct ViewSettings {
   std::string lobe_overlay_name;   // LobeOverlay::material and ::preset: which one
   float lobe_azimuth_deg = 35.0f;  // the 3D plot's camera about the normal, degrees
   float lobe_tilt_deg = 25.0f;     // ... above the surface, degrees, -10..89
+  // The plot's radius on a logarithmic scale (three decades below the largest value), so a
+  // physical reference's bright peak and a Phong lobe of ks <= 1 read in one plot.
+  bool lobe_log_radius = false;
 
   // The pixel inspector: a pixel of the document's render size, read at its centre.
   bool show_inspector = false;

@@ -39,7 +39,8 @@ void refresh(InspectorState& state, const ViewSettings& view, const CommandLayer
       // The same two documents the viewport's A/B renders (ab_compare.h).
       const AbScenes pair = ab_scenes(scene, source, taken ? &*taken : nullptr, keep);
       state.a = std::make_unique<PixelInspector>(pair.a);
-      state.b = std::make_unique<PixelInspector>(pair.b);
+      // The material | reference view's B side is not the Phong contract: not inspected.
+      if (source != AbSource::reference) state.b = std::make_unique<PixelInspector>(pair.b);
     } else {
       state.a = std::make_unique<PixelInspector>(scene);
     }
@@ -210,6 +211,9 @@ void draw_inspector(InspectorState& state, ViewSettings& view, const CommandLaye
                                    ab_label_b(view.ab_source, view.keep_highlight_size)};
     draw_table(a, &b, labels);
   } else {
+    if (view.mode == ViewMode::ab && view.ab_source == AbSource::reference) {
+      ImGui::TextDisabled("A, the material; B is the physical reference (not a Phong reading)");
+    }
     draw_table(a, nullptr, nullptr);
   }
   ImGui::End();

@@ -2,10 +2,14 @@
 // What panels keep between frames that is neither the document nor a view setting: one struct
 // per panel that needs one, owned by the App and handed to that panel alone.
 #include <cstdint>
+#include <future>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "editor/gl/raster_tradeoff.h"
+#include "editor/model/document/reference_fit.h"
 #include "editor/model/measure/quality_measurement.h"
 #include "editor/model/view/view_settings.h"
 #include "reference/pixel_inspection.h"
@@ -15,6 +19,21 @@ namespace gloss {
 // The Material panel.
 struct MaterialPanelState {
   bool link_channels = false;  // colour editors move R, G, B together
+};
+
+// The Reference panel: a fit in flight on a worker (a fraction of a second; the UI keeps drawing)
+// and what the last one found.
+struct ReferencePanelState {
+  std::future<ReferenceFit> job;  // valid() while a fit runs
+  ShadingModel job_model = ShadingModel::phong;
+  LobeMetric metric = LobeMetric::l2;  // what Fit minimises
+  std::vector<std::string> report;     // the last applied fit's constants and residuals
+  PhysicalReference last_reference;    // a reference to give a material that has none
+  // How far the selected material is from its reference now, recomputed on a worker whenever
+  // the material, its reference, the model or the energy switch change (a few tens of ms).
+  std::future<LobeResidual> residual_job;
+  std::string residual_key;  // what residual (or residual_job, while it runs) is for
+  std::optional<LobeResidual> residual;
 };
 
 // The pixel inspector's readers (inspector_panel.cpp); the pixel under the cursor is the

@@ -28,6 +28,7 @@ struct MaterialPanelState;
 struct Notices;
 struct OpenWindows;
 struct QualityState;
+struct ReferencePanelState;
 struct RunState;
 struct Selection;
 struct Session;
@@ -41,6 +42,10 @@ void draw_menu_bar(Commands& commands, ViewSettings& view, std::optional<Snapsho
 void draw_material_panel(Commands& commands, Selection& selection, ViewSettings& view,
                          MaterialPanelState& state, const MaterialLibrary& library, ImVec2 pos,
                          ImVec2 size);
+// The Reference panel: the selected object's material against a physical reference, the
+// material | reference A/B view, Fit Phong / Fit Blinn-Phong (on a worker, applied in one step).
+void draw_reference_panel(Commands& commands, Selection& selection, ViewSettings& view,
+                          ReferencePanelState& state, ImVec2 pos, ImVec2 size);
 // The Lights & Scene panel: lights, the scene's own fields, opening files.
 void draw_lights_panel(Commands& commands, Selection& selection, ViewSettings& view,
                        FileBrowser& browser, ImVec2 pos, ImVec2 size);

@@ -128,6 +128,13 @@ void draw_view_mode(Commands& commands, ViewSettings& view, Viewport& viewport,
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip("the raster path with Phong shading (A) and Gouraud shading (B)");
     }
+    ImGui::RadioButton("material | reference", &source, static_cast<int>(AbSource::reference));
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip(
+          "A: the materials as they are (1 spp), B: the materials that have a physical\n"
+          "reference rendered by it (GGX, the reference path in double, 1 spp); set one in\n"
+          "the Reference panel");
+    }
     view.ab_source = static_cast<AbSource>(source);
     ImGui::Checkbox("automatic heat scale", &view.heat_auto_scale);
     if (!view.heat_auto_scale) {

@@ -1,6 +1,7 @@
 // The lobe view (ViewMode::lobe): the selected material's reflected radiance against the outgoing
 // angle in the plane of incidence, as a polar plot, Phong and Blinn-Phong overlaid on the diffuse
-// floor, for a light elevation the user drags. The values come from analysis/brdf_lobe.h, which
+// floor, and the material's physical reference when it has one, for a light elevation the user
+// drags. The values come from analysis/brdf_lobe.h, which
 // evaluates the contract's own functions (shading/shading.h). Drawn with ImDrawList: ImPlot, the
 // usual Dear ImGui plotting add-on, is not packaged in Debian 12 (`apt-cache search implot` finds
 // nothing), and a half-disc of lines, rings and labels needs none of it.
@@ -37,6 +38,10 @@ const ImU32 kPhongLine = IM_COL32(255, 150, 40, 255);
 const ImU32 kBlinnLine = IM_COL32(80, 190, 255, 255);
 const ImU32 kLightLine = IM_COL32(255, 225, 80, 255);
 const ImU32 kMirrorLine = IM_COL32(170, 170, 170, 255);
+const ImU32 kReferenceLine = IM_COL32(235, 95, 225, 255);
+
+// A log radius spans this many decades below the scale (values under it sit at the origin).
+constexpr double kLogDecades = 3.0;
 
 // The polar frame on screen: theta from the normal (up), positive to the right; value 0 at the
 // origin, scale at radius_px.
@@ -44,10 +49,16 @@ struct PolarFrame {
   ImVec2 origin{0, 0};
   float radius_px = 1.0f;
   double scale = 1.0;
+  bool log = false;  // radius log10(value / scale) + kLogDecades, in decades
 
+  // The radius of value as a share of radius_px.
+  double share(double value) const {
+    if (!log) return value / scale;
+    return value > 0.0 ? std::max(std::log10(value / scale) / kLogDecades + 1.0, 0.0) : 0.0;
+  }
   ImVec2 at(double theta_deg, double value) const {
     const double t = theta_deg * kPi / 180.0;
-    const double r = value / scale * radius_px;
+    const double r = share(value) * radius_px;
     return ImVec2(origin.x + static_cast<float>(r * std::sin(t)),
                   origin.y - static_cast<float>(r * std::cos(t)));
   }
@@ -92,8 +103,16 @@ void curve(ImDrawList* list, const PolarFrame& frame, const BrdfLobe& lobe,
 // Rings with their values, spokes every 15 degrees with labels every 30, the surface line.
 void draw_axes(ImDrawList* list, const PolarFrame& frame, double step) {
   char label[32];
-  for (double v = step; v <= frame.scale * 1.0001; v += step) {
-    const float r = static_cast<float>(v / frame.scale * frame.radius_px);
+  std::vector<double> rings;
+  for (double v = step; v <= frame.scale * 1.0001; v += step) rings.push_back(v);
+  if (frame.log) {
+    rings.clear();  // one per decade
+    for (int d = static_cast<int>(kLogDecades) - 1; d >= 0; --d) {
+      rings.push_back(frame.scale * std::pow(10.0, -d));
+    }
+  }
+  for (const double v : rings) {
+    const float r = static_cast<float>(frame.share(v) * frame.radius_px);
     list->PathArcTo(frame.origin, r, static_cast<float>(kPi), static_cast<float>(2.0 * kPi), 64);
     list->PathStroke(kGrid, 0, 1.0f);
     std::snprintf(label, sizeof label, "%.3g", v);
@@ -170,6 +189,13 @@ void draw_controls(ViewSettings& view, bool document_energy) {
   }
   ImGui::PopItemWidth();
   ImGui::SameLine();
+  ImGui::Checkbox("log radius", &view.lobe_log_radius);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "three decades of luminance, one ring each: a physical reference's\n"
+        "bright peak and a classic lobe of ks <= 1 in one plot");
+  }
+  ImGui::SameLine();
   ImGui::Checkbox("4x rule", &view.keep_highlight_size);
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
@@ -182,8 +208,9 @@ void draw_controls(ViewSettings& view, bool document_energy) {
 
 struct Curves {
   std::vector<double> floor, phong, blinn;  // luminance of diffuse, diffuse + specular
+  std::vector<double> reference;            // the physical reference's, when there is one
   double top = 0.0;
-  std::size_t phong_peak = 0, blinn_peak = 0;
+  std::size_t phong_peak = 0, blinn_peak = 0, reference_peak = 0;
 };
 
 Curves luminance_curves(const BrdfLobe& lobe) {
@@ -196,6 +223,10 @@ Curves luminance_curves(const BrdfLobe& lobe) {
     if (c.phong[i] > c.phong[c.phong_peak]) c.phong_peak = i;
     if (c.blinn[i] > c.blinn[c.blinn_peak]) c.blinn_peak = i;
     c.top = std::max({c.top, c.phong[i], c.blinn[i]});
+    if (!lobe.has_reference) continue;
+    c.reference.push_back(luminance(s.reference));
+    if (c.reference[i] > c.reference[c.reference_peak]) c.reference_peak = i;
+    c.top = std::max(c.top, c.reference[i]);
   }
   return c;
 }
@@ -353,7 +384,7 @@ void draw_lobe_view(const Scene& scene, const Selection& selection, ViewSettings
   const double top = std::max(curves.top, overlay.top);
 
   // Layout: the half disc above the surface line, the legend under it.
-  const float legend_h = 11.0f * (ImGui::GetTextLineHeightWithSpacing() + 2.0f) + 20.0f;
+  const float legend_h = 14.0f * (ImGui::GetTextLineHeightWithSpacing() + 2.0f) + 20.0f;
   const float plot_h = std::max(size.y - (top_y - pos.y) - legend_h - 60.0f, 40.0f);
   PolarFrame frame;
   frame.radius_px = std::max(std::min(size.x * 0.5f - 70.0f, plot_h), 20.0f);
@@ -361,10 +392,11 @@ void draw_lobe_view(const Scene& scene, const Selection& selection, ViewSettings
       ImVec2(std::floor(pos.x + size.x * 0.5f), std::floor(top_y + 44.0f + frame.radius_px));
   const double step = ring_step(std::max(top, 1e-6) * 1.05);
   frame.scale = step * std::ceil(std::max(top, 1e-6) * 1.05 / step);
+  frame.log = view.lobe_log_radius;
 
   // The floor: a filled half disc of radius kd ndl (the same in every direction).
   const double floor_value = curves.floor.empty() ? 0.0 : curves.floor.front();
-  const float floor_r = static_cast<float>(floor_value / frame.scale * frame.radius_px);
+  const float floor_r = static_cast<float>(frame.share(floor_value) * frame.radius_px);
   if (floor_r > 0.5f) {
     list->PathArcTo(frame.origin, floor_r, static_cast<float>(kPi), static_cast<float>(2.0 * kPi),
                     64);
@@ -379,6 +411,7 @@ void draw_lobe_view(const Scene& scene, const Selection& selection, ViewSettings
         phong_scene ? kPhongLine : kBlinnLine, 4.5f);
   curve(list, frame, lobe, phong_scene ? curves.blinn : curves.phong,
         phong_scene ? kBlinnLine : kPhongLine, 1.5f);
+  if (lobe.has_reference) curve(list, frame, lobe, curves.reference, kReferenceLine, 2.5f);
   if (subject.overlay) {
     curve(list, frame, overlay_lobe, overlay.floor, kLobeOverlay, 1.0f, true);
     curve(list, frame, overlay_lobe, phong_scene ? overlay.phong : overlay.blinn, kLobeOverlay,
@@ -432,6 +465,17 @@ void draw_lobe_view(const Scene& scene, const Selection& selection, ViewSettings
                 curves.blinn[curves.blinn_peak], bp.theta_deg);
   list->AddText(ImVec2(x + 30.0f, y), kText, text);
   y += line_h;
+  if (lobe.has_reference) {
+    const PhysicalReference& r = *material.reference;
+    legend_swatch(list, ImVec2(x, y + 2.0f), kReferenceLine, false);
+    std::snprintf(text, sizeof text,
+                  "physical reference: %s, roughness %.3g (GGX; Reference panel)   peak %.4g at "
+                  "%.1f\xC2\xB0",
+                  to_string(r.kind), r.roughness, curves.reference[curves.reference_peak],
+                  lobe.samples[curves.reference_peak].theta_deg);
+    list->AddText(ImVec2(x + 30.0f, y), kText, text);
+    y += line_h;
+  }
   if (subject.overlay) {
     legend_swatch(list, ImVec2(x, y + 2.0f), kLobeOverlay, false);
     const std::vector<double>& o = phong_scene ? overlay.phong : overlay.blinn;
@@ -476,6 +520,12 @@ void draw_lobe_view(const Scene& scene, const Selection& selection, ViewSettings
   std::snprintf(text, sizeof text, "  Blinn-Phong specular  RGB %.4g %.4g %.4g   c = N.H = %.5f",
                 s.blinn.x, s.blinn.y, s.blinn.z, s.cos_blinn);
   list->AddText(ImVec2(x, y), kBlinnLine, text);
+  if (lobe.has_reference) {
+    y += line_h;
+    std::snprintf(text, sizeof text, "  reference  RGB %.4g %.4g %.4g  (pi f ndl)", s.reference.x,
+                  s.reference.y, s.reference.z);
+    list->AddText(ImVec2(x, y), kReferenceLine, text);
+  }
 }
 
 }  // namespace gloss

@@ -30,6 +30,13 @@ std::unique_ptr<ProgressiveRenderer> make_cpu_renderer(bool terms) {
   return renderer;
 }
 
+// The material | reference view's B side; like the ray tracer, it wakes the event loop.
+std::unique_ptr<ReferencePreview> make_reference_preview() {
+  auto preview = std::make_unique<ReferencePreview>();
+  preview->set_on_publish([] { glfwPostEmptyEvent(); });
+  return preview;
+}
+
 }  // namespace
 
 Viewport::Viewport() : m_a(make_cpu_renderer(false)) {}
@@ -85,8 +92,9 @@ void Viewport::upload_frames(double now_s) {
       new_a = true;
     }
   }
-  if (m_b && !m_sides.b.raster) {
-    if (std::shared_ptr<const RenderedFrame> b = m_b->latest();
+  if ((m_b || m_reference) && !m_sides.b.raster) {
+    if (std::shared_ptr<const RenderedFrame> b =
+            m_reference ? m_reference->latest() : m_b->latest();
         b && b != m_frame_b && takes(*b, m_shown_raster_b)) {
       upload(*b, true);
       m_frame_b = std::move(b);
@@ -232,7 +240,17 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
       if (m_shown_raster_a) m_handover_generation = pushed_generation;
       m_traced_setup = m_setup;
     }
-    if (ab && !sides.b.raster) {
+    if (ab && sides.b.physical) {
+      m_b.reset();
+      if (!m_reference) {
+        m_reference = make_reference_preview();
+        m_last_generation_b = 0;
+      }
+      pushed_generation_b = m_reference->set_scene(pair.b);
+      b_changed = pushed_generation_b != m_last_generation_b;
+      m_last_generation_b = pushed_generation_b;
+    } else if (ab && !sides.b.raster) {
+      m_reference.reset();
       if (!m_b) {
         m_b = make_cpu_renderer(false);
         m_last_generation_b = 0;
@@ -242,6 +260,7 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
       m_last_generation_b = pushed_generation_b;
     } else {
       m_b.reset();
+      m_reference.reset();
     }
     if (!ab) {
       m_frame_b.reset();
@@ -254,6 +273,11 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
       if (!sides.b.raster &&
           (view.ab_source == AbSource::cpu_gl || view.ab_source == AbSource::pixel_vertex)) {
         m_label_b += " - raster unavailable, ray traced";
+      }
+      const auto has_reference = [](const Material& m) { return m.reference.has_value(); };
+      if (view.ab_source == AbSource::reference &&
+          std::none_of(document.materials.begin(), document.materials.end(), has_reference)) {
+        m_label_b += " - none set";
       }
     }
     m_pushed_any = true;
@@ -323,6 +347,10 @@ bool Viewport::converged_and_shown(std::uint64_t revision, const ViewSettings& v
                        const std::shared_ptr<const RenderedFrame>& frame, bool shown_raster) {
     if (frame == nullptr) return false;
     if (side.raster) return m_raster_shown && shown_raster;
+    if (side.physical) {
+      return m_reference != nullptr && m_reference->wait_converged(0.0) &&
+             m_reference->latest() == frame;
+    }
     return renderer != nullptr && renderer->wait_converged(0.0) && renderer->latest() == frame;
   };
   if (!side_done(m_sides.a, m_a.get(), m_frame_a, m_shown_raster_a)) return false;

@@ -20,6 +20,7 @@
 #include "editor/model/view/automatic_choice.h"
 #include "editor/model/view/camera_controller.h"
 #include "editor/model/view/pane_layout.h"
+#include "editor/model/view/reference_preview.h"
 #include "editor/model/view/view_settings.h"
 #include "engine/progressive_renderer.h"
 
@@ -179,6 +180,8 @@ class Viewport {
   // Null while the raster path draws the A side, but paused during an Automatic drag.
   std::unique_ptr<ProgressiveRenderer> m_a;
   std::unique_ptr<ProgressiveRenderer> m_b;  // B side of the A/B view when the ray tracer draws it
+  // B side of the material | reference A/B view: the physical reference (AbSide::physical).
+  std::unique_ptr<ReferencePreview> m_reference;
   std::shared_ptr<const RenderedFrame> m_frame_a, m_frame_b;
   std::shared_ptr<const RenderedFrame> m_image_a, m_image_b;  // the newest with a total image
 
