@@ -1,19 +1,15 @@
 // gloss-cli render's display transform (docs/spec/scene-and-cli.md: render.exposure, render.tone,
 // --exposure, --tone) and its linear outputs (--pfm, --exr): pixel values worked out by hand on a
 // scene that is all background, so every pixel is the background colour.
-#include <sys/wait.h>
-
 #include <array>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "io/image/image_io.h"
+#include "support/cli_run.h"
 #include "support/exr_file.h"
 #include "support/scratch_folder.h"
 
@@ -36,16 +32,10 @@ class CliDisplay : public ::testing::Test {
     char scene[1024];
     std::snprintf(scene, sizeof scene, kBackgroundScene, render_extra.c_str());
     std::ofstream(inputs.file("bg.json"), std::ios::binary) << scene;
-    const std::string log = logs.file("stderr.txt");
-    const std::string command = "cd '" + outputs.path().string() + "' && '" + GLOSS_CLI_PATH +
-                                "' render '" + inputs.file("bg.json") + "' " + args +
-                                " >/dev/null 2>'" + log + "'";
-    const int raw = std::system(command.c_str());
-    std::ifstream in(log, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    err = text.str();
-    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    const CliRun r =
+        run_cli("render '" + inputs.file("bg.json") + "' " + args, logs, outputs.path().string());
+    err = r.err;
+    return r.status;
   }
   // The first pixel of a PNG in outputs.
   std::array<int, 3> pixel(const std::string& name) const {

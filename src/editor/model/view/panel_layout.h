@@ -33,12 +33,13 @@ struct LayoutRect {
 
 struct PanelLayout {
   LayoutRect menu, status;
-  LayoutRect left, lights, view;          // panels; zero-sized when collapsed or hidden
-  LayoutRect left_strip, right_strip;     // strips of collapsed panels; zero-sized otherwise
-  LayoutRect viewport;                    // the image's area
-  LayoutRect left_split, right_split;     // vertical splitters; zero-sized when not shown
-  LayoutRect lights_split;                // between Lights & Scene and View & Quality
-  float left_width = 0, right_width = 0;  // the widths in use (choices clamped)
+  LayoutRect left, reference, lights, view;  // panels (left: Material); zero-sized when hidden
+  LayoutRect left_strip, right_strip;        // strips of collapsed panels; zero-sized otherwise
+  LayoutRect viewport;                       // the image's area
+  LayoutRect left_split, right_split;        // vertical splitters; zero-sized when not shown
+  LayoutRect lights_split;                   // between Lights & Scene and View & Quality
+  LayoutRect material_split;                 // between Material and Reference
+  float left_width = 0, right_width = 0;     // the widths in use (choices clamped)
 };
 
 // The layout of a window width x height with menu and status bars of the given heights.
