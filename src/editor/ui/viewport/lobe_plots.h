@@ -37,6 +37,15 @@ constexpr ImU32 kLobeBlinn = IM_COL32(80, 190, 255, 255);
 constexpr ImU32 kLobeLight = IM_COL32(255, 225, 80, 255);
 constexpr ImU32 kLobeOverlay = IM_COL32(235, 110, 235, 255);
 
+// lobe_controls.cpp: the first row of controls (light elevation, normalisation, radius scale, 4x
+// rule); the second (which plot, which second material; snapshot may be null); the exponents
+// each model's curve gets (the scene's model keeps the material's, the other the rescaled one
+// when the highlight size is kept, document.h) and the normalisation.
+void draw_lobe_controls(ViewSettings& view, bool document_energy);
+void draw_lobe_plot_controls(ViewSettings& view, const Scene& scene, const Snapshot* snapshot,
+                             const std::optional<OverlayMaterial>& overlay);
+AlbedoParams lobe_exponents(const Material& m, const Scene& scene, const ViewSettings& view);
+
 // A dashed line segment (the overlay's curves, the mirror direction).
 void lobe_dashed_line(ImDrawList* list, ImVec2 a, ImVec2 b, ImU32 colour, float thickness);
 

@@ -161,51 +161,6 @@ float elevation_at(const PolarFrame& frame, ImVec2 p) {
   return static_cast<float>(std::clamp(deg, 0.0, 90.0));
 }
 
-const char* energy_label(LobeEnergy energy, bool document) {
-  switch (energy) {
-    case LobeEnergy::scene:
-      return document ? "as the scene (on)" : "as the scene (off)";
-    case LobeEnergy::on:
-      return "on (view only)";
-    case LobeEnergy::off:
-      return "off (view only)";
-  }
-  return "?";
-}
-
-void draw_controls(ViewSettings& view, bool document_energy) {
-  ImGui::PushItemWidth(200.0f);
-  ImGui::SliderFloat("light elevation", &view.lobe_elevation_deg, 0.0f, 90.0f,
-                     "%.1f\xC2\xB0 above the surface");
-  view.lobe_elevation_deg = std::clamp(view.lobe_elevation_deg, 0.0f, 90.0f);
-  ImGui::SameLine();
-  if (ImGui::BeginCombo("energy normalisation", energy_label(view.lobe_energy, document_energy))) {
-    for (LobeEnergy e : {LobeEnergy::scene, LobeEnergy::on, LobeEnergy::off}) {
-      if (ImGui::Selectable(energy_label(e, document_energy), e == view.lobe_energy)) {
-        view.lobe_energy = e;
-      }
-    }
-    ImGui::EndCombo();
-  }
-  ImGui::PopItemWidth();
-  ImGui::SameLine();
-  ImGui::Checkbox("log radius", &view.lobe_log_radius);
-  if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip(
-        "three decades of luminance, one ring each: a physical reference's\n"
-        "bright peak and a classic lobe of ks <= 1 in one plot");
-  }
-  ImGui::SameLine();
-  ImGui::Checkbox("4x rule", &view.keep_highlight_size);
-  if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip(
-        "on: the model the scene does not use is drawn with the exponent that keeps\n"
-        "the highlight's size (Blinn-Phong 4x Phong's); off: both models with the\n"
-        "material's own exponent. The same setting as the Material panel's 'keep\n"
-        "highlight size (x4 rule)', which the A/B view's B side follows too");
-  }
-}
-
 struct Curves {
   std::vector<double> floor, phong, blinn;  // luminance of diffuse, diffuse + specular
   std::vector<double> reference;            // the physical reference's, when there is one
@@ -240,83 +195,7 @@ void legend_swatch(ImDrawList* list, ImVec2 at, ImU32 colour, bool filled) {
   }
 }
 
-// The second row of controls: which plot, and the second material drawn over the first.
-void draw_plot_controls(ViewSettings& view, const Scene& scene, const Snapshot* snapshot,
-                        const std::optional<OverlayMaterial>& overlay) {
-  int plot = static_cast<int>(view.lobe_plot);
-  ImGui::RadioButton("plane of incidence", &plot, static_cast<int>(LobePlot::plane));
-  ImGui::SameLine();
-  ImGui::RadioButton("3D", &plot, static_cast<int>(LobePlot::hemisphere));
-  ImGui::SameLine();
-  ImGui::RadioButton("albedo", &plot, static_cast<int>(LobePlot::albedo));
-  if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip(
-        "the share of a unit directional light's irradiance the material sends into the\n"
-        "hemisphere, against the incidence angle (adaptive quadrature, error stated)");
-  }
-  view.lobe_plot = static_cast<LobePlot>(plot);
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(220.0f);
-  const std::string shown = overlay ? overlay->label : "none";
-  if (ImGui::BeginCombo("compare with", shown.c_str())) {
-    if (ImGui::Selectable("none", view.lobe_overlay == LobeOverlay::none)) {
-      view.lobe_overlay = LobeOverlay::none;
-    }
-    if (ImGui::Selectable(snapshot ? ("snapshot (" + snapshot->label + ")").c_str()
-                                   : "snapshot (take one: Ctrl+B)",
-                          view.lobe_overlay == LobeOverlay::snapshot,
-                          snapshot ? 0 : ImGuiSelectableFlags_Disabled)) {
-      view.lobe_overlay = LobeOverlay::snapshot;
-    }
-    ImGui::Separator();
-    for (const std::string& name : scene.material_names) {
-      const bool chosen =
-          view.lobe_overlay == LobeOverlay::material && view.lobe_overlay_name == name;
-      if (ImGui::Selectable(("material '" + name + "'").c_str(), chosen)) {
-        view.lobe_overlay = LobeOverlay::material;
-        view.lobe_overlay_name = name;
-      }
-    }
-    ImGui::Separator();
-    for (const Preset& p : preset_table()) {
-      const bool chosen =
-          view.lobe_overlay == LobeOverlay::preset && view.lobe_overlay_name == p.name;
-      if (ImGui::Selectable(("preset '" + p.name + "'").c_str(), chosen)) {
-        view.lobe_overlay = LobeOverlay::preset;
-        view.lobe_overlay_name = p.name;
-      }
-    }
-    ImGui::EndCombo();
-  }
-}
-
-// The exponents each model's curve gets: the scene's model keeps the material's; the other one
-// the rescaled exponent when the highlight size is kept (document.h).
-AlbedoParams exponents(const Material& m, const Scene& scene, const ViewSettings& view) {
-  const ShadingModel model = scene.render.model;
-  AlbedoParams p;
-  p.phong_alpha = view.keep_highlight_size
-                      ? exponent_for_model(m.shininess, model, ShadingModel::phong)
-                      : m.shininess;
-  p.blinn_alpha = view.keep_highlight_size
-                      ? exponent_for_model(m.shininess, model, ShadingModel::blinn_phong)
-                      : m.shininess;
-  p.energy_normalize = lobe_energy_normalize(view.lobe_energy, scene.render.energy_normalize);
-  return p;
-}
-
 }  // namespace
-
-void lobe_dashed_line(ImDrawList* list, ImVec2 a, ImVec2 b, ImU32 colour, float thickness) {
-  const float dx = b.x - a.x, dy = b.y - a.y;
-  const float length = std::hypot(dx, dy);
-  const int dashes = std::max(1, static_cast<int>(length / 8.0f));
-  for (int i = 0; i < dashes; i += 2) {
-    const float s = static_cast<float>(i) / dashes, e = static_cast<float>(i + 1) / dashes;
-    list->AddLine(ImVec2(a.x + dx * s, a.y + dy * s), ImVec2(a.x + dx * e, a.y + dy * e), colour,
-                  thickness);
-  }
-}
 
 void draw_lobe_view(const Scene& scene, const Selection& selection, ViewSettings& view,
                     const Snapshot* snapshot, LobeViewState& state, ImVec2 pos, ImVec2 size) {
@@ -343,17 +222,19 @@ void draw_lobe_view(const Scene& scene, const Selection& selection, ViewSettings
   ImGui::Text("Lobe of material '%s' (object '%s'): %s", material_name.c_str(), object.name.c_str(),
               what);
   ImGui::SetCursorScreenPos(ImVec2(pos.x + pad, ImGui::GetCursorScreenPos().y));
-  draw_controls(view, scene.render.energy_normalize);
+  draw_lobe_controls(view, scene.render.energy_normalize);
   LobeSubject subject;
   subject.material = material;
   subject.name = material_name;
-  subject.params = exponents(material, scene, view);
+  subject.params = lobe_exponents(material, scene, view);
   subject.model = scene.render.model;
   subject.elevation_deg = view.lobe_elevation_deg;
   subject.overlay = lobe_overlay_material(view, scene, index, snapshot);
-  if (subject.overlay) subject.overlay_params = exponents(subject.overlay->material, scene, view);
+  if (subject.overlay) {
+    subject.overlay_params = lobe_exponents(subject.overlay->material, scene, view);
+  }
   ImGui::SetCursorScreenPos(ImVec2(pos.x + pad, ImGui::GetCursorScreenPos().y));
-  draw_plot_controls(view, scene, snapshot, subject.overlay);
+  draw_lobe_plot_controls(view, scene, snapshot, subject.overlay);
   const float top_y = ImGui::GetCursorScreenPos().y;
   const ImVec2 rest(pos.x, top_y), rest_size(size.x, std::max(size.y - (top_y - pos.y), 40.0f));
   if (view.lobe_plot == LobePlot::hemisphere) {
