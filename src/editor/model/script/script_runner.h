@@ -62,6 +62,10 @@ class ScriptHost {
   // `browse WHAT`: prints where the file panel starts and what it suggests; this default has no
   // panel and no last folder (file_defaults.h's rules alone).
   virtual LineResult browse(const BrowseAction& action);
+  // The window's layout and keyboard shortcuts (script.h, LayoutAction and KeyAction); without a
+  // display these say so on stdout and go on.
+  virtual LineResult layout(const LayoutAction& action, const std::string& where);
+  virtual LineResult key(const KeyAction& action, const std::string& where);
 
   // The snapshot `snapshot` takes and `view ab snapshot` compares with. Kept here by default
   // (headless runs, tests); the editor keeps it in its App so the panel's button shares it.

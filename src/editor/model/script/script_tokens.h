@@ -147,5 +147,8 @@ ObjectRef parse_object_ref(Tokens& t);
 // `assign OBJECT MATERIAL`, and `save PATH`, `browse WHAT`, `gizmo MODE`; t.words[0] is one of
 // object, material, assign, save, browse, gizmo.
 ScriptAction parse_object_line(Tokens& t);
+// window_lines.cpp: `layout ...` and `lobe plot|overlay|turn ...` (issue 24).
+ScriptAction parse_layout(Tokens& t);
+ScriptAction parse_lobe(Tokens& t);
 
 }  // namespace gloss

@@ -90,8 +90,8 @@ glm::dmat3 axis_rotation(const glm::dvec3& axis, double degrees) {
                     t * u.x * u.z + s * u.y, t * u.y * u.z - s * u.x, t * u.z * u.z + c);
 }
 
-GizmoFrame gizmo_frame(const Scene& scene, const std::vector<int>& objects, GizmoMode mode,
-                       int width, int height) {
+GizmoFrame gizmo_frame(const Scene& scene, const Camera& camera, const std::vector<int>& objects,
+                       GizmoMode mode, int width, int height) {
   GizmoFrame f;
   f.axes[0] = {1, 0, 0};
   f.axes[1] = {0, 1, 0};
@@ -108,7 +108,7 @@ GizmoFrame gizmo_frame(const Scene& scene, const std::vector<int>& objects, Gizm
         rotation_matrix(scene.objects[static_cast<std::size_t>(objects.front())].transform.rotate);
     for (int k = 0; k < 3; ++k) f.axes[k] = glm::vec3(r[k]);
   }
-  const CameraFrame basis = make_camera_frame(scene.camera, width, height);
+  const CameraFrame basis = make_camera_frame(camera, width, height);
   const float depth = glm::dot(f.centre - basis.eye, basis.forward);
   f.visible = depth > 1e-6f;
   f.world_length = kGizmoPixels * depth * 2.0f * basis.scale_y / static_cast<float>(height);

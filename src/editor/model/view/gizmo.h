@@ -34,10 +34,16 @@ struct GizmoFrame {
   bool visible = false;    // the centre is in front of the eye
 };
 
-// The gizmo for the selected objects (indices into scene.objects): its centre is the mean of
-// their placed pivots (pivot + translate).
-GizmoFrame gizmo_frame(const Scene& scene, const std::vector<int>& objects, GizmoMode mode,
-                       int width, int height);
+// The gizmo for the selected objects (indices into scene.objects) seen through camera (the
+// scene's, or a pane's wider one): its centre is the mean of their placed pivots (pivot +
+// translate).
+GizmoFrame gizmo_frame(const Scene& scene, const Camera& camera, const std::vector<int>& objects,
+                       GizmoMode mode, int width, int height);
+// Seen through the scene's camera.
+inline GizmoFrame gizmo_frame(const Scene& scene, const std::vector<int>& objects, GizmoMode mode,
+                              int width, int height) {
+  return gizmo_frame(scene, scene.camera, objects, mode, width, height);
+}
 
 // The handle under image position px, or none; tolerance in pixels.
 GizmoHandle gizmo_hit(const Camera& camera, int width, int height, const GizmoFrame& frame,

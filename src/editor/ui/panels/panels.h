@@ -22,6 +22,7 @@ class Viewport;
 struct FileBrowser;
 struct FrameTimes;
 struct InspectorState;
+struct LayoutState;
 struct MaterialLibrary;
 struct MaterialPanelState;
 struct Notices;
@@ -33,11 +34,11 @@ struct RunState;
 struct Selection;
 struct Session;
 
-// The main menu bar: File, Edit, Object, View, Help. Items call the same actions as the
-// shortcuts.
+// The main menu bar: File, Edit, Object, View, Panels, Help. Items call the same actions as the
+// shortcuts; Panels changes the layout (collapsed panels, the maximised viewport).
 void draw_menu_bar(Commands& commands, Selection& selection, ViewSettings& view,
                    std::optional<Snapshot>& snapshot, Session& session, FileActions& files,
-                   Exports& exports, OpenWindows& windows);
+                   Exports& exports, OpenWindows& windows, LayoutState& layout);
 // The Material panel: the selected object's material (its name, a copy, saving it), its
 // constants, the presets and the user's library, the scene's materials, the shading model.
 void draw_material_panel(Commands& commands, Selection& selection, ViewSettings& view,

@@ -42,15 +42,15 @@ std::vector<int> gizmo_objects(const Scene& scene, const Selection& selection) {
 
 }  // namespace
 
-bool ViewportGizmo::press(const Scene& scene, const Selection& selection, const ViewSettings& view,
-                          ImVec2 pane_min, ImVec2 pane_size, ImVec2 p) {
+bool ViewportGizmo::press(const Scene& scene, const Camera& camera, const Selection& selection,
+                          const ViewSettings& view, ImVec2 pane_min, ImVec2 pane_size, ImVec2 p) {
   m_dragging = false;
   const std::vector<int> objects = gizmo_objects(scene, selection);
   if (!view.show_gizmo || objects.empty()) return false;
   const Pane pane{pane_min, pane_size};
-  const GizmoFrame frame = gizmo_frame(scene, objects, view.gizmo, pane.w(), pane.h());
+  const GizmoFrame frame = gizmo_frame(scene, camera, objects, view.gizmo, pane.w(), pane.h());
   const glm::vec2 local(p.x - pane_min.x, p.y - pane_min.y);
-  const GizmoHandle handle = gizmo_hit(scene.camera, pane.w(), pane.h(), frame, view.gizmo, local);
+  const GizmoHandle handle = gizmo_hit(camera, pane.w(), pane.h(), frame, view.gizmo, local);
   if (handle == GizmoHandle::none) return false;
   m_drag = GizmoDrag{};
   m_drag.mode = view.gizmo;
@@ -65,6 +65,7 @@ bool ViewportGizmo::press(const Scene& scene, const Selection& selection, const 
   m_drag.press = local;
   m_pane_min = pane_min;
   m_pane_size = pane_size;
+  m_camera = camera;
   m_amount = glm::vec3(m_drag.mode == GizmoMode::scale ? 1.0f : 0.0f, 0.0f, 0.0f);
   m_dragging = true;
   return true;
@@ -81,24 +82,25 @@ void ViewportGizmo::drag(Commands& commands, bool snap, ImVec2 p) {
   }
   const glm::vec2 local(p.x - m_pane_min.x, p.y - m_pane_min.y);
   const std::vector<ObjectTransform> transforms =
-      gizmo_transforms(scene.camera, static_cast<int>(m_pane_size.x),
-                       static_cast<int>(m_pane_size.y), m_drag, local, snap, &m_amount);
+      gizmo_transforms(m_camera, static_cast<int>(m_pane_size.x), static_cast<int>(m_pane_size.y),
+                       m_drag, local, snap, &m_amount);
   m_snapped = snap;
   commands.execute(TransformObjects{m_drag.objects, transforms});
 }
 
-void ViewportGizmo::draw(const Scene& scene, const Selection& selection, const ViewSettings& view,
-                         ImVec2 pane_min, ImVec2 pane_size, ImVec2 cursor, ImDrawList* list) const {
+void ViewportGizmo::draw(const Scene& scene, const Camera& camera, const Selection& selection,
+                         const ViewSettings& view, ImVec2 pane_min, ImVec2 pane_size, ImVec2 cursor,
+                         ImDrawList* list) const {
   const std::vector<int> objects = gizmo_objects(scene, selection);
   if (!view.show_gizmo || objects.empty() || view.mode == ViewMode::lobe) return;
   const Pane pane{pane_min, pane_size};
   const GizmoMode mode = m_dragging ? m_drag.mode : view.gizmo;
-  const GizmoFrame f = gizmo_frame(scene, objects, mode, pane.w(), pane.h());
+  const GizmoFrame f = gizmo_frame(scene, camera, objects, mode, pane.w(), pane.h());
   ImVec2 c;
-  if (!f.visible || !to_screen(scene.camera, pane, f.centre, c)) return;
+  if (!f.visible || !to_screen(camera, pane, f.centre, c)) return;
   const GizmoHandle hot = m_dragging
                               ? m_drag.handle
-                              : gizmo_hit(scene.camera, pane.w(), pane.h(), f, mode,
+                              : gizmo_hit(camera, pane.w(), pane.h(), f, mode,
                                           glm::vec2(cursor.x - pane_min.x, cursor.y - pane_min.y));
   list->PushClipRect(pane_min, ImVec2(pane_min.x + pane_size.x, pane_min.y + pane_size.y), true);
   if (mode == GizmoMode::rotate) {
@@ -106,7 +108,7 @@ void ViewportGizmo::draw(const Scene& scene, const Selection& selection, const V
       std::vector<ImVec2> points;
       for (const glm::vec3& q : gizmo_ring(f, a, 64)) {
         ImVec2 s;
-        if (to_screen(scene.camera, pane, q, s)) points.push_back(s);
+        if (to_screen(camera, pane, q, s)) points.push_back(s);
       }
       const bool h = hot == kAxes[a];
       list->AddPolyline(points.data(), static_cast<int>(points.size()), h ? kHot : kAxisColours[a],
@@ -122,7 +124,7 @@ void ViewportGizmo::draw(const Scene& scene, const Selection& selection, const V
             f.centre + f.axes[i] * b + f.axes[j] * b, f.centre + f.axes[i] * a + f.axes[j] * b};
         ImVec2 s[4];
         bool ok = true;
-        for (int k = 0; k < 4; ++k) ok = ok && to_screen(scene.camera, pane, corners[k], s[k]);
+        for (int k = 0; k < 4; ++k) ok = ok && to_screen(camera, pane, corners[k], s[k]);
         if (!ok) continue;
         const ImU32 colour = hot == kPlanes[p] ? kHot : kAxisColours[(p + 2) % 3];
         list->AddQuadFilled(s[0], s[1], s[2], s[3],
@@ -132,7 +134,7 @@ void ViewportGizmo::draw(const Scene& scene, const Selection& selection, const V
     }
     for (int a = 0; a < 3; ++a) {
       ImVec2 tip;
-      if (!to_screen(scene.camera, pane, f.centre + f.axes[a] * f.world_length, tip)) continue;
+      if (!to_screen(camera, pane, f.centre + f.axes[a] * f.world_length, tip)) continue;
       const bool h = hot == kAxes[a];
       const ImU32 colour = h ? kHot : kAxisColours[a];
       list->AddLine(c, tip, colour, h ? 4.0f : 3.0f);
