@@ -1,4 +1,4 @@
-// The window's layout (editor/model/view/panel_layout.h has its rules): the menu bar on top, the
+// The window's layout (editor/model/layout/panel_layout.h has its rules): the menu bar on top, the
 // Material and Reference panels on the left, the Outliner over the Lights & Scene and View &
 // Quality panels on the right, the viewport between them, the status bar below, the floating
 // windows and questions over them. Panels collapse to strips and the viewport can take the whole

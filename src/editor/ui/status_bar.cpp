@@ -9,7 +9,7 @@
 
 #include <imgui.h>
 
-#include "editor/model/view/text_fit.h"
+#include "editor/model/layout/text_fit.h"
 #include "editor/ui/notices.h"
 #include "editor/ui/panels/panels.h"
 #include "editor/ui/parts/frame_loop.h"

@@ -4,9 +4,9 @@
 // messages are cut in the middle.
 #include <gtest/gtest.h>
 
-#include "editor/model/view/pane_layout.h"
-#include "editor/model/view/panel_layout.h"
-#include "editor/model/view/text_fit.h"
+#include "editor/model/layout/pane_layout.h"
+#include "editor/model/layout/panel_layout.h"
+#include "editor/model/layout/text_fit.h"
 
 namespace gloss {
 namespace {

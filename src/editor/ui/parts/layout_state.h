@@ -1,8 +1,8 @@
 #pragma once
 // Where the window's panels sit: the sizes the user dragged the splitters to, the collapsed
-// panels, the maximised viewport (editor/model/view/panel_layout.h has the rules; layout.cpp
+// panels, the maximised viewport (editor/model/layout/panel_layout.h has the rules; layout.cpp
 // draws the panels from them), and the layout of the last frame (the script's `layout` line).
-#include "editor/model/view/panel_layout.h"
+#include "editor/model/layout/panel_layout.h"
 
 namespace gloss {
 

@@ -21,7 +21,7 @@
 #include "editor/model/view/albedo_curves.h"
 #include "editor/model/view/automatic_choice.h"
 #include "editor/model/view/camera_controller.h"
-#include "editor/model/view/pane_layout.h"
+#include "editor/model/layout/pane_layout.h"
 #include "editor/model/view/reference_preview.h"
 #include "editor/model/view/view_settings.h"
 #include "editor/ui/viewport/gizmo.h"

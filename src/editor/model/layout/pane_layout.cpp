@@ -1,4 +1,4 @@
-#include "editor/model/view/pane_layout.h"
+#include "editor/model/layout/pane_layout.h"
 
 #include <algorithm>
 #include <cmath>

@@ -9,7 +9,7 @@
 //     `frames` is where the document's own frame lies in each pane. The arrangement chosen is
 //     the one whose frames are largest.
 // Pixels, y down.
-#include "editor/model/view/panel_layout.h"
+#include "editor/model/layout/panel_layout.h"
 #include "editor/model/view/view_settings.h"
 
 namespace gloss {

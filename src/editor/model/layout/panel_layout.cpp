@@ -1,4 +1,4 @@
-#include "editor/model/view/panel_layout.h"
+#include "editor/model/layout/panel_layout.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "editor/model/view/text_fit.h"
+#include "editor/model/layout/text_fit.h"
 
 #include <vector>
 
