@@ -19,7 +19,9 @@ bool ShadowMaps::update(const Scene& scene, int size,
     numbers.insert(numbers.end(), {l.position.x, l.position.y, l.position.z});
   }
   for (const Object& o : scene.objects) {
-    if (o.type == ObjectType::sphere) {
+    if (o.hidden) {
+      meshes.push_back(nullptr);  // hiding or showing an object redraws the maps
+    } else if (o.type == ObjectType::sphere) {
       numbers.insert(numbers.end(), {o.center.x, o.center.y, o.center.z, o.radius});
     } else {
       meshes.push_back(o.mesh.get());
