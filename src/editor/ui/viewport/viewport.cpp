@@ -138,7 +138,12 @@ void Viewport::frame_shown(double now_s) {
       }
     }
   }
-  while (!m_edit_tags.empty() && m_edit_tags.front().generation <= d.generation) {
+  // Older edits are done with; the image's own edit keeps its tag until its full-size image
+  // (a preview shown first used to drop it, and with it a drag's delay whenever the ray tracer
+  // was slow enough to show previews: Automatic then never timed the ray tracer's drags).
+  while (!m_edit_tags.empty() &&
+         (m_edit_tags.front().generation < d.generation ||
+          (m_edit_tags.front().generation == d.generation && d.full_ms >= 0.0))) {
     m_edit_tags.pop_front();
   }
 }
