@@ -15,13 +15,13 @@
 #include "editor/gl/gl_texture.h"
 #include "editor/gl/raster_renderer.h"
 #include "editor/gl/render_target.h"
+#include "editor/model/layout/pane_layout.h"
 #include "editor/model/measure/exposure_histogram.h"
 #include "editor/model/measure/image_cadence.h"
 #include "editor/model/view/ab_compare.h"
 #include "editor/model/view/albedo_curves.h"
 #include "editor/model/view/automatic_choice.h"
 #include "editor/model/view/camera_controller.h"
-#include "editor/model/layout/pane_layout.h"
 #include "editor/model/view/reference_preview.h"
 #include "editor/model/view/view_settings.h"
 #include "editor/ui/viewport/gizmo.h"
@@ -149,6 +149,9 @@ class Viewport {
                               bool exact = false);
 
  private:
+  // Drops the edits waiting for an image (the image cadence's and the drag tags): their frames
+  // would come from a renderer whose generations no longer compare (a new one, or the other side).
+  void forget_edits();
   // viewport_input.cpp: gestures, light markers, picking.
   void handle_input(Commands& commands, ViewSettings& view, Selection& selection,
                     const InputState& input, double now_s);
@@ -282,7 +285,6 @@ class Viewport {
     DragSetup setup;
   };
   std::deque<EditTag> m_edit_tags;
-  std::uint64_t m_edit_generation = 0;  // the cadence's generation of the newest edit
   bool m_watch_b = false;  // the newest edit changed the B side alone (A/B snapshot | live)
   LobeViewState m_lobe;    // the lobe view's (lobe_view.cpp)
 
