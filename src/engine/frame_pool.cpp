@@ -34,9 +34,14 @@ Image FramePool::take(int width, int height) {
   image.height = height;
   {
     std::lock_guard<std::mutex> lock(m_mutex);
+    // By size, not capacity: growing a vector within its capacity still zero-fills the new
+    // elements. And a buffer over twice the size stays for a larger image: with only the frame
+    // on screen and the one being rendered alive, the coarse previews after a camera change took
+    // the full-size buffers and shrank them, and the full-size passes after them zero-filled
+    // 11 MB each on the engine's thread (some 2 % of the adaptive benchmark's time).
     const auto best = best_fit(m_buffers.begin(), m_buffers.end(), size,
-                               [](const std::vector<glm::vec3>& b) { return b.capacity(); });
-    if (best != m_buffers.end()) {
+                               [](const std::vector<glm::vec3>& b) { return b.size(); });
+    if (best != m_buffers.end() && !(best->size() > 2 * size)) {
       image.pixels = std::move(*best);
       m_buffers.erase(best);
     }
@@ -49,12 +54,12 @@ void FramePool::give_back(RenderedFrame& frame) {
   std::lock_guard<std::mutex> lock(m_mutex);
   for (Image* image : {&frame.images.total, &frame.images.emissive, &frame.images.ambient,
                        &frame.images.diffuse, &frame.images.specular}) {
-    if (image->pixels.capacity() == 0) continue;
+    if (image->pixels.empty()) continue;
     m_buffers.push_back(std::move(image->pixels));
   }
-  if (m_buffers.size() > kKept) {  // drop the smallest
+  if (m_buffers.size() > kKept) {  // drop the smallest (by size, as take() chooses)
     std::sort(m_buffers.begin(), m_buffers.end(),
-              [](const auto& a, const auto& b) { return a.capacity() > b.capacity(); });
+              [](const auto& a, const auto& b) { return a.size() > b.size(); });
     m_buffers.resize(kKept);
   }
 }

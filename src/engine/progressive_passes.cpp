@@ -91,7 +91,7 @@ bool ProgressiveRenderer::Impl::step() {
     }
   } else if (dirty == ChangeClass::none && adaptive()) {
     redo = ChangeClass::exponent;  // cancelled: the factors are rebuilt from the samples
-    ok = refine();
+    ok = refine(total, total_done);
     factors_done = true;
   } else if (dirty == ChangeClass::none) {
     // Double the samples each pass: 1, 2, 4, 8 ... up to the target.
@@ -132,15 +132,19 @@ bool ProgressiveRenderer::Impl::preview_edit(int shift, Clock::time_point start)
   return true;
 }
 
-bool ProgressiveRenderer::Impl::refine() {
+bool ProgressiveRenderer::Impl::refine(Image* total, bool& total_done) {
   std::shared_ptr<const RenderedFrame> shown;
   if (published_centres) {
     std::lock_guard<std::mutex> lock(publish_mutex);
     shown = published;
   }
-  const bool ok =
-      adaptive_state.refine(cache, ctx, factors, shown ? &shown->images.total : nullptr);
+  const Image* centres = shown ? &shown->images.total : nullptr;
+  const bool ok = adaptive_state.refine(cache, ctx, factors, centres);
   refined_traced = adaptive_state.traced();
+  if (ok && total != nullptr && centres != nullptr) {
+    combine_over_centres(factors, ctx, *centres, *total);
+    total_done = true;
+  }
   return ok;
 }
 

@@ -41,8 +41,11 @@ struct ProgressiveOptions {
   int preview_levels = 3;  // coarse passes before full resolution: 1/8, 1/4, 1/2
   // When the last full-resolution 1-spp pass took at most this long, the image goes from the
   // coarsest preview straight to full resolution: the finer previews would only delay it.
-  // 0: always every preview.
-  double preview_budget_ms = 25.0;
+  // 0: always every preview. 50 ms, the pace max_publish_gap_ms keeps under edits: a full image
+  // that soon after the 1/8 preview needs nothing between them, and the 1/4 and 1/2 previews
+  // cost a third of a full pass (at 25 ms a loaded 2-core machine, whose full pass takes 25 to
+  // 45 ms on the benchmark scene, paid them on every camera change).
+  double preview_budget_ms = 50.0;
   // An edit cancels the pass in flight, unless that pass is the first image of its generation
   // and nothing was published for this long: then the pass completes first. Under edits that
   // come faster than a pass (a drag, an animation on a loaded machine) images keep coming, each

@@ -107,8 +107,10 @@ struct ProgressiveRenderer::Impl {
     if (!adaptive()) return cache.samples() >= scene->render.spp;
     return adaptive_state.current(cache, scene->render.spp);
   }
-  // adaptive_progression.h's refine(), from the published centre image when there is one.
-  bool refine();
+  // adaptive_progression.h's refine(), from the published centre image when there is one. Given
+  // total (the frame's, when only the total is shown) and that image, also makes the total from
+  // it (combine_over_centres) and sets total_done.
+  bool refine(Image* total, bool& total_done);
 };
 
 }  // namespace gloss

@@ -1,4 +1,5 @@
 #include <cassert>
+#include <cstring>
 #include <type_traits>
 
 #include <tbb/parallel_for.h>
@@ -9,15 +10,56 @@
 #include "shading/total.h"
 
 // combine_terms (pixel_factors.h): the recombination of per-pixel factors with the scene's
-// material constants and light colours, the path every constant edit takes.
+// material constants and light colours, the path every constant edit takes; and
+// combine_over_centres, the same total for the adaptive pass from the centre image it refines.
 
 namespace gloss {
+
+namespace {
+// The pixels combine_terms' dense loop does not finish, into total (and the four term images of
+// out when given): adaptive sampling's refined pixels (their weight and background share are
+// their own; written whole) and the further materials of mixed pixels (added).
+void recombine_refined(const PixelFactors& factors, const Recombination& recombination,
+                       Image& total, TermImages* terms) {
+  const std::size_t pixels = static_cast<std::size_t>(factors.width) * factors.height;
+  const std::size_t lights = factors.lights;
+  for (std::size_t k = 0; k < factors.refined_pixel.size(); ++k) {
+    const std::size_t i = factors.refined_pixel[k];
+    glm::vec3 term[4] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
+    const std::int32_t m = factors.material[i];
+    if (m >= 0) {
+      recombination.terms(m, factors.refined_weight[k], factors.diffuse.data() + i,
+                          factors.specular.data() + i, pixels, term);
+    }
+    total.pixels[i] = recombination.total(term, factors.refined_background[k]);
+    if (terms != nullptr) {
+      terms->emissive.pixels[i] = term[0];
+      terms->ambient.pixels[i] = term[1];
+      terms->diffuse.pixels[i] = term[2];
+      terms->specular.pixels[i] = term[3];
+    }
+  }
+  for (std::size_t e = 0; e < factors.extra_pixel.size(); ++e) {
+    glm::vec3 term[4];
+    recombination.terms(factors.extra_material[e], factors.extra_weight[e],
+                        factors.extra_diffuse.data() + e * lights,
+                        factors.extra_specular.data() + e * lights, 1, term);
+    const std::size_t i = factors.extra_pixel[e];
+    total.pixels[i] += form_total(term[0], term[1], term[2], term[3]);
+    if (terms != nullptr) {
+      terms->emissive.pixels[i] += term[0];
+      terms->ambient.pixels[i] += term[1];
+      terms->diffuse.pixels[i] += term[2];
+      terms->specular.pixels[i] += term[3];
+    }
+  }
+}
+}  // namespace
 
 void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermImages& out,
                    bool terms) {
   const int w = factors.width, h = factors.height;
   const std::size_t pixels = static_cast<std::size_t>(w) * h;
-  const std::size_t lights = factors.lights;
   auto fit = [&](Image& image) {
     if (image.width != w || image.height != h) image = Image(w, h);
   };
@@ -30,7 +72,7 @@ void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermIm
   }
   const Recombination recombination(ctx);
   // The factors were built for the same plan (an edit that changes it is classed `light`).
-  assert(recombination.lights() == lights);
+  assert(recombination.lights() == factors.lights);
   // The pixel loop, instantiated per (one sample, term images) so it holds no such branches.
   auto pixels_loop = [&](auto single_tag, auto terms_tag, std::size_t begin, std::size_t end) {
     constexpr bool kSingle = decltype(single_tag)::value;  // weight, background from material
@@ -68,37 +110,26 @@ void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermIm
                       if (!single && !terms) pixels_loop(F{}, F{}, b, e);
                     });
   fence.join();
-  // Adaptive sampling's refined pixels: their weight and background share are their own.
-  for (std::size_t k = 0; k < factors.refined_pixel.size(); ++k) {
-    const std::size_t i = factors.refined_pixel[k];
-    glm::vec3 term[4] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
-    const std::int32_t m = factors.material[i];
-    if (m >= 0) {
-      recombination.terms(m, factors.refined_weight[k], factors.diffuse.data() + i,
-                          factors.specular.data() + i, pixels, term);
-    }
-    out.total.pixels[i] = recombination.total(term, factors.refined_background[k]);
-    if (terms) {
-      out.emissive.pixels[i] = term[0];
-      out.ambient.pixels[i] = term[1];
-      out.diffuse.pixels[i] = term[2];
-      out.specular.pixels[i] = term[3];
-    }
+  recombine_refined(factors, recombination, out.total, terms ? &out : nullptr);
+}
+
+void combine_over_centres(const PixelFactors& factors, const RenderContext& ctx,
+                          const Image& centres, Image& total) {
+  const std::size_t pixels = static_cast<std::size_t>(factors.width) * factors.height;
+  assert(centres.width == factors.width && centres.height == factors.height);
+  if (total.width != factors.width || total.height != factors.height) {
+    total = Image(factors.width, factors.height);
   }
-  for (std::size_t e = 0; e < factors.extra_pixel.size(); ++e) {
-    glm::vec3 term[4];
-    recombination.terms(factors.extra_material[e], factors.extra_weight[e],
-                        factors.extra_diffuse.data() + e * lights,
-                        factors.extra_specular.data() + e * lights, 1, term);
-    const std::size_t i = factors.extra_pixel[e];
-    out.total.pixels[i] += form_total(term[0], term[1], term[2], term[3]);
-    if (terms) {
-      out.emissive.pixels[i] += term[0];
-      out.ambient.pixels[i] += term[1];
-      out.diffuse.pixels[i] += term[2];
-      out.specular.pixels[i] += term[3];
-    }
-  }
+  // The copy in parallel blocks: one thread does not reach the memory bandwidth of two.
+  ForkJoinFence fence;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pixels, 65536),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      const ForkJoinFence::Task task(fence);
+                      std::memcpy(&total.pixels[range.begin()], &centres.pixels[range.begin()],
+                                  (range.end() - range.begin()) * sizeof(glm::vec3));
+                    });
+  fence.join();
+  recombine_refined(factors, Recombination(ctx), total, nullptr);
 }
 
 }  // namespace gloss

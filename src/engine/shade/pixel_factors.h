@@ -78,4 +78,12 @@ void single_sample_light(const MaterialExponents& exponents, PowMode mode,
 void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermImages& out,
                    bool terms);
 
+// The total combine_terms makes of adaptive factors (centres plus refined pixels), given
+// `centres`: the total of the same centre factors without refined pixels (the fused first
+// pass's, whose bits are combine_terms', tests/engine/test_single_sample_pass.cpp). It copies
+// those and recombines only the refined pixels and extras: the adaptive pass changes a few
+// percent of the pixels, and a full recombination cost it as much as the copy three times over.
+void combine_over_centres(const PixelFactors& factors, const RenderContext& ctx,
+                          const Image& centres, Image& total);
+
 }  // namespace gloss
