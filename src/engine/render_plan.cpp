@@ -43,11 +43,15 @@ RenderPlan make_render_plan(const Scene& scene, bool full) {
   bool any_ld = false, any_ls = false;
   glm::vec3 ambient_light = scene.ambient;
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-    const PointLight& light = scene.lights[i];
+    const Light& light = scene.lights[i];
     ambient_light += light.ambient;
     if (!full && !nonzero(light.diffuse) && !nonzero(light.specular)) continue;
     plan.lights.push_back(static_cast<int>(i));
-    plan.unit_attenuation.push_back(!full && light.attenuation == glm::vec3(1.0f, 0.0f, 0.0f));
+    // A directional light has no attenuation: its factors take the unit copy of the loops.
+    plan.unit_attenuation.push_back(light.type == LightType::directional ||
+                                    (!full && light.attenuation == glm::vec3(1.0f, 0.0f, 0.0f)));
+    plan.sources.push_back(make_light_source<float>(light, scene.camera));
+    plan.sources.back().unit_attenuation = plan.unit_attenuation.back();
     any_ld = any_ld || nonzero(light.diffuse);
     any_ls = any_ls || nonzero(light.specular);
   }
@@ -71,6 +75,7 @@ RenderPlan make_render_plan(const Scene& scene, bool full) {
   if (!plan.diffuse && !plan.specular) {  // lights then only feed the ambient sum
     plan.lights.clear();
     plan.unit_attenuation.clear();
+    plan.sources.clear();
   }
   plan.shadow_rays = scene.render.shadows && !plan.lights.empty() && can_cast_shadows(scene);
   return plan;

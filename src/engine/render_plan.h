@@ -5,12 +5,16 @@
 
 #include "scene/render_settings.h"
 #include "scene/scene.h"
+#include "shading/light_source.h"
 
 namespace gloss {
 
 struct RenderPlan {
   std::vector<int> lights;  // scene lights that reach diffuse or specular (Ld or Ls not 0)
   std::vector<bool> unit_attenuation;  // per planned light: (c0, c1, c2) == (1, 0, 0)
+  // Per planned light: its type, world-space position and direction (a headlight's turned into
+  // the camera's frame), cone: what the packets evaluate (shading/light_source.h).
+  std::vector<LightSource<float>> sources;
   bool shadow_rays = false;            // shadows on and some object can occlude another point
   bool emissive = false;               // some material has ke != 0
   bool ambient = false;                // some ka != 0 and A_scene + sum La != 0
@@ -19,7 +23,7 @@ struct RenderPlan {
   bool spheres = false;                // some object is a sphere (its hits are refined in double)
 
   bool operator==(const RenderPlan& o) const {
-    return lights == o.lights && unit_attenuation == o.unit_attenuation &&
+    return lights == o.lights && unit_attenuation == o.unit_attenuation && sources == o.sources &&
            shadow_rays == o.shadow_rays && emissive == o.emissive && ambient == o.ambient &&
            diffuse == o.diffuse && specular == o.specular && spheres == o.spheres;
   }

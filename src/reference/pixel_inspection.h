@@ -14,13 +14,15 @@
 
 namespace gloss {
 
-// One point light's factors at the pixel's hit.
+// One light's factors at the pixel's hit.
 struct LightBreakdown {
-  double distance = 0.0;  // d = |P_i - p|, world units
+  LightType type = LightType::point;
+  double distance = 0.0;  // d = |P_i - p|, world units (0 for a directional light: none)
   double ndl = 0.0;       // dot(n, l) before the ndl <= 0 rule (0 when d = 0)
   double cosine = 0.0;    // c of the scene's model (R . V or N . H); 0 where the light adds nothing
   double cosine_power = 0.0;  // c^alpha; 0 where c <= 0 or the light adds nothing
-  double attenuation = 1.0;   // 1 / (c0 + c1 d + c2 d^2)
+  double attenuation = 1.0;   // 1 / (c0 + c1 d + c2 d^2); 1 for a directional light
+  double spot = 1.0;          // the cone's factor of a spot (0 outside the cone); 1 otherwise
   double visibility = 1.0;    // 0 when shadows are on and the segment to the light is blocked
   glm::dvec3 diffuse{0.0};    // kd Ld ndl att vis, 0 when ndl <= 0
   glm::dvec3 specular{0.0};   // ks Ls c^alpha att vis (times the energy factor), 0 when ndl <= 0

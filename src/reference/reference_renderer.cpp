@@ -17,6 +17,7 @@
 #include "reference/reference_hit.h"
 #include "scene/camera.h"
 #include "scene/fields/validation.h"
+#include "shading/light_source.h"
 #include "shading/sampling.h"
 #include "shading/shading.h"
 #include "shading/surface.h"
@@ -66,18 +67,21 @@ struct Job {
   PowMode pow = PowMode::exact;
   bool gouraud = false;
   Vec3<T> ambient_light{0};  // A_scene + sum_i La_i
+  std::vector<LightSource<T>> sources;  // per scene light, resolved in T (light_source.h)
 };
 
 // The spec's shadow test for one light from a hit: the segment from the offset origin
-// (surface.h shadow_ray_origin, shared with the fast renderer) to just short of the light.
-// object: the index of the hit's object (its sphere is left out of its own shadow test,
-// engine/trace/self_shadow.h).
+// (surface.h shadow_ray_origin, shared with the fast renderer) to just short of the light, or
+// for a directional light the ray towards it without end. object: the index of the hit's
+// object (its sphere is left out of its own shadow test, engine/trace/self_shadow.h).
 template <class T>
 bool occluded(const Job<T>& job, int object, const ReferenceHit<T>& h,
-              const glm::vec3& light_position) {
+              const LightSource<T>& light) {
   const Surface s{glm::vec3(h.p), glm::vec3(h.n), glm::vec3(h.ng), glm::vec3(h.v)};
   const glm::vec3 org = shadow_ray_origin(s, static_cast<float>(h.t));
-  const glm::vec3 dir = light_position - org;
+  const bool directional = light.type == LightType::directional;
+  const glm::vec3 dir =
+      directional ? -glm::vec3(light.direction) : glm::vec3(light.position) - org;
   RTCRay ray;
   ray.org_x = org.x;
   ray.org_y = org.y;
@@ -86,7 +90,8 @@ bool occluded(const Job<T>& job, int object, const ReferenceHit<T>& h,
   ray.dir_y = dir.y;
   ray.dir_z = dir.z;
   ray.tnear = 0.0f;
-  ray.tfar = 1.0f - 1e-5f;  // as the fast renderer: a light resting on a surface still lights it
+  // As the fast renderer: a light resting on a surface still lights it.
+  ray.tfar = directional ? std::numeric_limits<float>::infinity() : 1.0f - 1e-5f;
   ray.time = 0.0f;
   ray.mask = 0xffffffffu;
   ray.id = shadow_ray_id(*job.scene, object, s);
@@ -102,9 +107,9 @@ bool occluded(const Job<T>& job, int object, const ReferenceHit<T>& h,
 // Returns the factors they came from (the pixel inspector shows them).
 template <class T>
 LightFactors<T> light_weights(const Job<T>& job, const Vec3<T>& p, const Vec3<T>& n,
-                              const Vec3<T>& v, const PointLight& light, T alpha, T& dw, T& sw) {
-  const LightFactors<T> f =
-      light_factors<T>(p, n, v, Vec3<T>(light.position), Vec3<T>(light.attenuation), false, T(1));
+                              const Vec3<T>& v, const LightSource<T>& light, T alpha, T& dw,
+                              T& sw) {
+  const LightFactors<T> f = source_factors<T>(p, n, v, light, spot_at<T>(p, light), T(1));
   dw = f.diffuse_weight;
   sw = f.spec_weight * specular_power<T>(model_cosine(f, job.scene->render.model), alpha, job.pow);
   return f;
@@ -114,7 +119,8 @@ LightFactors<T> light_weights(const Job<T>& job, const Vec3<T>& p, const Vec3<T>
 // barycentrics (clamped at 0: barycentrics of a hit on an edge can round below 0).
 template <class T>
 void gouraud_weights(const Job<T>& job, const Mesh& mesh, std::uint32_t prim,
-                     const ReferenceHit<T>& h, const PointLight& light, T alpha, T& dw, T& sw) {
+                     const ReferenceHit<T>& h, const LightSource<T>& light, T alpha, T& dw,
+                     T& sw) {
   const glm::uvec3 tri = mesh.triangles[prim];
   dw = sw = T(0);
   for (int k = 0; k < 3; ++k) {
@@ -139,21 +145,36 @@ void gouraud_weights(const Job<T>& job, const Mesh& mesh, std::uint32_t prim,
 // factors of the contract that the sums do not keep. The shadow test is made whatever ndl is,
 // as the contract defines vis; it changes nothing when ndl <= 0.
 template <class T>
-void record_light(const Job<T>& job, int object, const ReferenceHit<T>& h, const PointLight& light,
-                  T alpha, LightBreakdown& out) {
-  const Vec3<T> to_light = Vec3<T>(light.position) - h.p;
-  const T d = glm::length(to_light);
-  out.distance = double(d);
-  out.ndl = d > T(0) ? double(glm::dot(h.n, to_light) / d) : 0.0;
-  out.attenuation = double(attenuation(Vec3<T>(light.attenuation), d));
+void record_light(const Job<T>& job, int object, const ReferenceHit<T>& h,
+                  const LightSource<T>& light, T alpha, LightBreakdown& out) {
+  out.type = light.type;
+  out.spot = double(spot_at<T>(h.p, light));
+  T d = 0;
+  if (light.type == LightType::directional) {
+    out.ndl = double(-glm::dot(h.n, light.direction));
+  } else {
+    const Vec3<T> to_light = light.position - h.p;
+    d = glm::length(to_light);
+    out.distance = double(d);
+    out.ndl = d > T(0) ? double(glm::dot(h.n, to_light) / d) : 0.0;
+    out.attenuation = double(attenuation(light.attenuation, d));
+  }
   T dw = 0, sw = 0;
   const LightFactors<T> f = light_weights(job, h.p, h.n, h.v, light, alpha, dw, sw);
   const T c = model_cosine(f, job.scene->render.model);
   out.cosine = double(c);
   out.cosine_power = double(specular_power<T>(c, alpha, job.pow));
-  const bool blocked =
-      job.scene->render.shadows && d > T(0) && occluded(job, object, h, light.position);
+  const bool reaches = light.type == LightType::directional || d > T(0);
+  const bool blocked = job.scene->render.shadows && reaches && occluded(job, object, h, light);
   out.visibility = blocked ? 0.0 : 1.0;
+}
+
+// The fast renderer's condition for a shadow ray, in T: ndl > 0 (from the unnormalised l of a
+// point or spot light) and, for a spot, inside the cone.
+template <class T>
+bool faces_light(const ReferenceHit<T>& h, const LightSource<T>& light) {
+  if (light.type == LightType::directional) return glm::dot(h.n, light.direction) < T(0);
+  return glm::dot(h.n, light.position - h.p) > T(0) && spot_at<T>(h.p, light) > 0;
 }
 
 // One sample: trace, recompute the hit in T, shade every light, add to sum. record (the pixel
@@ -220,7 +241,8 @@ void shade_sample(const Job<T>& job, int x, int y, int s, int count, PixelSums<T
     record->energy_factor = double(norm);
   }
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-    const PointLight& light = scene.lights[i];
+    const Light& colours = scene.lights[i];
+    const LightSource<T>& light = job.sources[i];
     if (record != nullptr) record_light(job, key.object, h, light, alpha, record->lights[i]);
     T dw = 0, sw = 0;
     bool lit_side;
@@ -228,21 +250,20 @@ void shade_sample(const Job<T>& job, int x, int y, int s, int count, PixelSums<T
       gouraud_weights(job, *object.mesh, rh.hit.primID, h, light, alpha, dw, sw);
       lit_side = dw > T(0) || sw > T(0);
     } else {
-      // The fast renderer's condition for a shadow ray, in T: ndl > 0.
-      lit_side = glm::dot(h.n, Vec3<T>(light.position) - h.p) > T(0);
+      lit_side = faces_light(h, light);
       if (lit_side) light_weights(job, h.p, h.n, h.v, light, alpha, dw, sw);
     }
     if (!lit_side) continue;
-    if (scene.render.shadows && occluded(job, key.object, h, light.position)) {
+    if (scene.render.shadows && occluded(job, key.object, h, light)) {
       key.shadowed |= std::uint64_t(1) << (i % 64);
       continue;  // vis = 0
     }
-    sum.diffuse += Vec3<T>(m.diffuse) * Vec3<T>(light.diffuse) * dw;
-    sum.specular += Vec3<T>(m.specular) * Vec3<T>(light.specular) * (sw * norm);
+    sum.diffuse += Vec3<T>(m.diffuse) * Vec3<T>(colours.diffuse) * dw;
+    sum.specular += Vec3<T>(m.specular) * Vec3<T>(colours.specular) * (sw * norm);
     if (record != nullptr) {  // the same products, kept apart (the sums above stay as they were)
-      record->lights[i].diffuse = glm::dvec3(Vec3<T>(m.diffuse) * Vec3<T>(light.diffuse) * dw);
+      record->lights[i].diffuse = glm::dvec3(Vec3<T>(m.diffuse) * Vec3<T>(colours.diffuse) * dw);
       record->lights[i].specular =
-          glm::dvec3(Vec3<T>(m.specular) * Vec3<T>(light.specular) * (sw * norm));
+          glm::dvec3(Vec3<T>(m.specular) * Vec3<T>(colours.specular) * (sw * norm));
     }
   }
 }
@@ -258,7 +279,10 @@ Job<T> make_job(const Scene& scene, RTCScene rtc, int spp, PowMode pow) {
   job.pow = pow;
   job.camera = make_camera_basis<T>(scene.camera, job.width, job.height);
   job.ambient_light = Vec3<T>(scene.ambient);
-  for (const PointLight& light : scene.lights) job.ambient_light += Vec3<T>(light.ambient);
+  for (const Light& light : scene.lights) {
+    job.ambient_light += Vec3<T>(light.ambient);
+    job.sources.push_back(make_light_source<T>(light, scene.camera));
+  }
   return job;
 }
 

@@ -12,7 +12,7 @@
 namespace gloss {
 
 const FieldTable<Material>& material_fields();
-const FieldTable<PointLight>& light_fields();
+const FieldTable<Light>& light_fields();
 const FieldTable<RenderSettings>& render_fields();
 const FieldTable<Camera>& camera_fields();
 // The scene's own fields (background, A_scene).

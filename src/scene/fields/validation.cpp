@@ -86,10 +86,15 @@ void check_render(const std::string& file, const RenderSettings& render) {
   }
 }
 
-void check_light(const std::string& file, const std::string& field, const PointLight& light) {
+// Every type's fields are checked, those it ignores too: they are kept for a switch back.
+void check_light(const std::string& file, const std::string& field, const Light& light) {
   if (light.attenuation == glm::vec3(0.0f)) {
     fail_field(file, field + ".attenuation",
                "coefficients [c0, c1, c2] must be >= 0 and not all 0");
+  }
+  // Normalised in double (shading/light_source.h): only an exact 0 has no direction.
+  if (glm::dvec3(light.direction) == glm::dvec3(0.0)) {
+    fail_field(file, field + ".direction", "must not be [0, 0, 0]: it gives the light's way");
   }
 }
 

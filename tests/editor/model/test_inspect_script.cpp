@@ -121,6 +121,7 @@ TEST(LobeAndInspectScript, InspectPrintsTheReading) {
                                              "light0.c",
                                              "light0.c_alpha",
                                              "light0.attenuation",
+                                             "light0.spot",
                                              "light0.visibility",
                                              "light0.diffuse",
                                              "light0.specular",
@@ -128,6 +129,7 @@ TEST(LobeAndInspectScript, InspectPrintsTheReading) {
                                              "light1.c",
                                              "light1.c_alpha",
                                              "light1.attenuation",
+                                             "light1.spot",
                                              "light1.visibility",
                                              "light1.diffuse",
                                              "light1.specular"};
@@ -148,6 +150,7 @@ TEST(LobeAndInspectScript, InspectPrintsTheReading) {
     const double c_alpha = reading.numbers.at(l + "c_alpha")[0];
     const double att = reading.numbers.at(l + "attenuation")[0];
     const double vis = reading.numbers.at(l + "visibility")[0];
+    EXPECT_EQ(reading.numbers.at(l + "spot"), std::vector<double>{1.0}) << l;  // point lights
     EXPECT_NEAR(ndl, i == 0 ? 0.559512 : 0.494857, 1e-5) << l;
     EXPECT_NEAR(c_alpha, std::pow(reading.numbers.at(l + "c")[0], 64.0), 1e-7) << l;
     const PointLight& light = scene.lights[static_cast<std::size_t>(i)];

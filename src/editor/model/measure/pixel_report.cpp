@@ -47,6 +47,7 @@ std::string pixel_report(const PixelBreakdown& b) {
     add_value(out, prefix + "c", l.cosine);
     add_value(out, prefix + "c_alpha", l.cosine_power);
     add_value(out, prefix + "attenuation", l.attenuation);
+    add_value(out, prefix + "spot", l.spot);
     add_value(out, prefix + "visibility", l.visibility);
     add_rgb(out, prefix + "diffuse", l.diffuse);
     add_rgb(out, prefix + "specular", l.specular);
