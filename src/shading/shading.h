@@ -42,9 +42,10 @@ using WideScalar = std::conditional_t<std::is_same_v<T, float>, double, T>;
 // spot factor; light_source.h) at a point with unit shading normal n and unit v, in the wide
 // type W; reaches: the light is not at the point. Zero factors unless reaches and ndl > 0.
 // Written without branches (every quantity computed, then selected): the packet code runs it
-// over 16 lanes at once.
+// over 16 lanes at once; always inlined, since a call inside a lane loop keeps the loop scalar
+// (GCC left it out of light_factors' loop in sample_packet.cpp).
 template <class T, class W>
-LightFactors<T> factors_along(const glm::tvec3<W>& n, const glm::tvec3<W>& v,
+[[gnu::always_inline]] inline LightFactors<T> factors_along(const glm::tvec3<W>& n, const glm::tvec3<W>& v,
                               const glm::tvec3<W>& l, bool reaches, W att, T vis) {
   using V = glm::tvec3<W>;
   const W ndl = glm::dot(n, l);

@@ -247,28 +247,33 @@ long long light_lanes(const SamplePacket& packet, const SurfaceLanes& surfaces,
       vis[i] = lit[i] != 0 && ray.tfar[i] == -std::numeric_limits<float>::infinity() ? 0.0f : 1.0f;
     }
   }
+  auto store = [&](int i, const LightFactors<float>& f) {
+    const bool on = lit[i] != 0;
+    out.diffuse_weight[i] = on ? f.diffuse_weight : 0.0f;
+    out.spec_weight[i] = on ? f.spec_weight : 0.0f;
+    out.cos_phong[i] = on ? f.cos_phong : 0.0f;
+    out.cos_blinn[i] = on ? f.cos_blinn : 0.0f;
+  };
   // One copy of the loop per attenuation switch, so each sees a constant and the (1, 0, 0) copy
   // does no attenuation maths.
   auto factors = [&](auto unit_attenuation) {
-    for (int i = 0; i < kLanes; ++i) {
-      const Surface s = surfaces.get(i);
-      LightFactors<float> f;
-      if constexpr (Kind == LightType::point) {
-        f = light_factors<float>(s.p, s.n, s.v, light.position, light.attenuation,
-                                 decltype(unit_attenuation)::value, vis[i]);
-      } else if constexpr (Kind == LightType::directional) {
-        f = factors_along<float>(glm::dvec3(s.n), glm::dvec3(s.v), -glm::dvec3(light.direction),
-                                 true, 1.0, vis[i]);
-      } else {
-        LightSource<float> own = light;  // the attenuation switch as a constant
-        own.unit_attenuation = decltype(unit_attenuation)::value;
-        f = source_factors<float>(s.p, s.n, s.v, own, spot[i], vis[i]);
+    constexpr bool kUnit = decltype(unit_attenuation)::value;
+    if constexpr (Kind == LightType::point) {
+      for (int i = 0; i < kLanes; ++i) {
+        const Surface s = surfaces.get(i);
+        store(i, light_factors<float>(s.p, s.n, s.v, light.position, light.attenuation, kUnit,
+                                      vis[i]));
       }
-      const bool on = lit[i] != 0;
-      out.diffuse_weight[i] = on ? f.diffuse_weight : 0.0f;
-      out.spec_weight[i] = on ? f.spec_weight : 0.0f;
-      out.cos_phong[i] = on ? f.cos_phong : 0.0f;
-      out.cos_blinn[i] = on ? f.cos_blinn : 0.0f;
+    } else if constexpr (Kind == LightType::directional) {
+      for (int i = 0; i < kLanes; ++i) {
+        const Surface s = surfaces.get(i);
+        store(i, directional_light_factors<float>(s.n, s.v, light, vis[i]));
+      }
+    } else {
+      for (int i = 0; i < kLanes; ++i) {
+        const Surface s = surfaces.get(i);
+        store(i, spot_light_factors<float>(s.p, s.n, s.v, light, kUnit, spot[i], vis[i]));
+      }
     }
   };
   if (ctx.plan.unit_attenuation[li]) {
