@@ -6,7 +6,7 @@
 in vec3 gloss_position;
 layout(location = 0) out float gloss_distance;
 void main() {
-  gloss_distance = length(gloss_position - gloss_view_origin);
+  gloss_distance = gloss_view_distance(gloss_position);
 }
 #else
 layout(location = 0) out vec4 gloss_out_total;

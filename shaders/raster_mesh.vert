@@ -32,8 +32,7 @@ void main() {
   gloss_two_sided(n_g, n, v);
 #if GLOSS_LIGHT_COUNT > 0
   for (int i = 0; i < GLOSS_LIGHT_COUNT; ++i) {
-    GlossLightFactors f = gloss_light_factors(p, n, v, gloss_light_position[i],
-                                              gloss_light_attenuation[i], 1.0);
+    GlossLightFactors f = gloss_light(i, p, n, v, 1.0);
     float c = gloss_model_cosine(f, gloss_model);
     gloss_light_weights[i] =
         vec2(f.diffuse_weight, f.spec_weight * gloss_specular_power(c, gloss_alpha));

@@ -15,12 +15,12 @@ struct RenderPlan {
   // Per planned light: its type, world-space position and direction (a headlight's turned into
   // the camera's frame), cone: what the packets evaluate (shading/light_source.h).
   std::vector<LightSource<float>> sources;
-  bool shadow_rays = false;            // shadows on and some object can occlude another point
-  bool emissive = false;               // some material has ke != 0
-  bool ambient = false;                // some ka != 0 and A_scene + sum La != 0
-  bool diffuse = false;                // some kd != 0 and a planned light has Ld != 0
-  bool specular = false;               // some ks != 0 and a planned light has Ls != 0
-  bool spheres = false;                // some object is a sphere (its hits are refined in double)
+  bool shadow_rays = false;  // shadows on and some object can occlude another point
+  bool emissive = false;     // some material has ke != 0
+  bool ambient = false;      // some ka != 0 and A_scene + sum La != 0
+  bool diffuse = false;      // some kd != 0 and a planned light has Ld != 0
+  bool specular = false;     // some ks != 0 and a planned light has Ls != 0
+  bool spheres = false;      // some object is a sphere (its hits are refined in double)
 
   bool operator==(const RenderPlan& o) const {
     return lights == o.lights && unit_attenuation == o.unit_attenuation && sources == o.sources &&

@@ -34,6 +34,7 @@ using Vec3 = glm::tvec3<T>;
 struct SampleKey {
   std::int32_t object = -1;         // -1: missed
   std::uint64_t shadowed = 0;       // bit i % 64 set when light i was blocked
+  std::uint64_t outside_cone = 0;   // bit i % 64 set when p is outside spot i's hard-edged cone
   bool mesh = false, flat = false;  // a triangle mesh; one without vertex normals
   glm::vec3 p{0.0f};                // hit point
   glm::vec3 ng{0.0f};               // geometric normal, viewer's side
@@ -44,6 +45,7 @@ struct SampleKey {
 // it), or, on a flat mesh, another face. Spheres are convex: the object decides.
 bool discontinuous(const SampleKey& a, const SampleKey& b) {
   if (a.object != b.object || a.shadowed != b.shadowed) return true;
+  if (a.outside_cone != b.outside_cone) return true;  // a hard cone edge, like a shadow edge
   if (a.object < 0 || !a.mesh) return false;
   const glm::vec3 chord = b.p - a.p;
   const float len = glm::length(chord);
@@ -66,7 +68,7 @@ struct Job {
   int width = 0, height = 0, spp = 1;
   PowMode pow = PowMode::exact;
   bool gouraud = false;
-  Vec3<T> ambient_light{0};  // A_scene + sum_i La_i
+  Vec3<T> ambient_light{0};             // A_scene + sum_i La_i
   std::vector<LightSource<T>> sources;  // per scene light, resolved in T (light_source.h)
 };
 
@@ -80,8 +82,7 @@ bool occluded(const Job<T>& job, int object, const ReferenceHit<T>& h,
   const Surface s{glm::vec3(h.p), glm::vec3(h.n), glm::vec3(h.ng), glm::vec3(h.v)};
   const glm::vec3 org = shadow_ray_origin(s, static_cast<float>(h.t));
   const bool directional = light.type == LightType::directional;
-  const glm::vec3 dir =
-      directional ? -glm::vec3(light.direction) : glm::vec3(light.position) - org;
+  const glm::vec3 dir = directional ? -glm::vec3(light.direction) : glm::vec3(light.position) - org;
   RTCRay ray;
   ray.org_x = org.x;
   ray.org_y = org.y;
@@ -119,8 +120,7 @@ LightFactors<T> light_weights(const Job<T>& job, const Vec3<T>& p, const Vec3<T>
 // barycentrics (clamped at 0: barycentrics of a hit on an edge can round below 0).
 template <class T>
 void gouraud_weights(const Job<T>& job, const Mesh& mesh, std::uint32_t prim,
-                     const ReferenceHit<T>& h, const LightSource<T>& light, T alpha, T& dw,
-                     T& sw) {
+                     const ReferenceHit<T>& h, const LightSource<T>& light, T alpha, T& dw, T& sw) {
   const glm::uvec3 tri = mesh.triangles[prim];
   dw = sw = T(0);
   for (int k = 0; k < 3; ++k) {
@@ -243,6 +243,9 @@ void shade_sample(const Job<T>& job, int x, int y, int s, int count, PixelSums<T
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& colours = scene.lights[i];
     const LightSource<T>& light = job.sources[i];
+    if (light.type == LightType::spot && !light.smooth_edge && !(spot_at<T>(h.p, light) > T(0))) {
+      key.outside_cone |= std::uint64_t(1) << (i % 64);
+    }
     if (record != nullptr) record_light(job, key.object, h, light, alpha, record->lights[i]);
     T dw = 0, sw = 0;
     bool lit_side;

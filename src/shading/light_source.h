@@ -22,8 +22,8 @@ template <class T>
 struct LightSource {
   using W = WideScalar<T>;
   LightType type = LightType::point;
-  glm::tvec3<T> position{0};     // point, spot
-  glm::tvec3<T> direction{0};    // directional, spot: unit, the way the light travels, world space
+  glm::tvec3<T> position{0};   // point, spot
+  glm::tvec3<T> direction{0};  // directional, spot: unit, the way the light travels, world space
   glm::tvec3<T> attenuation{1, 0, 0};  // point, spot: (c0, c1, c2)
   bool unit_attenuation = false;       // (c0, c1, c2) == (1, 0, 0): att = 1 without arithmetic
   // Spot: the cone in cosines, in the wide type (a cutoff of 0.01 degrees has
@@ -37,8 +37,8 @@ template <class T>
 bool operator==(const LightSource<T>& a, const LightSource<T>& b) {
   return a.type == b.type && a.position == b.position && a.direction == b.direction &&
          a.attenuation == b.attenuation && a.unit_attenuation == b.unit_attenuation &&
-         a.cos_cutoff == b.cos_cutoff && a.cos_inner == b.cos_inner &&
-         a.exponent == b.exponent && a.smooth_edge == b.smooth_edge;
+         a.cos_cutoff == b.cos_cutoff && a.cos_inner == b.cos_inner && a.exponent == b.exponent &&
+         a.smooth_edge == b.smooth_edge;
 }
 template <class T>
 bool operator!=(const LightSource<T>& a, const LightSource<T>& b) {
@@ -112,8 +112,8 @@ WideScalar<T> spot_at(const glm::tvec3<T>& p, const LightSource<T>& s) {
 // without branches and always inlined, for the packet code's lane loops.
 template <class T>
 [[gnu::always_inline]] inline LightFactors<T> spot_light_factors(
-    const glm::tvec3<T>& p, const glm::tvec3<T>& n, const glm::tvec3<T>& v,
-    const LightSource<T>& s, bool unit_attenuation, WideScalar<T> spot, T vis) {
+    const glm::tvec3<T>& p, const glm::tvec3<T>& n, const glm::tvec3<T>& v, const LightSource<T>& s,
+    bool unit_attenuation, WideScalar<T> spot, T vis) {
   using W = WideScalar<T>;
   using V = glm::tvec3<W>;
   const V to_light = V(s.position) - V(p);
@@ -126,8 +126,10 @@ template <class T>
 
 // A directional light's factors: l = -D everywhere, att = 1.
 template <class T>
-[[gnu::always_inline]] inline LightFactors<T> directional_light_factors(
-    const glm::tvec3<T>& n, const glm::tvec3<T>& v, const LightSource<T>& s, T vis) {
+[[gnu::always_inline]] inline LightFactors<T> directional_light_factors(const glm::tvec3<T>& n,
+                                                                        const glm::tvec3<T>& v,
+                                                                        const LightSource<T>& s,
+                                                                        T vis) {
   using V = glm::tvec3<WideScalar<T>>;
   return factors_along<T>(V(n), V(v), -V(s.direction), true, WideScalar<T>(1), vis);
 }
@@ -136,8 +138,8 @@ template <class T>
 // shading.h's light_factors itself, so point lights keep their bits.
 template <class T>
 LightFactors<T> source_factors(const glm::tvec3<T>& p, const glm::tvec3<T>& n,
-                               const glm::tvec3<T>& v, const LightSource<T>& s,
-                               WideScalar<T> spot, T vis) {
+                               const glm::tvec3<T>& v, const LightSource<T>& s, WideScalar<T> spot,
+                               T vis) {
   switch (s.type) {
     case LightType::directional:
       return directional_light_factors<T>(n, v, s, vis);

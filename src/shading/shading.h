@@ -45,8 +45,10 @@ using WideScalar = std::conditional_t<std::is_same_v<T, float>, double, T>;
 // over 16 lanes at once; always inlined, since a call inside a lane loop keeps the loop scalar
 // (GCC left it out of light_factors' loop in sample_packet.cpp).
 template <class T, class W>
-[[gnu::always_inline]] inline LightFactors<T> factors_along(const glm::tvec3<W>& n, const glm::tvec3<W>& v,
-                              const glm::tvec3<W>& l, bool reaches, W att, T vis) {
+[[gnu::always_inline]] inline LightFactors<T> factors_along(const glm::tvec3<W>& n,
+                                                            const glm::tvec3<W>& v,
+                                                            const glm::tvec3<W>& l, bool reaches,
+                                                            W att, T vis) {
   using V = glm::tvec3<W>;
   const W ndl = glm::dot(n, l);
   const bool lit = reaches & (ndl > W(0));

@@ -47,16 +47,16 @@ TEST(LightFields, AnOldPointLightReadsAsBefore) {
   const nlohmann::ordered_json j = nlohmann::ordered_json::parse(scene_to_json_text(scene));
   std::vector<std::string> keys;
   for (const auto& item : j["lights"][0].items()) keys.push_back(item.key());
-  const std::vector<std::string> old_keys = {"type",     "position", "ambient",
-                                             "diffuse",  "specular", "attenuation"};
+  const std::vector<std::string> old_keys = {"type",    "position", "ambient",
+                                             "diffuse", "specular", "attenuation"};
   EXPECT_EQ(keys, old_keys);
 }
 
 TEST(LightFields, ADirectionalLightNeedsNoPositionAndAPointLightDoes) {
-  const Scene scene = parse_scene(
-      scene_with_lights(R"({"type": "directional", "direction": [0, 0, -1],
+  const Scene scene =
+      parse_scene(scene_with_lights(R"({"type": "directional", "direction": [0, 0, -1],
                             "follow_camera": true})"),
-      "a.json");
+                  "a.json");
   EXPECT_EQ(scene.lights[0].type, LightType::directional);
   EXPECT_TRUE(scene.lights[0].follow_camera);
   const std::string point = error_of(R"({"diffuse": [1, 1, 1]})");

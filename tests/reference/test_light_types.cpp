@@ -6,8 +6,8 @@
 #include <cmath>
 #include <functional>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "engine/renderer.h"
 #include "reference/reference_renderer.h"
@@ -41,8 +41,8 @@ Scene floor_from_above(double height, float fov_y, int size) {
 D3 floor_point(const Scene& scene, int x, int y) {
   const CameraBasis<double> basis =
       make_camera_basis<double>(scene.camera, scene.render.width, scene.render.height);
-  const D3 dir = camera_direction<double>(basis, x + 0.5, y + 0.5, scene.render.width,
-                                          scene.render.height);
+  const D3 dir =
+      camera_direction<double>(basis, x + 0.5, y + 0.5, scene.render.width, scene.render.height);
   return basis.eye + (-basis.eye.y / dir.y) * dir;
 }
 
@@ -231,7 +231,8 @@ TEST(LightTypes, TheHeadlightFollowsAnOrbit) {
   const TermImages after_exact = render_reference<double>(orbited);
   double largest = 0.0, largest_exact = 0.0;
   for (std::size_t i = 0; i < before.total.pixels.size(); ++i) {
-    largest = std::max(largest, double(glm::length(after.total.pixels[i] - before.total.pixels[i])));
+    largest =
+        std::max(largest, double(glm::length(after.total.pixels[i] - before.total.pixels[i])));
     largest_exact = std::max(
         largest_exact, double(glm::length(after_exact.total.pixels[i] - before.total.pixels[i])));
   }
@@ -244,7 +245,8 @@ TEST(LightTypes, TheHeadlightFollowsAnOrbit) {
   const TermImages wrong = render(fixed);
   double planted = 0.0;
   for (std::size_t i = 0; i < before.total.pixels.size(); ++i) {
-    planted = std::max(planted, double(glm::length(wrong.total.pixels[i] - before.total.pixels[i])));
+    planted =
+        std::max(planted, double(glm::length(wrong.total.pixels[i] - before.total.pixels[i])));
   }
   EXPECT_GT(planted, 0.3);
 }
@@ -286,8 +288,7 @@ TEST(LightTypes, AnExponentOf1e4FallsOffAsTheContractSays) {
   const TermImages fast = render(scene);
   ASSERT_TRUE(all_finite(fast));
   EXPECT_EQ(check_spot_floor(scene, fast.diffuse, 0.0, 1e-5).wrong, 0);
-  EXPECT_EQ(check_spot_floor(scene, render_reference<double>(scene).diffuse, 0.0, 1e-7).wrong,
-            0);
+  EXPECT_EQ(check_spot_floor(scene, render_reference<double>(scene).diffuse, 0.0, 1e-7).wrong, 0);
 }
 
 TEST(LightTypes, ADirectionalLightAlongTheSurfaceAddsNothingAndNoNaN) {

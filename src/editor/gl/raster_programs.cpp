@@ -80,4 +80,16 @@ void set_uniform(GLuint program, const char* name, const float* xyz, int count) 
   glUniform3fv(glGetUniformLocation(program, name), count, xyz);
 }
 
+void set_uniform_vec2s(GLuint program, const char* name, const float* xy, int count) {
+  glUniform2fv(glGetUniformLocation(program, name), count, xy);
+}
+
+void set_uniform_vec4s(GLuint program, const char* name, const float* xyzw, int count) {
+  glUniform4fv(glGetUniformLocation(program, name), count, xyzw);
+}
+
+void set_uniform_ivec2s(GLuint program, const char* name, const int* xy, int count) {
+  glUniform2iv(glGetUniformLocation(program, name), count, xy);
+}
+
 }  // namespace gloss

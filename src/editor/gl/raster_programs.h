@@ -28,13 +28,12 @@ struct RasterVariant {
   }
 };
 
-// The most lights a raster program takes: its uniform arrays (5 vec3 per light) and its
-// shadow-map layers (6 per light) stay within GL 3.3's guaranteed minimums (1024 fragment
-// uniform components, 256 array layers). Per-vertex shading passes 2 floats per light plus 6
-// between the stages: past 29 lights that exceeds GL 3.3's guaranteed 64 output components
-// (llvmpipe and current GPUs offer 128); a driver that refuses the link gets the ray tracer,
-// with the linker's message as the editor's notice.
-inline constexpr int kMaxRasterLights = 32;
+// The most lights a raster program takes: its uniform arrays (7 vectors per light for the
+// contract, 5 more for its shadow map's frame and layers: at most 48 components each as vec4
+// slots) and its shadow-map layers (at most 6 per light) stay within GL 3.3's guaranteed
+// minimums (1024 fragment uniform components, 256 array layers). A scene with more lights gets
+// the ray tracer, with a notice.
+inline constexpr int kMaxRasterLights = 16;
 
 class RasterPrograms {
  public:
@@ -63,5 +62,9 @@ void set_uniform(GLuint program, const char* name, int value);
 void set_uniform(GLuint program, const char* name, float value);
 void set_uniform(GLuint program, const char* name, float x, float y);
 void set_uniform(GLuint program, const char* name, const float* xyz, int count = 1);
+// Arrays of vec2, vec4 and ivec2 (count entries).
+void set_uniform_vec2s(GLuint program, const char* name, const float* xy, int count);
+void set_uniform_vec4s(GLuint program, const char* name, const float* xyzw, int count);
+void set_uniform_ivec2s(GLuint program, const char* name, const int* xy, int count);
 
 }  // namespace gloss

@@ -110,12 +110,12 @@ const FieldTable<Light>& light_fields() {
                     .only_when(spot)
                     .explain("fall-off towards the edge: cos_t^exponent (OpenGL's "
                              "GL_SPOT_EXPONENT)"));
-    t.push_back(scalar_field<&Light::follow_camera>(FieldKind::flag, "follow_camera",
-                                                    "follow camera")
-                    .invalidates(ChangeClass::light)
-                    .only_when(directional)
-                    .explain("a headlight: the direction is in camera space and turns with "
-                             "the camera"));
+    t.push_back(
+        scalar_field<&Light::follow_camera>(FieldKind::flag, "follow_camera", "follow camera")
+            .invalidates(ChangeClass::light)
+            .only_when(directional)
+            .explain("a headlight: the direction is in camera space and turns with "
+                     "the camera"));
     return t;
   }();
   return table;
@@ -164,10 +164,10 @@ const FieldTable<RenderSettings>& render_fields() {
     t.push_back(choice_field<&RenderSettings::pow>("pow", "pow", {"exact", "fast"})
                     .invalidates(ChangeClass::exponent)
                     .explain("c^alpha exactly, or by a fast approximation (a speed knob)"));
-    t.push_back(choice_field<&RenderSettings::sampling>("sampling", "sampling",
-                                                        {"adaptive", "uniform"})
-                    .explain("spp > 1: stratified samples where the centre image has edges "
-                             "(adaptive) or in every pixel (uniform)"));
+    t.push_back(
+        choice_field<&RenderSettings::sampling>("sampling", "sampling", {"adaptive", "uniform"})
+            .explain("spp > 1: stratified samples where the centre image has edges "
+                     "(adaptive) or in every pixel (uniform)"));
     t.push_back(scalar_field<&RenderSettings::aa_threshold>(FieldKind::number, "aa_threshold",
                                                             "refine threshold")
                     .range(0.0, 1.0)

@@ -107,32 +107,19 @@ TEST(LobeAndInspectScript, InspectPrintsTheReading) {
   EXPECT_EQ(r.result.next, LineResult::Next::go_on);
   EXPECT_EQ(r.err, "");
   const Reading reading = read(r.out);
-  const std::vector<std::string> expected = {"pixel",
-                                             "object",
-                                             "material",
-                                             "alpha",
-                                             "energy_factor",
-                                             "total",
-                                             "emissive",
-                                             "ambient",
-                                             "diffuse",
-                                             "specular",
-                                             "light0.ndl",
-                                             "light0.c",
-                                             "light0.c_alpha",
-                                             "light0.attenuation",
-                                             "light0.spot",
-                                             "light0.visibility",
-                                             "light0.diffuse",
-                                             "light0.specular",
-                                             "light1.ndl",
-                                             "light1.c",
-                                             "light1.c_alpha",
-                                             "light1.attenuation",
-                                             "light1.spot",
-                                             "light1.visibility",
-                                             "light1.diffuse",
-                                             "light1.specular"};
+  const std::vector<std::string> expected = {"pixel",          "object",
+                                             "material",       "alpha",
+                                             "energy_factor",  "total",
+                                             "emissive",       "ambient",
+                                             "diffuse",        "specular",
+                                             "light0.ndl",     "light0.c",
+                                             "light0.c_alpha", "light0.attenuation",
+                                             "light0.spot",    "light0.visibility",
+                                             "light0.diffuse", "light0.specular",
+                                             "light1.ndl",     "light1.c",
+                                             "light1.c_alpha", "light1.attenuation",
+                                             "light1.spot",    "light1.visibility",
+                                             "light1.diffuse", "light1.specular"};
   EXPECT_EQ(reading.names, expected) << r.out;
   EXPECT_EQ(reading.words.at("pixel"), "15 16 64x48");
   EXPECT_EQ(reading.words.at("object"), "left");
