@@ -205,6 +205,31 @@ const FieldTable<Camera>& camera_fields() {
   return table;
 }
 
+const FieldTable<Environment>& environment_fields() {
+  static const FieldTable<Environment> table = [] {
+    FieldTable<Environment> t;
+    // The engine keeps the environment's terms at intensity 1 and scales them as it recombines.
+    t.push_back(scalar_field<&Environment::intensity>(FieldKind::number, "intensity", "intensity")
+                    .range(0.0, 1e6)
+                    .ui(0.0, 10.0)
+                    .invalidates(ChangeClass::shade)
+                    .explain("the map's radiance times this"));
+    t.push_back(scalar_field<&Environment::rotation>(FieldKind::number, "rotation", "rotation")
+                    .range(-1e6, 1e6)
+                    .ui(-180.0, 180.0)
+                    .invalidates(ChangeClass::environment)
+                    .explain("degrees about the up axis; positive turns the map counter-clockwise "
+                             "seen from above"));
+    t.push_back(scalar_field<&Environment::as_background>(FieldKind::flag, "as_background",
+                                                          "as background")
+                    .invalidates(ChangeClass::shade)
+                    .explain("primary rays that hit nothing see the map; off: the background "
+                             "colour"));
+    return t;
+  }();
+  return table;
+}
+
 const FieldTable<Scene>& scene_fields() {
   static const FieldTable<Scene> table = [] {
     FieldTable<Scene> t;
@@ -225,6 +250,10 @@ bool operator==(const Material& a, const Material& b) {
 
 bool operator==(const Light& a, const Light& b) {
   return same_fields(light_fields(), a, b);
+}
+
+bool operator==(const Environment& a, const Environment& b) {
+  return same_fields(environment_fields(), a, b) && a.file == b.file && a.map == b.map;
 }
 
 bool operator==(const Camera& a, const Camera& b) {

@@ -15,6 +15,8 @@ const FieldTable<Material>& material_fields();
 const FieldTable<Light>& light_fields();
 const FieldTable<RenderSettings>& render_fields();
 const FieldTable<Camera>& camera_fields();
+// The environment light's numbers (its map is read and compared apart: scene_diff.h).
+const FieldTable<Environment>& environment_fields();
 // The scene's own fields (background, A_scene).
 const FieldTable<Scene>& scene_fields();
 

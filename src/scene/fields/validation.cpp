@@ -142,6 +142,16 @@ void check_memory(const Scene& scene, SampleMemory samples) {
                      " MB with it, budget " + memory_budget_text());
     }
   }
+  if (scene.environment.present()) {
+    total += environment_bytes(scene.environment);
+    if (total > budget) {
+      const Image& map = scene.environment.map->radiance;
+      fail_field(file, "environment.file",
+                 std::to_string(map.width) + "x" + std::to_string(map.height) +
+                     " map: the scene needs ~" + std::to_string(megabytes(total)) +
+                     " MB with it, budget " + memory_budget_text());
+    }
+  }
   const RenderSettings& r = scene.render;
   const std::uint64_t render = render_bytes(r, scene.lights.size(), samples);
   if (total + render > budget) {
@@ -163,6 +173,7 @@ void validate_scene(const Scene& scene, SampleMemory samples) {
   check_fields(file, "render", render_fields(), scene.render);
   check_render(file, scene.render);
   check_fields(file, "", scene_fields(), scene);
+  check_fields(file, "environment", environment_fields(), scene.environment);
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const std::string field = index_path("lights", i);
     check_fields(file, field, light_fields(), scene.lights[i]);
