@@ -28,14 +28,12 @@ TermImages render(const Scene& scene, const RenderOptions& options) {
   validate_scene(scene);
   const EmbreeScene embree(scene);
   RenderContext ctx;
-  ctx.scene = &scene;
-  ctx.embree = &embree;
-  ctx.plan = make_render_plan(scene, options.full_plan);
+  bind_scene(ctx, scene, embree, options.full_plan);
 
   const int w = scene.render.width, h = scene.render.height, spp = scene.render.spp;
   // Larger images go band by band, each band's sample cache about kSampleBandBytes; validation
   // counted the same (scene/memory/memory_estimate.h).
-  const int band_rows = sample_band_rows(w, h, spp, ctx.plan.lights.size());
+  const int band_rows = sample_band_rows(w, h, spp, ctx.plan.slots());
 
   TermImages out;
   out.total = Image(w, h);

@@ -118,7 +118,7 @@ void single_sample_light(const MaterialExponents& exponents, PowMode mode,
 bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, PixelFactors& out) {
   const Scene& scene = *ctx.scene;
   const std::size_t pixels = cache.pixel_count();
-  const std::size_t lights = ctx.plan.lights.size();
+  const std::size_t lights = ctx.plan.slots();
   const int n = cache.samples();
   size_pixel_factors(out, cache.width, cache.height, n, lights);
   const int rows = band_rows(cache.width);

@@ -1,8 +1,9 @@
 #pragma once
 // The linear part of the shading contract: the material constants folded with the light colours
 // and the scene ambient, per material (ke; ka (A_scene + sum La); per planned light kd Ld_i and
-// ks Ls_i, the latter times the optional energy normalisation), applied to per-pixel factor
-// means (pixel_factors.h): what combine_terms applies to every pixel.
+// ks Ls_i, the latter times the optional energy normalisation; per environment slot kd and ks
+// in its channel times the intensity), applied to per-pixel factor means (pixel_factors.h):
+// what combine_terms applies to every pixel.
 #include <cstdint>
 #include <vector>
 

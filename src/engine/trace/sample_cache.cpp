@@ -77,7 +77,7 @@ void drop_planes(SampleCache& cache, int first) {
 
 bool add_samples(SampleCache& cache, const RenderContext& ctx, int count) {
   const int first = cache.samples();
-  append_planes(cache, ctx.plan.lights.size(), count);
+  append_planes(cache, ctx.plan.slots(), count);
   const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
   const bool done = for_each_packet(cache, ctx, [&](SamplePacket& packet) {
     long long rays = 0;
@@ -108,7 +108,7 @@ void size_planes(SampleCache& cache, std::size_t lights) {
 }
 
 bool recompute_light_factors(SampleCache& cache, const RenderContext& ctx) {
-  size_planes(cache, ctx.plan.lights.size());
+  size_planes(cache, ctx.plan.slots());
   const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
   const bool planes_done = for_each_packet(cache, ctx, [&](SamplePacket& packet) {
     long long rays = 0;
