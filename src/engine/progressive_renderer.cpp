@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "engine/adaptive_refinement.h"
+#include "engine/environment/environment_stage.h"
 #include "engine/frame_pool.h"
 #include "engine/render_context.h"
 #include "engine/render_plan.h"
@@ -185,11 +186,17 @@ bool ProgressiveRenderer::Impl::step() {
   }
   const std::shared_ptr<RenderedFrame> frame =
       FramePool::make(frame_pool, cache.width, cache.height, worker_terms);
-  Image* const total = worker_terms ? nullptr : &frame->images.total;
+  // The first pass makes the total itself unless a term view wants the terms or the
+  // environment is the background (its sky comes after the factors: combine_terms adds it).
+  const bool sky_shown = ctx.plan.sky && scene->environment.as_background;
+  Image* const total = worker_terms || sky_shown ? nullptr : &frame->images.total;
   if (restart) {
     redo = ChangeClass::full;
     ok = trace_single_sample(cache, ctx, factors, total);
     factors_done = total_done = true;
+  } else if (dirty == ChangeClass::environment) {
+    redo = ChangeClass::environment;  // its factors from the cached hits, no rays
+    ok = recompute_environment_factors(cache, ctx);
   } else if (dirty == ChangeClass::light) {
     redo = ChangeClass::light;
     if (cache.samples() == 1 && cache.refined.spp == 0) {  // one pass: light and pixel factors
@@ -223,6 +230,10 @@ bool ProgressiveRenderer::Impl::step() {
   if (ok && dirty != ChangeClass::shade && !factors_done) {
     redo = std::max(redo, ChangeClass::exponent);
     ok = build_pixel_factors(cache, ctx, factors);
+  }
+  // The sky follows the camera, the samples and the environment's map and rotation.
+  if (ok && ctx.plan.sky && dirty != ChangeClass::shade && dirty != ChangeClass::exponent) {
+    ok = environment_sky(cache, ctx, factors);
   }
   ctx.rays = nullptr;
   if (!ok) {

@@ -64,6 +64,7 @@ RenderPlan make_render_plan(const Scene& scene, bool full) {
   }
   plan.spheres = has_object_type(scene, ObjectType::sphere);
   const bool environment = scene.environment.present();
+  plan.sky = environment;
   if (full) {
     plan.shadow_rays = scene.render.shadows;
     plan.emissive = plan.ambient = plan.diffuse = plan.specular = true;

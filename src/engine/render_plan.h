@@ -24,6 +24,9 @@ struct RenderPlan {
   // The environment light reaches some kd or ks: three more slots of light factors after the
   // planned lights, one per colour channel (engine/environment/environment_lanes.cpp).
   bool environment = false;
+  // The scene has an environment: the sky (the map seen where primary rays miss) is kept per
+  // pixel, so turning as_background on or off only recombines.
+  bool sky = false;
 
   // Slots of light factors per sample: the planned lights, then the environment's three.
   std::size_t slots() const { return lights.size() + (environment ? 3 : 0); }
@@ -35,7 +38,7 @@ struct RenderPlan {
     return lights == o.lights && unit_attenuation == o.unit_attenuation && sources == o.sources &&
            shadow_rays == o.shadow_rays && emissive == o.emissive && ambient == o.ambient &&
            diffuse == o.diffuse && specular == o.specular && spheres == o.spheres &&
-           environment == o.environment;
+           environment == o.environment && sky == o.sky;
   }
   bool operator!=(const RenderPlan& o) const { return !(*this == o); }
 };

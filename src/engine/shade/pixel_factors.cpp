@@ -47,7 +47,8 @@ std::size_t PixelFactors::bytes() const {
   return material.size() * sizeof(std::int32_t) + (weight.size() + background.size()) * 4 +
          refined_pixel.size() * 12 +
          (diffuse.size() + specular.size()) * 4 + extra_pixel.size() * 8 +
-         (extra_weight.size() + extra_diffuse.size() + extra_specular.size()) * 4;
+         (extra_weight.size() + extra_diffuse.size() + extra_specular.size()) * 4 +
+         sky.size() * sizeof(glm::vec3);
 }
 
 void size_pixel_factors(PixelFactors& out, int width, int height, int samples, std::size_t lights) {

@@ -37,6 +37,8 @@ Recombination::Recombination(const RenderContext& ctx)
       }
     }
   }
+  m_sky_shown = ctx.plan.sky && scene.environment.as_background;
+  m_sky_intensity = scene.environment.intensity;
   m_materials = scene.materials.size();
   m_columns.resize(m_flat.size());
   for (std::size_t m = 0; m < m_materials; ++m) {

@@ -115,4 +115,17 @@ bool recompute_refined_light_factors(SampleCache& cache, const RenderContext& ct
   });
 }
 
+bool visit_refined_samples(const SampleCache& cache, const RenderContext& ctx,
+                           const std::function<long long(SamplePacket&)>& visit) {
+  const RefinedSamples& refined = cache.refined;
+  if (refined.spp == 0) return true;
+  const SamplePattern pattern = make_sample_pattern(cache.seed, refined.spp);
+  const int width = static_cast<int>(refined.entries());
+  return for_each_entry_packet(cache, ctx, [&](SamplePacket& packet) {
+    entry_directions(packet, cache, pattern);
+    load_hits(packet, width, refined.plane);
+    return visit(packet);
+  });
+}
+
 }  // namespace gloss

@@ -123,4 +123,19 @@ bool recompute_light_factors(SampleCache& cache, const RenderContext& ctx) {
   return planes_done && recompute_refined_light_factors(cache, ctx);
 }
 
+bool visit_cached_samples(SampleCache& cache, const RenderContext& ctx,
+                          const std::function<long long(SamplePacket&, SamplePlane&)>& visit) {
+  const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
+  return for_each_packet(cache, ctx, [&](SamplePacket& packet) {
+    long long rays = 0;
+    for (int s = 0; s < cache.samples(); ++s) {
+      SamplePlane& plane = cache.planes[static_cast<std::size_t>(s)];
+      packet_directions(packet, cache, pattern, sample_stratum(pattern, s));
+      load_hits(packet, cache.width, plane);
+      rays += visit(packet, plane);
+    }
+    return rays;
+  });
+}
+
 }  // namespace gloss
