@@ -14,6 +14,7 @@ EnvironmentContext make_environment_context(const Scene& scene, bool planned) {
   PrefilterSettings settings;
   settings.texels_per_lobe = scene.render.env_resolution;
   e.maps = prefiltered_environment(scene.environment.map, settings);
+  if (scene.render.env_samples > 0) e.sampler = environment_sampler(scene.environment.map);
   e.rotation = environment_rotation<float>(scene.environment.rotation);
   e.rotation_d = environment_rotation<double>(scene.environment.rotation);
   for (const Material& m : scene.materials) {

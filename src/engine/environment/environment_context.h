@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "engine/environment/environment_sampling.h"
 #include "engine/environment/prefiltered_environment.h"
 #include "scene/scene.h"
 #include "shading/environment.h"
@@ -14,6 +15,7 @@ namespace gloss {
 
 struct EnvironmentContext {
   std::shared_ptr<const PrefilteredEnvironment> maps;  // null: no environment planned
+  std::shared_ptr<const EnvironmentSampler> sampler;   // the map's draws (env_samples > 0)
   EnvironmentRotation<float> rotation;
   EnvironmentRotation<double> rotation_d;
   // Per material (entry 0 stands in when there are none).

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -91,6 +93,23 @@ double EnvironmentSampler::pdf(const glm::dvec3& m) const {
 
 std::uint64_t EnvironmentSampler::bytes() const {
   return m_weight.size() * sizeof(float) + (m_row_cdf.size() + m_col_cdf.size()) * sizeof(double);
+}
+
+std::shared_ptr<const EnvironmentSampler> environment_sampler(
+    const std::shared_ptr<const EnvironmentMap>& map) {
+  // Each entry holds its map, so an address cannot be reused while kept.
+  static std::mutex mutex;
+  static std::vector<std::pair<std::shared_ptr<const EnvironmentMap>,
+                               std::shared_ptr<const EnvironmentSampler>>>
+      kept;
+  std::lock_guard<std::mutex> lock(mutex);
+  for (const auto& [key, sampler] : kept) {
+    if (key == map) return sampler;
+  }
+  auto made = std::make_shared<const EnvironmentSampler>(*map);
+  kept.emplace_back(map, made);
+  if (kept.size() > 3) kept.erase(kept.begin());
+  return made;
 }
 
 glm::dvec3 sample_cosine(const glm::dvec3& n, double u1, double u2, double& pdf) {

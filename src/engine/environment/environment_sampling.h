@@ -5,6 +5,7 @@
 // the balance heuristic, so neither a sharp lobe nor a small sun is noisy. The progressive
 // renderer and the reference path's shadowed estimate both draw through these.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -37,6 +38,10 @@ class EnvironmentSampler {
   std::vector<double> m_col_cdf;  // H rows of W + 1 entries, 0 .. 1
   std::vector<float> m_weight;    // per texel, sum m_total
 };
+
+// The sampler of map, shared: made the first time and kept for the last few maps.
+std::shared_ptr<const EnvironmentSampler> environment_sampler(
+    const std::shared_ptr<const EnvironmentMap>& map);
 
 // Unit directions about an axis. Each returns the direction for two uniform numbers and its
 // solid-angle density; pdf_* gives the density of a direction.
