@@ -18,6 +18,14 @@ uniform vec3 gloss_light_attenuation[GLOSS_LIGHT_COUNT];
 uniform vec3 gloss_light_direction[GLOSS_LIGHT_COUNT];
 uniform vec4 gloss_light_cone[GLOSS_LIGHT_COUNT];
 #endif
+#if GLOSS_ENVIRONMENT
+// environment.glsl's inputs: the levels' atlas (texture unit 1), their places in it (12 levels
+// and the map itself), the rotation's (cos, sin) and the intensity.
+uniform sampler2D gloss_env_atlas;
+uniform ivec4 gloss_env_level[13];
+uniform vec2 gloss_env_rotation;
+uniform float gloss_env_intensity;
+#endif
 
 // The view this pass draws from: the camera (docs/spec/shading.md, "The camera": forward f,
 // right r, up u, and the image-plane scales tan(fov_y / 2) W / H and tan(fov_y / 2)), one

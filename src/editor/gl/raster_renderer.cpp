@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "editor/gl/environment_texture.h"
 #include "editor/gl/raster_geometry.h"
 #include "editor/gl/raster_programs.h"
 #include "editor/gl/raster_view.h"
@@ -39,6 +40,7 @@ struct SavedState {
   GLint draw_framebuffer = 0, read_framebuffer = 0, program = 0, vertex_array = 0;
   GLint array_buffer = 0, renderbuffer = 0, viewport[4] = {};
   GLint active_texture = GL_TEXTURE0, texture_2d = 0, texture_array = 0;  // on unit 0
+  GLint texture_2d_unit1 = 0;                                             // the environment's unit
   GLint front_face = GL_CCW, cull_face = GL_BACK, depth_func = GL_LESS;
   GLint blend_rgb = GL_FUNC_ADD, blend_alpha = GL_FUNC_ADD, pack_alignment = 4;
   GLboolean depth_test = GL_FALSE, blend = GL_FALSE, cull = GL_FALSE;
@@ -51,6 +53,8 @@ struct SavedState {
     glGetIntegerv(GL_RENDERBUFFER_BINDING, &renderbuffer);
     glGetIntegerv(GL_VIEWPORT, viewport);
     glGetIntegerv(GL_ACTIVE_TEXTURE, &active_texture);
+    glActiveTexture(GL_TEXTURE1);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture_2d_unit1);
     glActiveTexture(GL_TEXTURE0);
     glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture_2d);
     glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &texture_array);
@@ -72,6 +76,9 @@ struct SavedState {
     glBindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(array_buffer));
     glBindRenderbuffer(GL_RENDERBUFFER, static_cast<GLuint>(renderbuffer));
     glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    glActiveTexture(GL_TEXTURE0);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture_2d_unit1));
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture_2d));
     glBindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(texture_array));
@@ -178,6 +185,8 @@ struct RasterRenderer::Impl {
   RasterPrograms programs;
   RasterGeometry geometry;
   ShadowMaps shadows;
+  EnvironmentTexture environment;  // the environment's levels (texture unit 1)
+  bool with_environment = false;   // of the frame being drawn
   RasterTiming timing;
 
   // The five float targets and their depth buffer, resized with the image.
@@ -234,7 +243,8 @@ struct RasterRenderer::Impl {
       // Spheres are impostors: per pixel in both shading passes.
       const RasterPass own = sphere && pass == RasterPass::vertex ? RasterPass::pixel : pass;
       const GLuint program =
-          programs.get({sphere ? RasterShape::sphere : RasterShape::mesh, own, lights, shadows});
+          programs.get({sphere ? RasterShape::sphere : RasterShape::mesh, own, lights, shadows,
+                        with_environment && pass != RasterPass::shadow});
       if (program != current) {
         glUseProgram(program);
         current = program;
@@ -242,6 +252,7 @@ struct RasterRenderer::Impl {
         if (pass != RasterPass::shadow) {
           set_scene_uniforms(program, scene);
           set_uniform(program, "gloss_image_size", float(width), float(height));
+          if (with_environment) environment.use(program, scene, 1);
           if (shadows) {
             set_uniform(program, "gloss_shadow_maps", 0);
             set_uniform(program, "gloss_shadow_size", float(this->shadows.size()));
@@ -270,6 +281,20 @@ struct RasterRenderer::Impl {
         glDrawArrays(GL_TRIANGLES, 0, b.vertices);
       }
     }
+  }
+
+  // The environment where primary rays miss: one triangle over the image, before the objects,
+  // without depth.
+  void draw_sky(const Scene& scene, const RasterView& view) {
+    const GLuint program = programs.get({RasterShape::sky, RasterPass::pixel, 0, false, true});
+    glUseProgram(program);
+    set_view_uniforms(program, view);
+    set_uniform(program, "gloss_image_size", float(width), float(height));
+    environment.use(program, scene, 1);
+    glDisable(GL_DEPTH_TEST);
+    glBindVertexArray(geometry.cube());  // core GL needs one bound; the sky reads no attribute
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glEnable(GL_DEPTH_TEST);
   }
 
   float shadow_bias = 0.0f;
@@ -337,6 +362,9 @@ std::shared_ptr<RenderedFrame> RasterRenderer::render(const Scene& scene,
     t.shadow_ms = finish_ms(since);
   }
 
+  m.with_environment = scene.environment.present();
+  if (m.with_environment) m.environment.update(scene);
+
   m.size_targets(w, h);
   glBindFramebuffer(GL_FRAMEBUFFER, m.framebuffer);
   glViewport(0, 0, w, h);
@@ -361,6 +389,7 @@ std::shared_ptr<RenderedFrame> RasterRenderer::render(const Scene& scene,
     glBindTexture(GL_TEXTURE_2D_ARRAY, m.shadows.texture());
   }
   m.shadow_bias = settings.shadow_bias;
+  if (m.with_environment && scene.environment.as_background) m.draw_sky(scene, view);
   m.draw_objects(
       scene, view,
       settings.shading == ShadingFrequency::vertex ? RasterPass::vertex : RasterPass::pixel,
