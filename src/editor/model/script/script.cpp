@@ -6,6 +6,7 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "editor/model/export/shown_image.h"
 #include "editor/model/script/script_tokens.h"
 
 namespace gloss {
@@ -303,9 +304,15 @@ ScriptAction parse_line(Tokens& t) {
     if (!t.done()) {
       const std::string& kind = t.word("kind");
       if (!parse_screenshot_kind(kind, s.kind)) {
-        throw std::runtime_error("screenshot kind must be viewport, terms or window, got '" + kind +
-                                 "'");
+        throw std::runtime_error("screenshot kind must be viewport, terms, window or shown, got '" +
+                                 kind + "'");
       }
+    }
+    if (s.kind == ScreenshotKind::shown && !shown_path_ok(s.path)) {
+      throw std::runtime_error(
+          "a shown screenshot is written as .png or .pfm (or into a folder), "
+          "got '" +
+          s.path + "'");
     }
     return s;
   }
