@@ -16,7 +16,8 @@ enum class BrowsePurpose {
   load_materials,
   save_scene,
   save_materials,
-  export_glsl,  // issue 12: the selected object's material as a fragment shader
+  export_glsl,       // issue 12: the selected object's material as a fragment shader
+  open_environment,  // an environment map (HDR, EXR, PNG)
 };
 // The recent list the panel offers for purpose (scenes for scenes, models for Add model, ...).
 RecentKind recent_kind(BrowsePurpose purpose);

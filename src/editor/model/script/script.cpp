@@ -102,6 +102,20 @@ ScriptAction parse_light(Tokens& t) {
   return parse_field(t, light_fields(), FieldPart::light, light, t.word("light field"));
 }
 
+// `environment FILE|NAME|off`, `environment rotation DEG`, `environment intensity X`,
+// `environment background on|off` (or any key of the environment's table).
+ScriptAction parse_environment(Tokens& t) {
+  const std::string& what = t.word("environment file, name, off or field");
+  if (what == "off" || what == "none") return Command(SetEnvironment{});
+  if (what == "background") {
+    return parse_field(t, environment_fields(), FieldPart::environment, 0, "as_background");
+  }
+  if (find_field(environment_fields(), what) != nullptr) {
+    return parse_field(t, environment_fields(), FieldPart::environment, 0, what);
+  }
+  return Command(SetEnvironment{what});
+}
+
 // Older spellings of render fields, kept working: `shadows on`, `energy on`, `spp 16`,
 // `encoding srgb`.
 ScriptAction parse_render_alias(Tokens& t, const std::string& verb) {
@@ -277,6 +291,7 @@ ScriptAction parse_line(Tokens& t) {
     return Command(c);
   }
   if (verb == "light") return parse_light(t);
+  if (verb == "environment") return parse_environment(t);
   if (verb == "tessellation") {  // every teapot's segments per patch side; the command checks it
     return Command(SetTessellation{static_cast<int>(t.whole("segments per patch side"))});
   }
