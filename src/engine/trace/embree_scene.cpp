@@ -74,6 +74,7 @@ EmbreeScene::EmbreeScene(const Scene& scene)
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const Object& object = scene.objects[i];
     const auto id = static_cast<unsigned>(i);
+    if (object.hidden) continue;  // no ray meets it: not seen, no shadow, not picked
     if (object.type == ObjectType::sphere) {
       attach_sphere(m_device, m_scene, object, id);
     } else if (object.mesh && !object.mesh->triangles.empty()) {

@@ -24,6 +24,7 @@
 #include "editor/model/view/camera_controller.h"
 #include "editor/model/view/reference_preview.h"
 #include "editor/model/view/view_settings.h"
+#include "editor/ui/viewport/gizmo.h"
 #include "engine/progressive_renderer.h"
 
 namespace gloss {
@@ -307,6 +308,7 @@ class Viewport {
   ExposureHistogram m_histogram;
 
   // Gesture state (viewport_input.cpp).
+  ViewportGizmo m_gizmo;            // the selection's transform gizmo and its drag (gizmo.h)
   int m_drag_button = -1;           // ImGuiMouseButton being dragged in the viewport, -1 none
   int m_drag_light = -1;            // light being dragged, -1 none
   bool m_drag_off_view = false;     // ... by its off-view arrow: brought to the target's depth
