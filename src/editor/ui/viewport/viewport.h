@@ -149,6 +149,9 @@ class Viewport {
                               bool exact = false);
 
  private:
+  // Drops the edits waiting for an image (the image cadence's and the drag tags): their frames
+  // would come from a renderer whose generations no longer compare (a new one, or the other side).
+  void forget_edits();
   // viewport_input.cpp: gestures, light markers, picking.
   void handle_input(Commands& commands, ViewSettings& view, Selection& selection,
                     const InputState& input, double now_s);
@@ -288,7 +291,6 @@ class Viewport {
     DragSetup setup;
   };
   std::deque<EditTag> m_edit_tags;
-  std::uint64_t m_edit_generation = 0;  // the cadence's generation of the newest edit
   bool m_watch_b = false;  // the newest edit changed the B side alone (A/B snapshot | live)
   LobeViewState m_lobe;    // the lobe view's (lobe_view.cpp)
 
