@@ -1,49 +1,64 @@
 // read_exr_image (map_readers.h): OpenEXR through the OpenEXR library (scan lines or tiles,
 // every compression it has, DWAB included: Blender's studio lights). The first part's R, G, B
 // (and A) channels, or Y (and A) for a grey image, as 32-bit floats whatever they are stored as.
+// The headers are walked first (exr_header_scan.h): the library allocates what a header declares.
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
-#include <ImfTestFile.h>
 
+#include <algorithm>
 #include <exception>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "base/error.h"
+#include "io/image/exr_header_scan.h"
 #include "io/image/map_readers.h"
 
 namespace gloss {
 
+namespace {
+
+// The channels a map takes: R, G and B, or Y for a grey image, then A when there is one.
+std::vector<const char*> map_channels(const std::string& path,
+                                      const std::function<bool(const char*)>& has) {
+  const bool rgb = has("R") && has("G") && has("B");
+  if (!rgb && !has("Y")) {
+    throw InputError(path, "OpenEXR image has neither R, G and B channels nor a Y channel");
+  }
+  std::vector<const char*> names =
+      rgb ? std::vector<const char*>{"R", "G", "B"} : std::vector<const char*>{"Y"};
+  if (has("A")) names.push_back("A");
+  return names;
+}
+
+}  // namespace
+
 FloatImage read_exr_image(const std::string& path, const ImageReadOptions& options,
                           ImageFileInfo& info) {
   info.format = "OpenEXR";
+  // Before the library reads the file: its headers' structure, and the floats with the library's
+  // own buffers against the budget.
+  const ExrHeaderScan scan = scan_exr_header(path);
+  const auto scanned = map_channels(path, [&](const char* name) {
+    return std::find(scan.channels.begin(), scan.channels.end(), name) != scan.channels.end();
+  });
+  check_image_size(path, "OpenEXR", scan.width, scan.height, static_cast<int>(scanned.size()),
+                   options, scan.library_bytes);
   // OpenEXR refuses a larger header while it reads it, before anything is allocated for it.
   Imf::Header::setMaxImageSize(kMaxMapSide, kMaxMapSide);
   Imf::Header::setMaxTileSize(kMaxMapSide, kMaxMapSide);
   try {
-    bool tiled = false, deep = false, multipart = false;
-    if (!Imf::isOpenExrFile(path.c_str(), tiled, deep, multipart)) {
-      throw InputError(path, "invalid OpenEXR: not an OpenEXR file");
-    }
-    if (deep) throw InputError(path, "OpenEXR deep images are not maps");
     Imf::InputFile file(path.c_str());
     const Imf::Header& header = file.header();
     const Imath::Box2i window = header.dataWindow();
     const long long width = static_cast<long long>(window.max.x) - window.min.x + 1;
     const long long height = static_cast<long long>(window.max.y) - window.min.y + 1;
     const Imf::ChannelList& list = header.channels();
-    const bool rgb = list.findChannel("R") != nullptr && list.findChannel("G") != nullptr &&
-                     list.findChannel("B") != nullptr;
-    const bool grey = !rgb && list.findChannel("Y") != nullptr;
-    if (!rgb && !grey) {
-      throw InputError(path, "OpenEXR image has neither R, G and B channels nor a Y channel");
-    }
-    const bool alpha = list.findChannel("A") != nullptr;
-    std::vector<const char*> names = rgb ? std::vector<const char*>{"R", "G", "B"}
-                                         : std::vector<const char*>{"Y"};
-    if (alpha) names.push_back("A");
+    const std::vector<const char*> names =
+        map_channels(path, [&](const char* name) { return list.findChannel(name) != nullptr; });
     const int channels = static_cast<int>(names.size());
     for (const char* name : names) {
       const Imf::Channel* c = list.findChannel(name);
@@ -53,6 +68,7 @@ FloatImage read_exr_image(const std::string& path, const ImageReadOptions& optio
       }
       info.bits = std::max(info.bits, c->type == Imf::HALF ? 16 : 32);
     }
+    // Again from the library's reading of the header, which sizes the floats allocated here.
     check_image_size(path, "OpenEXR", width, height, channels, options);
 
     FloatImage image;
@@ -69,8 +85,9 @@ FloatImage read_exr_image(const std::string& path, const ImageReadOptions& optio
     }
     file.setFrameBuffer(frame);
     if (!file.isComplete()) {
-      throw InputError(path, "invalid OpenEXR: the file is truncated (some of its pixel data "
-                             "is missing)");
+      throw InputError(path,
+                       "invalid OpenEXR: the file is truncated (some of its pixel data "
+                       "is missing)");
     }
     file.readPixels(window.min.y, window.max.y);
     return image;
