@@ -152,6 +152,46 @@ TEST(ImageReader, RadianceHdr) {
   EXPECT_NE(cut.find("truncated"), std::string::npos) << cut;
 }
 
+// Run-length scan lines (widths 8 to 32767): 2, 2, the width in 2 bytes, then each of R, G, B, E
+// as runs (128 + count, value) and dumps (count, bytes). stb_image loops forever on a line cut
+// short or on a dump of 0 bytes: without gloss's own walk of the data these tests never end.
+TEST(ImageReader, RadianceHdrScanLinesCutShortOrEndlessAreRefused) {
+  ScratchFolder folder;
+  const std::string header = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 8\n";
+  // Line 0: 8 pixels of (128, 64, 32, 129) = (1, 0.5, 0.25) as four runs; line 1: R as a dump of
+  // 8 bytes (128 = 1.0 ... 135 = 135/128), G, B, E as runs.
+  const std::string line0("\x02\x02\x00\x08\x88\x80\x88\x40\x88\x20\x88\x81", 12);
+  const std::string line1 = std::string("\x02\x02\x00\x08\x08", 5) +
+                            "\x80\x81\x82\x83\x84\x85\x86\x87" +
+                            std::string("\x88\x40\x88\x20\x88\x81", 6);
+  const FloatImage whole = read_image(write(folder, "rle.hdr", header + line0 + line1));
+  ASSERT_EQ(whole.width, 8);
+  EXPECT_NEAR(whole.at(7, 0, 0), 1.0, 1e-7);
+  EXPECT_NEAR(whole.at(3, 0, 2), 0.25, 1e-7);
+  EXPECT_NEAR(whole.at(5, 1, 0), 133 / 128.0, 1e-7);
+  EXPECT_NEAR(whole.at(5, 1, 1), 0.5, 1e-7);
+  // Line 1 ends inside its R dump.
+  const std::string cut = error_of(write(folder, "cut.hdr", header + line0 + line1.substr(0, 9)));
+  EXPECT_NE(
+      cut.find("cut.hdr: invalid Radiance HDR: the pixel data is truncated (scan line 1 of 2"),
+      std::string::npos)
+      << cut;
+  // A dump of 0 bytes where line 1's R starts: the data does not run out, stb just stops moving.
+  std::string zero = line1;
+  zero[4] = '\0';
+  const std::string endless = error_of(write(folder, "zero.hdr", header + line0 + zero));
+  EXPECT_NE(endless.find("scan line 1, channel 0, byte " + std::to_string(header.size() + 16) +
+                         ": a dump of 0 bytes"),
+            std::string::npos)
+      << endless;
+  // 4096 x 4096 (192 MB of floats, inside the budget) from one run of 127 pixels: refused before
+  // stb allocates anything.
+  const std::string big = error_of(write(folder, "big.hdr",
+                                         "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4096 +X 4096\n" +
+                                             std::string("\x02\x02\x10\x00\xff\x80", 6)));
+  EXPECT_NE(big.find("truncated (scan line 0 of 4096"), std::string::npos) << big;
+}
+
 std::string write_exr(const ScratchFolder& folder, const std::string& name, int w, int h,
                       Imf::PixelType type, Imf::Compression compression,
                       const std::vector<float>& rgb) {
