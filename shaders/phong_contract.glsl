@@ -8,7 +8,7 @@
 //
 // What a program must define BEFORE this code (an exported shader,
 // editor/model/export/glsl_export.h, defines all of them as constants):
-//   GLOSS_LIGHT_COUNT                  a #define, number of point lights (0 allowed)
+//   GLOSS_LIGHT_COUNT                  a #define, number of lights (0 allowed)
 //   vec3 gloss_ka, gloss_kd, gloss_ks, gloss_ke   material constants ("The terms and the total")
 //   float gloss_alpha                  shininess exponent, >= 0
 //   vec3 gloss_scene_ambient           A_scene
@@ -17,10 +17,22 @@
 //   and, when GLOSS_LIGHT_COUNT > 0, arrays of GLOSS_LIGHT_COUNT entries:
 //   vec3 gloss_light_position[], gloss_light_ambient[], gloss_light_diffuse[],
 //        gloss_light_specular[], gloss_light_attenuation[] (c0, c1, c2)
+//   vec3 gloss_light_direction[]       unit, world space, the way the light travels
+//                                      (directional and spot lights; a headlight's already
+//                                      turned into the camera's frame)
+//   vec4 gloss_light_cone[]            (type: GLOSS_POINT, GLOSS_DIRECTIONAL or GLOSS_SPOT,
+//                                      1 - cos(cutoff), 1 - cos(min(inner, cutoff)), exponent),
+//                                      the cosines as 1 - cos so that a cone of 0.01 degrees
+//                                      (cos = 1 - 1.5e-8, 1 in float) keeps its size
 //   float gloss_visibility(int light, vec3 p, vec3 n_g)   vis: 1 lit, 0 shadowed
+//   GLOSS_ENVIRONMENT                  a #define, 1 with an environment light (environment.glsl
+//                                      included before this file and its inputs defined)
 
 #define GLOSS_PHONG 0
 #define GLOSS_BLINN_PHONG 1
+#define GLOSS_POINT 0
+#define GLOSS_DIRECTIONAL 1
+#define GLOSS_SPOT 2
 
 // What one point light contributes at one point, before material constants and light colours
 // (shading.h, LightFactors): diffuse = kd Ld diffuse_weight, specular = ks Ls spec_weight c^alpha.
@@ -55,27 +67,75 @@ void gloss_two_sided(inout vec3 n_g, inout vec3 n, vec3 v) {
   }
 }
 
-// "What one point light adds", the geometric part (shading.h, light_factors). p: point, n: unit
-// shading normal, v: unit direction to the eye, both already on the viewer's side; vis 1 or 0.
-// A light exactly at p (d = 0) or with ndl <= 0 adds nothing: all factors 0.
-GlossLightFactors gloss_light_factors(vec3 p, vec3 n, vec3 v, vec3 light_position,
-                                      vec3 attenuation_coeffs, float vis) {
+// The geometric factors of light arriving along unit l with weight att (times the spot factor),
+// at a point with unit shading normal n and unit v, both on the viewer's side (shading.h,
+// factors_along). ndl <= 0: all factors 0.
+GlossLightFactors gloss_factors_along(vec3 n, vec3 v, vec3 l, float att, float vis) {
   GlossLightFactors f = GlossLightFactors(0.0, 0.0, 0.0, 0.0);
-  vec3 to_light = light_position - p;
-  float d = length(to_light);  // d = |P_i - p|
-  if (!(d > 0.0)) return f;    // a light on the surface adds neither diffuse nor specular
-  vec3 l = to_light / d;       // l = (P_i - p) / d
   float ndl = dot(n, l);       // ndl = dot(n, l)
   if (!(ndl > 0.0)) return f;  // ndl <= 0: neither diffuse nor specular
-  float att = gloss_attenuation(attenuation_coeffs, d);
-  f.spec_weight = att * vis;                        // specular_i carries att * vis
-  f.diffuse_weight = ndl * f.spec_weight;           // diffuse_i = kd Ld ndl att vis
+  f.spec_weight = att * vis;                        // specular_i carries att * spot * vis
+  f.diffuse_weight = ndl * f.spec_weight;           // diffuse_i = kd Ld ndl att spot vis
   f.cos_phong = dot(2.0 * ndl * n - l, v);          // Phong: R . V, R = 2 ndl n - l
   vec3 h = l + v;                                   // l = -v leaves no half vector (shading.h)
   float h_len = length(h);
   f.cos_blinn = h_len > 0.0 ? dot(n, h) / h_len : 0.0;  // Blinn-Phong: N . normalize(l + v)
   return f;
 }
+
+// "What one point light adds", the geometric part (shading.h, light_factors). p: point, n: unit
+// shading normal, v: unit direction to the eye, both already on the viewer's side; vis 1 or 0.
+// A light exactly at p (d = 0) or with ndl <= 0 adds nothing: all factors 0.
+GlossLightFactors gloss_light_factors(vec3 p, vec3 n, vec3 v, vec3 light_position,
+                                      vec3 attenuation_coeffs, float vis) {
+  vec3 to_light = light_position - p;
+  float d = length(to_light);  // d = |P_i - p|
+  if (!(d > 0.0)) return GlossLightFactors(0.0, 0.0, 0.0, 0.0);  // a light on the surface
+  return gloss_factors_along(n, v, to_light / d, gloss_attenuation(attenuation_coeffs, d), vis);
+}
+
+// log(1 - x) for 0 <= x <= 2, accurate where 1 - x rounds to 1 in float (a series below 1e-3).
+float gloss_log_one_minus(float x) {
+  return x < 1e-3 ? -x * (1.0 + x * (0.5 + x / 3.0)) : log(max(1.0 - x, 0.0));
+}
+
+// "Light types", the spot factor: cos_t = dot(-l, s) against the cone (1 - cos values, as
+// gloss_light_cone gives them): 0 outside, else cos_t^exponent times the smooth edge's
+// clamp(...)^2 (light_source.h, spot_factor). 1 - cos_t is half the squared chord between the
+// unit vectors -l and s, exact in float for the narrowest cones.
+float gloss_spot_factor(vec3 l, vec3 s, vec4 cone) {
+  vec3 chord = -l - s;
+  float vers_t = 0.5 * dot(chord, chord);  // 1 - cos_t
+  if (vers_t > cone.y) return 0.0;         // cos_t < cos(cutoff): outside the cone
+  // cos_t^exponent (x^0 = 1); cos_t >= cos(cutoff) >= 0 here.
+  float spot = cone.w == 0.0 ? 1.0 : exp(cone.w * gloss_log_one_minus(vers_t));
+  float width = cone.y - cone.z;  // cos(inner) - cos(cutoff)
+  if (width > 1e-6) {
+    float e = clamp((cone.y - vers_t) / width, 0.0, 1.0);  // (cos_t - cos(cutoff)) / width
+    spot *= e * e;
+  }
+  return spot;
+}
+
+#if GLOSS_LIGHT_COUNT > 0
+// Light i of any type at p (light_source.h, source_factors): a point light as above; a
+// directional light from l = -D everywhere with att = 1; a spot as a point light times the
+// spot factor.
+GlossLightFactors gloss_light(int i, vec3 p, vec3 n, vec3 v, float vis) {
+  vec4 cone = gloss_light_cone[i];
+  int type = int(cone.x + 0.5);
+  if (type == GLOSS_DIRECTIONAL) {
+    return gloss_factors_along(n, v, -gloss_light_direction[i], 1.0, vis);
+  }
+  vec3 to_light = gloss_light_position[i] - p;
+  float d = length(to_light);
+  if (!(d > 0.0)) return GlossLightFactors(0.0, 0.0, 0.0, 0.0);  // a light on the surface
+  vec3 l = to_light / d;
+  float att = gloss_attenuation(gloss_light_attenuation[i], d);
+  if (type == GLOSS_SPOT) att *= gloss_spot_factor(l, gloss_light_direction[i], cone);
+  return gloss_factors_along(n, v, l, att, vis);
+}
+#endif
 
 // "The terms and the total": c^alpha for c > 0, 0 for c <= 0; at alpha = 0, 1 wherever c > 0
 // (the specular term is continuous as alpha goes to 0). c above 1 comes from rounding only.
@@ -114,16 +174,23 @@ GlossTerms gloss_shade(vec3 p, vec3 n_g, vec3 n, vec3 eye) {
   for (int i = 0; i < GLOSS_LIGHT_COUNT; ++i) {
     ambient_light += gloss_light_ambient[i];  // A_scene + sum_i La_i: not attenuated, not shadowed
     float vis = gloss_visibility(i, p, n_g);
-    GlossLightFactors f = gloss_light_factors(p, n, v, gloss_light_position[i],
-                                              gloss_light_attenuation[i], vis);
+    GlossLightFactors f = gloss_light(i, p, n, v, vis);
     float c = gloss_model_cosine(f, gloss_model);
-    // diffuse_i = kd * Ld_i * ndl * att * vis
+    // diffuse_i = kd * Ld_i * ndl * att * spot * vis
     t.diffuse += gloss_kd * gloss_light_diffuse[i] * f.diffuse_weight;
-    // specular_i = ks * Ls_i * c^alpha * att * vis (times the normalisation when switched on)
+    // specular_i = ks * Ls_i * c^alpha * att * spot * vis (times the normalisation when on)
     t.specular += gloss_ks * gloss_light_specular[i] * (f.spec_weight *
                                                         gloss_specular_power(c, gloss_alpha) *
                                                         norm);
   }
+#endif
+#if GLOSS_ENVIRONMENT
+  // The environment's fast path (environment.glsl): kd E(n) / pi and ks times the lobe's mean
+  // about the mirror direction, at the intensity (no energy normalisation: the lobe is normalised).
+  vec3 mirror = normalize(2.0 * dot(n, v) * n - v);
+  float env_alpha = gloss_model == GLOSS_PHONG ? gloss_alpha : 0.25 * gloss_alpha;
+  t.diffuse += gloss_kd * (gloss_env_diffuse(n) * gloss_env_intensity);
+  t.specular += gloss_ks * (gloss_env_specular(env_alpha, mirror) * gloss_env_intensity);
 #endif
   t.ambient = gloss_ka * ambient_light;  // ambient = ka * (A_scene + sum_i La_i)
   // total = emissive + ambient + sum_i (diffuse_i + specular_i), in total.h's fixed order

@@ -15,15 +15,28 @@ uniform vec3 gloss_light_ambient[GLOSS_LIGHT_COUNT];
 uniform vec3 gloss_light_diffuse[GLOSS_LIGHT_COUNT];
 uniform vec3 gloss_light_specular[GLOSS_LIGHT_COUNT];
 uniform vec3 gloss_light_attenuation[GLOSS_LIGHT_COUNT];
+uniform vec3 gloss_light_direction[GLOSS_LIGHT_COUNT];
+uniform vec4 gloss_light_cone[GLOSS_LIGHT_COUNT];
+#endif
+#if GLOSS_ENVIRONMENT
+// environment.glsl's inputs: the levels' atlas (texture unit 1), their places in it (12 levels
+// and the map itself), the rotation's (cos, sin) and the intensity.
+uniform sampler2D gloss_env_atlas;
+uniform ivec4 gloss_env_level[13];
+uniform vec2 gloss_env_rotation;
+uniform float gloss_env_intensity;
 #endif
 
 // The view this pass draws from: the camera (docs/spec/shading.md, "The camera": forward f,
-// right r, up u, and the image-plane scales tan(fov_y / 2) W / H and tan(fov_y / 2)), or one
-// face of a light's cube (scales 1: a 90 degree square frustum).
+// right r, up u, and the image-plane scales tan(fov_y / 2) W / H and tan(fov_y / 2)), one
+// face of a light's cube (scales 1: a 90 degree square frustum), a spot's square frustum
+// (scales tan(cutoff)), or, orthographic, a directional light's box across the scene (scales:
+// half its width and height in world units; the origin a corner plane's centre before it).
 uniform vec3 gloss_view_origin;
 uniform vec3 gloss_view_forward, gloss_view_right, gloss_view_up;
 uniform vec2 gloss_view_scale;
 uniform vec2 gloss_view_depth;  // (A, B): clip z = A w + B maps w = near..far to -1..1
+uniform bool gloss_view_ortho;  // orthographic: no division by w
 
 // Clip coordinates of world point p in the pass's view. w is the distance along forward, so the
 // rasterizer's perspective division gives the camera formula's (sx, sy) exactly: a pixel centre
@@ -34,7 +47,15 @@ vec4 gloss_project(vec3 p) {
   float w = dot(d, gloss_view_forward);
   return vec4(dot(d, gloss_view_right) / gloss_view_scale.x,
               -dot(d, gloss_view_up) / gloss_view_scale.y,
-              gloss_view_depth.x * w + gloss_view_depth.y, w);
+              gloss_view_depth.x * w + gloss_view_depth.y, gloss_view_ortho ? 1.0 : w);
+}
+
+// The distance a shadow pass stores for world point p: from the light for a perspective view
+// (a cube face, a spot), along the light's way from the box's front plane for an orthographic
+// one (a directional light).
+float gloss_view_distance(vec3 p) {
+  vec3 d = p - gloss_view_origin;
+  return gloss_view_ortho ? dot(d, gloss_view_forward) : length(d);
 }
 
 // Window depth (glDepthRange 0..1) of world point p: what gloss_project gives it after the
@@ -82,36 +103,79 @@ int gloss_cube_face(vec3 d, out vec2 right_up, out float major) {
   return d.z >= 0.0 ? 4 : 5;
 }
 
+#define GLOSS_SHADOW_CUBE 0
+#define GLOSS_SHADOW_PERSPECTIVE 1
+#define GLOSS_SHADOW_ORTHOGRAPHIC 2
+
 #if GLOSS_SHADOWS && GLOSS_LIGHT_COUNT > 0
-// Layer 6 i + k holds face k of light i: per texel the distance from the light to the nearest
-// surface (the shadow pass writes it), world units.
+// The layers of light i's maps (shadow_maps.h): six cube faces from gloss_shadow_layout[i].x
+// for a point light and a spot wider than 60 degrees, or one map: a spot's square frustum along
+// its axis, a directional light's orthographic box across the scene. Per texel the distance the
+// shadow pass stored (gloss_view_distance), world units.
 uniform sampler2DArray gloss_shadow_maps;
-uniform float gloss_shadow_size;  // texels per face side
+uniform float gloss_shadow_size;  // texels per map side
 uniform float gloss_shadow_bias;  // texels' worth of depth (raster_settings.h)
+uniform ivec2 gloss_shadow_layout[GLOSS_LIGHT_COUNT];  // (first layer, GLOSS_SHADOW_* kind)
+// The single map's view (raster_view.h, RasterView); unused for cubes.
+uniform vec3 gloss_shadow_origin[GLOSS_LIGHT_COUNT];
+uniform vec3 gloss_shadow_forward[GLOSS_LIGHT_COUNT];
+uniform vec3 gloss_shadow_right[GLOSS_LIGHT_COUNT];
+uniform vec3 gloss_shadow_up[GLOSS_LIGHT_COUNT];
+uniform vec2 gloss_shadow_scale[GLOSS_LIGHT_COUNT];
 
 // The contract's vis (shadow rays replaced by a shadow map: docs/spec/shading.md, "A raster
 // (GLSL) path"): 1 when p is no farther from light i than the nearest surface the map saw in
-// p's direction, plus the bias. A texel spans about 2 dist / size world units across; a surface
-// at angle theta to the light changes depth by tan(theta) of that across it, so the bias grows
+// p's direction, plus the bias. A texel spans `texel` world units across at p; a surface at
+// angle theta to the light changes depth by tan(theta) of that across it, so the bias grows
 // with the slope (capped at 10: at grazing light the diffuse term is near 0 anyway).
 float gloss_visibility(int light, vec3 p, vec3 n_g) {
-  vec3 d = p - gloss_light_position[light];
-  float dist = length(d);
-  vec2 right_up;
-  float major;
-  int face = gloss_cube_face(d, right_up, major);
-  vec2 uv = right_up / major * 0.5 + 0.5;
+  ivec2 layout_i = gloss_shadow_layout[light];
+  int kind = layout_i.y;
+  vec2 uv;
+  int layer = layout_i.x;
+  float dist, texel;
+  vec3 towards;  // from the light to p, unit (the slope of the bias)
+  if (kind == GLOSS_SHADOW_CUBE) {
+    vec3 d = p - gloss_light_position[light];
+    dist = length(d);
+    // d = 0 (a light on the surface) has no direction to look up: lit, as the ray tracer's
+    // shadow segment of length 0 finds nothing.
+    if (!(dist > 0.0)) return 1.0;
+    vec2 right_up;
+    float major;
+    layer += gloss_cube_face(d, right_up, major);
+    uv = right_up / major * 0.5 + 0.5;
+    texel = 2.0 * dist / gloss_shadow_size;
+    towards = d / dist;
+  } else {
+    vec3 d = p - gloss_shadow_origin[light];
+    float w = dot(d, gloss_shadow_forward[light]);
+    vec2 across = vec2(dot(d, gloss_shadow_right[light]), dot(d, gloss_shadow_up[light]));
+    vec2 scale = gloss_shadow_scale[light];
+    if (kind == GLOSS_SHADOW_ORTHOGRAPHIC) {
+      uv = across / scale * 0.5 + 0.5;
+      dist = w;
+      texel = 2.0 * max(scale.x, scale.y) / gloss_shadow_size;
+      towards = gloss_shadow_forward[light];
+    } else {
+      // Behind the spot or outside its frustum the spot factor is 0 (nothing to shadow).
+      if (!(w > 0.0)) return 1.0;
+      uv = across / (w * scale) * 0.5 + 0.5;
+      dist = length(d);
+      texel = 2.0 * w * max(scale.x, scale.y) / gloss_shadow_size;
+      towards = d / dist;
+    }
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
+  }
   int size = int(gloss_shadow_size);
-  ivec2 texel = clamp(ivec2(floor(uv * gloss_shadow_size)), ivec2(0), ivec2(size - 1));
-  // The pass drew with y negated (gloss_project): row 0 is the face's top.
-  texel.y = size - 1 - texel.y;
-  float stored = texelFetch(gloss_shadow_maps, ivec3(texel, 6 * light + face), 0).r;
-  float cos_theta = abs(dot(n_g, d)) / dist;
+  ivec2 at = clamp(ivec2(floor(uv * gloss_shadow_size)), ivec2(0), ivec2(size - 1));
+  // The pass drew with y negated (gloss_project): row 0 is the map's top.
+  at.y = size - 1 - at.y;
+  float stored = texelFetch(gloss_shadow_maps, ivec3(at, layer), 0).r;
+  float cos_theta = abs(dot(n_g, towards));
   float tan_theta = sqrt(max(1.0 - cos_theta * cos_theta, 0.0)) / max(cos_theta, 1e-6);
-  float bias = gloss_shadow_bias * (2.0 * dist / gloss_shadow_size) * min(1.0 + tan_theta, 10.0);
-  // d = 0 (a light on the surface) has no direction to look up: lit, as the ray tracer's
-  // shadow segment of length 0 finds nothing.
-  return (dist <= stored + bias || !(dist > 0.0)) ? 1.0 : 0.0;
+  float bias = gloss_shadow_bias * texel * min(1.0 + tan_theta, 10.0);
+  return dist <= stored + bias ? 1.0 : 0.0;
 }
 #else
 float gloss_visibility(int light, vec3 p, vec3 n_g) {

@@ -6,7 +6,7 @@
 in vec3 gloss_position;
 layout(location = 0) out float gloss_distance;
 void main() {
-  gloss_distance = length(gloss_position - gloss_view_origin);
+  gloss_distance = gloss_view_distance(gloss_position);
 }
 #else
 layout(location = 0) out vec4 gloss_out_total;
@@ -19,6 +19,9 @@ in vec3 gloss_position;
 flat in vec3 gloss_face_normal;
 #if GLOSS_LIGHT_COUNT > 0
 in vec2 gloss_light_weights[GLOSS_LIGHT_COUNT];
+#endif
+#if GLOSS_ENVIRONMENT
+in vec3 gloss_env_diffuse_weight, gloss_env_specular_weight;
 #endif
 void main() {
   // The terms of phong_contract.glsl's gloss_shade with the interpolated weights in place of the
@@ -37,6 +40,10 @@ void main() {
     diffuse += gloss_kd * gloss_light_diffuse[i] * (w.x * vis);
     specular += gloss_ks * gloss_light_specular[i] * (w.y * vis * norm);
   }
+#endif
+#if GLOSS_ENVIRONMENT
+  diffuse += gloss_kd * gloss_env_diffuse_weight;
+  specular += gloss_ks * gloss_env_specular_weight;
 #endif
   vec3 ambient = gloss_ka * ambient_light;
   gloss_out_total = vec4(((gloss_ke + ambient) + diffuse) + specular, 1.0);

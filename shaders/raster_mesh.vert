@@ -24,6 +24,9 @@ flat out vec3 gloss_face_normal;
 #if GLOSS_LIGHT_COUNT > 0
 out vec2 gloss_light_weights[GLOSS_LIGHT_COUNT];  // (diffuse, specular) of each light
 #endif
+#if GLOSS_ENVIRONMENT
+out vec3 gloss_env_diffuse_weight, gloss_env_specular_weight;  // at the corner, before kd, ks
+#endif
 void main() {
   vec3 p = gloss_in_position;
   vec3 n_g = gloss_in_face_normal;
@@ -32,12 +35,18 @@ void main() {
   gloss_two_sided(n_g, n, v);
 #if GLOSS_LIGHT_COUNT > 0
   for (int i = 0; i < GLOSS_LIGHT_COUNT; ++i) {
-    GlossLightFactors f = gloss_light_factors(p, n, v, gloss_light_position[i],
-                                              gloss_light_attenuation[i], 1.0);
+    GlossLightFactors f = gloss_light(i, p, n, v, 1.0);
     float c = gloss_model_cosine(f, gloss_model);
     gloss_light_weights[i] =
         vec2(f.diffuse_weight, f.spec_weight * gloss_specular_power(c, gloss_alpha));
   }
+#endif
+#if GLOSS_ENVIRONMENT
+  // The environment's fast path at the corner, as gloss_shade takes it per pixel.
+  gloss_env_diffuse_weight = gloss_env_diffuse(n) * gloss_env_intensity;
+  float env_alpha = gloss_model == GLOSS_PHONG ? gloss_alpha : 0.25 * gloss_alpha;
+  gloss_env_specular_weight =
+      gloss_env_specular(env_alpha, normalize(2.0 * dot(n, v) * n - v)) * gloss_env_intensity;
 #endif
   gloss_position = p;
   gloss_face_normal = gloss_in_face_normal;

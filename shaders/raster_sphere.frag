@@ -10,11 +10,18 @@ uniform float gloss_sphere_radius;
 #if defined(GLOSS_SHADOW_PASS)
 layout(location = 0) out float gloss_distance;
 void main() {
+  // From the light through the fragment; orthographic: along the light's way from where the
+  // fragment's parallel ray crosses the view's front plane.
+  vec3 o = gloss_view_origin;
   vec3 d = normalize(gloss_position - gloss_view_origin);
-  float t = gloss_sphere_t(gloss_view_origin, d, gloss_sphere_centre, gloss_sphere_radius);
+  if (gloss_view_ortho) {
+    d = gloss_view_forward;
+    o = gloss_position - dot(gloss_position - gloss_view_origin, d) * d;
+  }
+  float t = gloss_sphere_t(o, d, gloss_sphere_centre, gloss_sphere_radius);
   if (t < 0.0) discard;
-  gl_FragDepth = gloss_window_depth(gloss_view_origin + t * d);
-  gloss_distance = t;
+  gl_FragDepth = gloss_window_depth(o + t * d);
+  gloss_distance = gloss_view_distance(o + t * d);
 }
 #else
 uniform vec2 gloss_image_size;  // W, H in pixels

@@ -42,14 +42,19 @@ find_library(GLOSS_LIBMVEC mvec REQUIRED)
 add_library(gloss_libmvec INTERFACE)
 target_link_libraries(gloss_libmvec INTERFACE ${GLOSS_LIBMVEC})
 
+# Map images (io only): Radiance HDR through stb_image (libstb-dev's precompiled libstb, 2.27),
+# OpenEXR through the OpenEXR library (libopenexr-dev 3.1.5; Blender's studio lights are
+# DWAB-compressed, which smaller readers cannot decode).
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(STB REQUIRED IMPORTED_TARGET GLOBAL stb)
+find_package(OpenEXR 3 REQUIRED)
+
 if(GLOSS_BUILD_EDITOR)
   # The window (editor/ui). Debian 12: 3.3.8.
   find_package(glfw3 3.3 REQUIRED)
-  find_package(PkgConfig REQUIRED)
   # Dear ImGui 1.86 (editor/ui). Debian's libimgui.a already holds the GLFW and OpenGL3
   # backends, and needs libstb at link time.
   pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET GLOBAL imgui)
-  pkg_check_modules(STB REQUIRED IMPORTED_TARGET GLOBAL stb)
 
   # The OpenGL 3.3 core loader (editor/gl), generated at build time by Debian's python3-glad
   # from its offline copy of the GL registry. --reproducible keeps it offline; naming the one

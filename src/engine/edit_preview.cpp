@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "engine/environment/environment_stage.h"
 #include "engine/trace/single_sample_pass.h"
 
 namespace gloss {
@@ -48,9 +49,12 @@ int EditPreview::shift(ChangeClass change, double budget_ms, int max_shift, doub
 bool EditPreview::render(const RenderContext& ctx, int width, int height, TermImages& images,
                          bool terms) {
   reset_sample_cache(m_cache, *ctx.scene, width, height, 1);
-  if (terms) {
+  // The environment's sky comes after the factors (combine_terms adds it).
+  const bool sky = ctx.plan.sky && ctx.scene->environment.as_background;
+  if (terms || sky) {
     if (!trace_single_sample(m_cache, ctx, m_factors)) return false;
-    combine_terms(m_factors, ctx, images, true);
+    if (ctx.plan.sky && !environment_sky(m_cache, ctx, m_factors)) return false;
+    combine_terms(m_factors, ctx, images, terms);
     return true;
   }
   return trace_single_sample(m_cache, ctx, m_factors, &images.total);

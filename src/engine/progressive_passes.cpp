@@ -3,6 +3,7 @@
 // invalidated, adaptive refinement, or more samples.
 #include <algorithm>
 
+#include "engine/environment/environment_stage.h"
 #include "engine/progressive_state.h"
 #include "engine/trace/single_sample_pass.h"
 
@@ -61,11 +62,23 @@ bool ProgressiveRenderer::Impl::step() {
   }
   const std::shared_ptr<RenderedFrame> frame =
       FramePool::make(frame_pool, cache.width, cache.height, worker_terms);
-  Image* const total = worker_terms ? nullptr : &frame->images.total;
+  // The first pass makes the total itself unless a term view wants the terms or the
+  // environment is the background (its sky comes after the factors: combine_terms adds it).
+  const bool sky_shown = ctx.plan.sky && scene->environment.as_background;
+  Image* const total = worker_terms || sky_shown ? nullptr : &frame->images.total;
+  // The environment's estimates belong to the cache's samples and slots as they are: an edit
+  // that rewrites the slots (environment, light) or the samples (full) starts them again, from
+  // the fast path. Edits below keep them (a material edit only recombines).
+  if (dirty >= ChangeClass::environment) environment.reset();
+  const int environment_steps =
+      dirty == ChangeClass::none && samples_done() ? next_environment_steps(ctx, environment) : 0;
   if (restart) {
     redo = ChangeClass::full;
     ok = trace_single_sample(cache, ctx, factors, total);
     factors_done = total_done = true;
+  } else if (dirty == ChangeClass::environment) {
+    redo = ChangeClass::environment;  // its factors from the cached hits, no rays
+    ok = recompute_environment_factors(cache, ctx);
   } else if (dirty == ChangeClass::light) {
     redo = ChangeClass::light;
     // One plane (one sample per pixel, or adaptive sampling's centres): light and pixel factors
@@ -89,9 +102,21 @@ bool ProgressiveRenderer::Impl::step() {
       level = previous_level;
       reclaim_planes(cache, std::move(traced));
     }
+  } else if (environment_steps > 0) {
+    redo = ChangeClass::environment;  // cancelled: back to the fast path, estimates anew
+    ok = add_environment_steps(cache, ctx, environment, environment_steps);
   } else if (dirty == ChangeClass::none && adaptive()) {
     redo = ChangeClass::exponent;  // cancelled: the factors are rebuilt from the samples
+    const std::vector<std::uint32_t> placed = cache.refined.pixels;
     ok = refine(total, total_done);
+    // A new placement of the refined samples (re-chosen after an edit): the environment's
+    // estimates start again, their sums being per refined entry and new entries holding the
+    // fast path. (Remapping the kept entries' sums would spare that: not done yet.) The centre
+    // image then no longer holds the other pixels' totals: the frame's total is made whole.
+    if (cache.refined.pixels != placed) {
+      environment.reset();
+      total_done = false;
+    }
     factors_done = true;
   } else if (dirty == ChangeClass::none) {
     // Double the samples each pass: 1, 2, 4, 8 ... up to the target.
@@ -101,6 +126,10 @@ bool ProgressiveRenderer::Impl::step() {
   if (ok && dirty != ChangeClass::shade && !factors_done) {
     redo = std::max(redo, ChangeClass::exponent);
     ok = adaptive_state.build_factors(cache, ctx, factors);
+  }
+  // The sky follows the camera, the samples and the environment's map and rotation.
+  if (ok && ctx.plan.sky && dirty != ChangeClass::shade && dirty != ChangeClass::exponent) {
+    ok = environment_sky(cache, ctx, factors);
   }
   ctx.rays = nullptr;
   if (!ok) {

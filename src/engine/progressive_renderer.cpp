@@ -64,9 +64,7 @@ bool ProgressiveRenderer::Impl::take_inbox() {
     embree = std::make_unique<EmbreeScene>(*next);
   }
   scene = std::move(next);
-  ctx.scene = scene.get();
-  ctx.embree = embree.get();
-  ctx.plan = make_render_plan(*scene);
+  bind_scene(ctx, *scene, *embree);
   ctx.cancel = &cancel;
   dirty = std::max(dirty, change);
   return true;

@@ -15,6 +15,7 @@
 
 #include "engine/adaptive_progression.h"
 #include "engine/edit_preview.h"
+#include "engine/environment/environment_estimate.h"
 #include "engine/frame_pool.h"
 #include "engine/progressive_renderer.h"
 #include "engine/render_context.h"
@@ -62,6 +63,7 @@ struct ProgressiveRenderer::Impl {
   RenderContext ctx;
   SampleCache cache;
   PixelFactors factors;
+  EnvironmentEstimates environment;  // the environment's exact terms, pass by pass
   std::shared_ptr<FramePool> frame_pool = std::make_shared<FramePool>();
   int level = 0;                  // 0 .. preview_levels - 1: coarse passes; preview_levels: full
   double last_full_pass_ms = -1;  // the last full-resolution 1-spp pass (preview_budget_ms)
@@ -102,10 +104,15 @@ struct ProgressiveRenderer::Impl {
   int factors_spp() const {
     return factors.refined_pixel.empty() ? factors.samples : cache.refined.spp;
   }
-  bool converged_state() const {
-    if (dirty != ChangeClass::none || level != options.preview_levels) return false;
+  // Every sample traced at full resolution (the environment's passes come after).
+  bool samples_done() const {
+    if (level != options.preview_levels) return false;
     if (!adaptive()) return cache.samples() >= scene->render.spp;
     return adaptive_state.current(cache, scene->render.spp);
+  }
+  bool converged_state() const {
+    return dirty == ChangeClass::none && samples_done() &&
+           next_environment_steps(ctx, environment) == 0;
   }
   // adaptive_progression.h's refine(), from the published centre image when there is one. Given
   // total (the frame's, when only the total is shown) and that image, also makes the total from

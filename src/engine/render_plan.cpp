@@ -48,11 +48,15 @@ RenderPlan make_render_plan(const Scene& scene, bool full) {
   bool any_ld = false, any_ls = false;
   glm::vec3 ambient_light = scene.ambient;
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-    const PointLight& light = scene.lights[i];
+    const Light& light = scene.lights[i];
     ambient_light += light.ambient;
     if (!full && !nonzero(light.diffuse) && !nonzero(light.specular)) continue;
     plan.lights.push_back(static_cast<int>(i));
-    plan.unit_attenuation.push_back(!full && light.attenuation == glm::vec3(1.0f, 0.0f, 0.0f));
+    // A directional light has no attenuation: its factors take the unit copy of the loops.
+    plan.unit_attenuation.push_back(light.type == LightType::directional ||
+                                    (!full && light.attenuation == glm::vec3(1.0f, 0.0f, 0.0f)));
+    plan.sources.push_back(make_light_source<float>(light, scene.camera));
+    plan.sources.back().unit_attenuation = plan.unit_attenuation.back();
     any_ld = any_ld || nonzero(light.diffuse);
     any_ls = any_ls || nonzero(light.specular);
   }
@@ -64,18 +68,28 @@ RenderPlan make_render_plan(const Scene& scene, bool full) {
     any_ks = any_ks || nonzero(m.specular);
   }
   plan.spheres = has_object_type(scene, ObjectType::sphere);
+  const bool environment = scene.environment.present();
+  plan.sky = environment;
   if (full) {
     plan.shadow_rays = scene.render.shadows;
     plan.emissive = plan.ambient = plan.diffuse = plan.specular = true;
+    plan.environment = environment;
     return plan;
   }
   plan.emissive = any_ke;
   plan.ambient = any_ka && nonzero(ambient_light);
   plan.diffuse = any_kd && any_ld;
   plan.specular = any_ks && any_ls;
-  if (!plan.diffuse && !plan.specular) {  // lights then only feed the ambient sum
+  // An environment at intensity 0 is still planned: its intensity is a recombination constant
+  // (a `shade` edit), so turning it up again traces nothing.
+  plan.environment = environment && (any_kd || any_ks);
+  const bool lights_lit = plan.diffuse || plan.specular;
+  plan.diffuse = plan.diffuse || (plan.environment && any_kd);
+  plan.specular = plan.specular || (plan.environment && any_ks);
+  if (!lights_lit) {  // lights then only feed the ambient sum
     plan.lights.clear();
     plan.unit_attenuation.clear();
+    plan.sources.clear();
   }
   plan.shadow_rays = scene.render.shadows && !plan.lights.empty() && can_cast_shadows(scene);
   return plan;

@@ -14,16 +14,29 @@
 
 namespace gloss {
 
-// One point light's factors at the pixel's hit.
+// One light's factors at the pixel's hit.
 struct LightBreakdown {
-  double distance = 0.0;  // d = |P_i - p|, world units
+  LightType type = LightType::point;
+  double distance = 0.0;  // d = |P_i - p|, world units (0 for a directional light: none)
   double ndl = 0.0;       // dot(n, l) before the ndl <= 0 rule (0 when d = 0)
   double cosine = 0.0;    // c of the scene's model (R . V or N . H); 0 where the light adds nothing
   double cosine_power = 0.0;  // c^alpha; 0 where c <= 0 or the light adds nothing
-  double attenuation = 1.0;   // 1 / (c0 + c1 d + c2 d^2)
+  double attenuation = 1.0;   // 1 / (c0 + c1 d + c2 d^2); 1 for a directional light
+  double spot = 1.0;          // the cone's factor of a spot (0 outside the cone); 1 otherwise
   double visibility = 1.0;    // 0 when shadows are on and the segment to the light is blocked
   glm::dvec3 diffuse{0.0};    // kd Ld ndl att vis, 0 when ndl <= 0
   glm::dvec3 specular{0.0};   // ks Ls c^alpha att vis (times the energy factor), 0 when ndl <= 0
+};
+
+// The environment's terms at the pixel's hit (reference_environment.h): exact integrals with
+// error bounds when shadows are off, estimates with standard errors when they are on.
+struct EnvironmentBreakdown {
+  bool present = false;   // the scene has an environment and the pixel a hit
+  bool estimated = false;  // shadows on: estimates (error = standard error) not bounds
+  glm::dvec3 diffuse{0.0}, specular{0.0};            // kd (1/pi) int L cos vis, ks lobe mean
+  glm::dvec3 diffuse_error{0.0}, specular_error{0.0};
+  glm::dvec3 unshadowed_diffuse{0.0}, unshadowed_specular{0.0};  // the same without vis
+  double visibility = 1.0;  // the visible share of the irradiance (1 with shadows off)
 };
 
 struct PixelBreakdown {
@@ -43,6 +56,7 @@ struct PixelBreakdown {
   glm::dvec3 emissive{0.0}, ambient{0.0}, diffuse{0.0}, specular{0.0};
   glm::dvec3 total{0.0};  // shading/total.h form_total of the four (background on a miss)
   std::vector<LightBreakdown> lights;  // one per scene light, in order
+  EnvironmentBreakdown environment;
 };
 
 // Answers for many pixels of one scene (the editor's hover) without rebuilding the ray-tracing

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "base/image.h"
+#include "reference/reference_environment.h"
 #include "scene/render_settings.h"
 #include "scene/scene.h"
 
@@ -26,16 +27,19 @@ struct ReferenceOptions {
   // the interpolation alone (the shadows knob measures shadows). Spheres stay per pixel.
   bool gouraud = false;
   const std::atomic<bool>* cancel = nullptr;  // when it turns true the images stay incomplete
-  // When set, resized to width * height and filled with 1 for pixels at a silhouette or shadow
-  // edge, 0 elsewhere: pixels whose samples, or whose 8 neighbours' first samples, differ in the
-  // object hit or in a shadow test, or, within one mesh, lie on another part of it (off the
-  // tangent plane by more than 14.5 degrees) or, for flat meshes, on another face. These are
-  // the pixels where a hit or a shadow test can flip between precisions (spec: counted and
-  // reported, not hidden).
+  // When set, resized to width * height and filled with 1 for pixels at a silhouette, shadow or
+  // hard cone edge, 0 elsewhere: pixels whose samples, or whose 8 neighbours' first samples,
+  // differ in the object hit, in a shadow test or in lying inside a hard-edged spot's cone, or,
+  // within one mesh, lie on another part of it (off the tangent plane by more than 14.5
+  // degrees) or, for flat meshes, on another face. These are the pixels where a hit, a shadow
+  // test or a cone test can flip between precisions (spec: counted and reported, not hidden).
   std::vector<std::uint8_t>* edges = nullptr;
   // Adaptive sampling's placement (engine RenderOptions::refined): when set (width * height
   // entries), pixels marked 1 take spp stratified samples and the others one at the centre.
   const std::vector<std::uint8_t>* refined = nullptr;
+  // The environment light's integrals: their error bound with shadows off, directions per hit
+  // with shadows on (reference_environment.h).
+  ReferenceEnvironmentOptions environment;
   // Materials that carry a physical reference (Material::reference) are shaded by it instead of
   // by Phong (docs/spec/physical-reference.md): each light adds pi f(l, v) Ld ndl att vis, in
   // double whatever T is, the microfacet lobe to the specular image and a dielectric's base to

@@ -54,12 +54,19 @@ struct RenderSettings {
   // exposure, tone, clamp, encoding) differs from a neighbour's by more than this, per channel
   // (0..1); a speed knob: lower refines more pixels.
   float aa_threshold = 1.0f / 64.0f;
+  // The environment light (docs/engine.md, "The environment"): the fast path's prefiltered maps
+  // have env_resolution texels per lobe width; then env_samples directions per sample, drawn
+  // from the lobes and the map and combined, converge on the contract's integrals (with
+  // visibility when shadows are on). 0: the fast path alone.
+  int env_resolution = 2;
+  int env_samples = 64;
 };
 
 // Largest image side and pixel count accepted; larger requests are refused before allocating.
 constexpr int kMaxImageSide = 16384;
 constexpr long long kMaxImagePixels = 64LL * 1024 * 1024;
 constexpr int kMaxSpp = 4096;
+constexpr int kMaxEnvSamples = 65536;
 // Largest exposure magnitude accepted, stops: 2^32 keeps every exposed value finite in float.
 constexpr float kMaxExposureStops = 32.0f;
 

@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "scene/camera.h"
+#include "scene/environment.h"
 #include "scene/geometry/mesh.h"
 #include "scene/light.h"
 #include "scene/material.h"
@@ -65,7 +66,8 @@ struct Scene {
   Camera camera;
   glm::vec3 background{0.0f};
   glm::vec3 ambient{0.2f};  // A_scene
-  std::vector<PointLight> lights;
+  std::vector<Light> lights;
+  Environment environment;  // none unless the scene file has one
   std::vector<Material> materials;
   std::vector<std::string> material_names;  // parallel to materials
   std::vector<Object> objects;

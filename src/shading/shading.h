@@ -38,24 +38,20 @@ T attenuation(const glm::tvec3<T>& c, T d) {
 template <class T>
 using WideScalar = std::conditional_t<std::is_same_v<T, float>, double, T>;
 
-// Geometry part of the contract for one light at a surface point. p: point, n: unit shading
-// normal, v: unit direction to the eye, both already flipped to the viewer's side (two-sided).
-// vis: 1 or 0 from the shadow test. Returns zero factors for d = 0 (a light on the surface adds
-// nothing) or ndl <= 0. Written without branches (every quantity computed, then selected).
-template <class T>
-LightFactors<T> light_factors(const glm::tvec3<T>& p_in, const glm::tvec3<T>& n_in,
-                              const glm::tvec3<T>& v_in, const glm::tvec3<T>& light_position,
-                              const glm::tvec3<T>& attenuation_coeffs, bool unit_attenuation,
-                              T vis) {
-  using W = WideScalar<T>;
+// The factors of light arriving along unit l (towards the light) with weight att (times the
+// spot factor; light_source.h) at a point with unit shading normal n and unit v, in the wide
+// type W; reaches: the light is not at the point. Zero factors unless reaches and ndl > 0.
+// Written without branches (every quantity computed, then selected): the packet code runs it
+// over 16 lanes at once; always inlined, since a call inside a lane loop keeps the loop scalar
+// (GCC left it out of light_factors' loop in sample_packet.cpp).
+template <class T, class W>
+[[gnu::always_inline]] inline LightFactors<T> factors_along(const glm::tvec3<W>& n,
+                                                            const glm::tvec3<W>& v,
+                                                            const glm::tvec3<W>& l, bool reaches,
+                                                            W att, T vis) {
   using V = glm::tvec3<W>;
-  const V p(p_in), n(n_in), v(v_in);
-  const V to_light = V(light_position) - p;
-  const W d = std::sqrt(glm::dot(to_light, to_light));
-  const V l = to_light * (W(1) / d);  // one division, not three (vector code: ~10 cycles each)
   const W ndl = glm::dot(n, l);
-  const bool lit = (d > W(0)) & (d < std::numeric_limits<W>::infinity()) & (ndl > W(0));
-  const W att = unit_attenuation ? W(1) : attenuation(V(attenuation_coeffs), d);
+  const bool lit = reaches & (ndl > W(0));
   const W spec_weight = att * W(vis);
   const W cos_phong = glm::dot(W(2) * ndl * n - l, v);
   const V h = l + v;
@@ -69,6 +65,26 @@ LightFactors<T> light_factors(const glm::tvec3<T>& p_in, const glm::tvec3<T>& n_
   f.cos_phong = lit ? T(cos_phong) : T(0);
   f.cos_blinn = lit & has_half ? T(cos_blinn) : T(0);
   return f;
+}
+
+// Geometry part of the contract for one point light at a surface point. p: point, n: unit
+// shading normal, v: unit direction to the eye, both already flipped to the viewer's side
+// (two-sided). vis: 1 or 0 from the shadow test. Returns zero factors for d = 0 (a light on the
+// surface adds nothing) or ndl <= 0. Other light types: light_source.h, source_factors.
+template <class T>
+LightFactors<T> light_factors(const glm::tvec3<T>& p_in, const glm::tvec3<T>& n_in,
+                              const glm::tvec3<T>& v_in, const glm::tvec3<T>& light_position,
+                              const glm::tvec3<T>& attenuation_coeffs, bool unit_attenuation,
+                              T vis) {
+  using W = WideScalar<T>;
+  using V = glm::tvec3<W>;
+  const V p(p_in), n(n_in), v(v_in);
+  const V to_light = V(light_position) - p;
+  const W d = std::sqrt(glm::dot(to_light, to_light));
+  const V l = to_light * (W(1) / d);  // one division, not three (vector code: ~10 cycles each)
+  const bool reaches = (d > W(0)) & (d < std::numeric_limits<W>::infinity());
+  const W att = unit_attenuation ? W(1) : attenuation(V(attenuation_coeffs), d);
+  return factors_along<T>(n, v, l, reaches, att, vis);
 }
 
 // c^alpha for c > 0, else 0 (alpha = 0 gives 1 wherever c > 0). c is clamped to 1 above (it can

@@ -12,7 +12,8 @@
 
 namespace gloss {
 
-enum class RasterShape { mesh, sphere };
+// sky: the environment where primary rays miss, one triangle over the image.
+enum class RasterShape { mesh, sphere, sky };
 // shadow: distances to a light for its shadow maps; pixel / vertex: the five term outputs with
 // the contract per pixel or per mesh vertex (spheres are per pixel in both).
 enum class RasterPass { shadow, pixel, vertex };
@@ -20,21 +21,21 @@ enum class RasterPass { shadow, pixel, vertex };
 struct RasterVariant {
   RasterShape shape = RasterShape::mesh;
   RasterPass pass = RasterPass::pixel;
-  int light_count = 0;   // GLOSS_LIGHT_COUNT
-  bool shadows = false;  // GLOSS_SHADOWS: the shading passes look up the shadow maps
+  int light_count = 0;       // GLOSS_LIGHT_COUNT
+  bool shadows = false;      // GLOSS_SHADOWS: the shading passes look up the shadow maps
+  bool environment = false;  // GLOSS_ENVIRONMENT: the environment's fast path (environment.glsl)
   bool operator<(const RasterVariant& o) const {
-    return std::tie(shape, pass, light_count, shadows) <
-           std::tie(o.shape, o.pass, o.light_count, o.shadows);
+    return std::tie(shape, pass, light_count, shadows, environment) <
+           std::tie(o.shape, o.pass, o.light_count, o.shadows, o.environment);
   }
 };
 
-// The most lights a raster program takes: its uniform arrays (5 vec3 per light) and its
-// shadow-map layers (6 per light) stay within GL 3.3's guaranteed minimums (1024 fragment
-// uniform components, 256 array layers). Per-vertex shading passes 2 floats per light plus 6
-// between the stages: past 29 lights that exceeds GL 3.3's guaranteed 64 output components
-// (llvmpipe and current GPUs offer 128); a driver that refuses the link gets the ray tracer,
-// with the linker's message as the editor's notice.
-inline constexpr int kMaxRasterLights = 32;
+// The most lights a raster program takes: its uniform arrays (7 vectors per light for the
+// contract, 5 more for its shadow map's frame and layers: at most 48 components each as vec4
+// slots) and its shadow-map layers (at most 6 per light) stay within GL 3.3's guaranteed
+// minimums (1024 fragment uniform components, 256 array layers). A scene with more lights gets
+// the ray tracer, with a notice.
+inline constexpr int kMaxRasterLights = 16;
 
 class RasterPrograms {
  public:
@@ -63,5 +64,10 @@ void set_uniform(GLuint program, const char* name, int value);
 void set_uniform(GLuint program, const char* name, float value);
 void set_uniform(GLuint program, const char* name, float x, float y);
 void set_uniform(GLuint program, const char* name, const float* xyz, int count = 1);
+// Arrays of vec2, vec4 and ivec2 (count entries).
+void set_uniform_vec2s(GLuint program, const char* name, const float* xy, int count);
+void set_uniform_vec4s(GLuint program, const char* name, const float* xyzw, int count);
+void set_uniform_ivec2s(GLuint program, const char* name, const int* xy, int count);
+void set_uniform_ivec4s(GLuint program, const char* name, const int* xyzw, int count);
 
 }  // namespace gloss

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -9,11 +10,13 @@
 
 #include <glm/geometric.hpp>
 
+#include "editor/gl/environment_texture.h"
 #include "editor/gl/raster_geometry.h"
 #include "editor/gl/raster_programs.h"
 #include "editor/gl/raster_view.h"
 #include "editor/gl/shadow_maps.h"
 #include "engine/frame_pool.h"
+#include "shading/light_source.h"
 
 namespace gloss {
 
@@ -37,6 +40,7 @@ struct SavedState {
   GLint draw_framebuffer = 0, read_framebuffer = 0, program = 0, vertex_array = 0;
   GLint array_buffer = 0, renderbuffer = 0, viewport[4] = {};
   GLint active_texture = GL_TEXTURE0, texture_2d = 0, texture_array = 0;  // on unit 0
+  GLint texture_2d_unit1 = 0;                                             // the environment's unit
   GLint front_face = GL_CCW, cull_face = GL_BACK, depth_func = GL_LESS;
   GLint blend_rgb = GL_FUNC_ADD, blend_alpha = GL_FUNC_ADD, pack_alignment = 4;
   GLboolean depth_test = GL_FALSE, blend = GL_FALSE, cull = GL_FALSE;
@@ -49,6 +53,8 @@ struct SavedState {
     glGetIntegerv(GL_RENDERBUFFER_BINDING, &renderbuffer);
     glGetIntegerv(GL_VIEWPORT, viewport);
     glGetIntegerv(GL_ACTIVE_TEXTURE, &active_texture);
+    glActiveTexture(GL_TEXTURE1);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture_2d_unit1);
     glActiveTexture(GL_TEXTURE0);
     glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture_2d);
     glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &texture_array);
@@ -70,6 +76,9 @@ struct SavedState {
     glBindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(array_buffer));
     glBindRenderbuffer(GL_RENDERBUFFER, static_cast<GLuint>(renderbuffer));
     glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    glActiveTexture(GL_TEXTURE0);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture_2d_unit1));
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture_2d));
     glBindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(texture_array));
@@ -112,6 +121,12 @@ std::vector<const Object*> draw_order(const Scene& scene, const std::vector<Draw
   return order;
 }
 
+// 1 - cos(degrees), without the cancellation of 1 - cos near 0: 2 sin^2(degrees / 2).
+float one_minus_cos(double degrees) {
+  const double half = std::sin(degrees * (3.14159265358979323846 / 360.0));
+  return static_cast<float>(2.0 * half * half);
+}
+
 // Everything of the contract that is the same for every object of the frame.
 void set_scene_uniforms(GLuint program, const Scene& scene) {
   set_uniform(program, "gloss_scene_ambient", &scene.ambient.x);
@@ -119,19 +134,47 @@ void set_scene_uniforms(GLuint program, const Scene& scene) {
   set_uniform(program, "gloss_energy_normalize", scene.render.energy_normalize ? 1 : 0);
   const int n = static_cast<int>(scene.lights.size());
   if (n == 0) return;
-  std::vector<float> position, ambient, diffuse, specular, attenuation;
-  for (const PointLight& l : scene.lights) {
+  std::vector<float> position, ambient, diffuse, specular, attenuation, direction, cone;
+  for (const Light& l : scene.lights) {
+    const glm::vec3 d = make_light_source<float>(l, scene.camera).direction;  // world, unit
     position.insert(position.end(), {l.position.x, l.position.y, l.position.z});
     ambient.insert(ambient.end(), {l.ambient.x, l.ambient.y, l.ambient.z});
     diffuse.insert(diffuse.end(), {l.diffuse.x, l.diffuse.y, l.diffuse.z});
     specular.insert(specular.end(), {l.specular.x, l.specular.y, l.specular.z});
     attenuation.insert(attenuation.end(), {l.attenuation.x, l.attenuation.y, l.attenuation.z});
+    direction.insert(direction.end(), {d.x, d.y, d.z});
+    cone.insert(cone.end(), {float(static_cast<int>(l.type)), one_minus_cos(l.cutoff),
+                             one_minus_cos(std::min(l.inner, l.cutoff)), l.exponent});
   }
   set_uniform(program, "gloss_light_position", position.data(), n);
   set_uniform(program, "gloss_light_ambient", ambient.data(), n);
   set_uniform(program, "gloss_light_diffuse", diffuse.data(), n);
   set_uniform(program, "gloss_light_specular", specular.data(), n);
   set_uniform(program, "gloss_light_attenuation", attenuation.data(), n);
+  set_uniform(program, "gloss_light_direction", direction.data(), n);
+  set_uniform_vec4s(program, "gloss_light_cone", cone.data(), n);
+}
+
+// Where each light's shadow maps are and, for single maps, their views (raster_common.glsl).
+void set_shadow_uniforms(GLuint program, const std::vector<LightShadow>& lights) {
+  const int n = static_cast<int>(lights.size());
+  std::vector<int> layout;
+  std::vector<float> origin, forward, right, up, scale;
+  for (const LightShadow& l : lights) {
+    layout.insert(layout.end(), {l.first_layer, static_cast<int>(l.kind)});
+    const RasterView& v = l.view;
+    origin.insert(origin.end(), {v.origin.x, v.origin.y, v.origin.z});
+    forward.insert(forward.end(), {v.forward.x, v.forward.y, v.forward.z});
+    right.insert(right.end(), {v.right.x, v.right.y, v.right.z});
+    up.insert(up.end(), {v.up.x, v.up.y, v.up.z});
+    scale.insert(scale.end(), {v.scale.x, v.scale.y});
+  }
+  set_uniform_ivec2s(program, "gloss_shadow_layout", layout.data(), n);
+  set_uniform(program, "gloss_shadow_origin", origin.data(), n);
+  set_uniform(program, "gloss_shadow_forward", forward.data(), n);
+  set_uniform(program, "gloss_shadow_right", right.data(), n);
+  set_uniform(program, "gloss_shadow_up", up.data(), n);
+  set_uniform_vec2s(program, "gloss_shadow_scale", scale.data(), n);
 }
 
 }  // namespace
@@ -142,6 +185,8 @@ struct RasterRenderer::Impl {
   RasterPrograms programs;
   RasterGeometry geometry;
   ShadowMaps shadows;
+  EnvironmentTexture environment;  // the environment's levels (texture unit 1)
+  bool with_environment = false;   // of the frame being drawn
   RasterTiming timing;
 
   // The five float targets and their depth buffer, resized with the image.
@@ -198,7 +243,8 @@ struct RasterRenderer::Impl {
       // Spheres are impostors: per pixel in both shading passes.
       const RasterPass own = sphere && pass == RasterPass::vertex ? RasterPass::pixel : pass;
       const GLuint program =
-          programs.get({sphere ? RasterShape::sphere : RasterShape::mesh, own, lights, shadows});
+          programs.get({sphere ? RasterShape::sphere : RasterShape::mesh, own, lights, shadows,
+                        with_environment && pass != RasterPass::shadow});
       if (program != current) {
         glUseProgram(program);
         current = program;
@@ -206,10 +252,12 @@ struct RasterRenderer::Impl {
         if (pass != RasterPass::shadow) {
           set_scene_uniforms(program, scene);
           set_uniform(program, "gloss_image_size", float(width), float(height));
+          if (with_environment) environment.use(program, scene, 1);
           if (shadows) {
             set_uniform(program, "gloss_shadow_maps", 0);
             set_uniform(program, "gloss_shadow_size", float(this->shadows.size()));
             set_uniform(program, "gloss_shadow_bias", shadow_bias);
+            set_shadow_uniforms(program, this->shadows.lights());
           }
         }
       }
@@ -233,6 +281,20 @@ struct RasterRenderer::Impl {
         glDrawArrays(GL_TRIANGLES, 0, b.vertices);
       }
     }
+  }
+
+  // The environment where primary rays miss: one triangle over the image, before the objects,
+  // without depth.
+  void draw_sky(const Scene& scene, const RasterView& view) {
+    const GLuint program = programs.get({RasterShape::sky, RasterPass::pixel, 0, false, true});
+    glUseProgram(program);
+    set_view_uniforms(program, view);
+    set_uniform(program, "gloss_image_size", float(width), float(height));
+    environment.use(program, scene, 1);
+    glDisable(GL_DEPTH_TEST);
+    glBindVertexArray(geometry.cube());  // core GL needs one bound; the sky reads no attribute
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glEnable(GL_DEPTH_TEST);
   }
 
   float shadow_bias = 0.0f;
@@ -294,11 +356,14 @@ std::shared_ptr<RenderedFrame> RasterRenderer::render(const Scene& scene,
 
   const bool shadows = scene.render.shadows && lights > 0;
   if (shadows) {
-    m.shadows.update(scene, settings.shadow_map_size, [&](const RasterView& face) {
+    m.shadows.update(scene, m.boxes, settings.shadow_map_size, [&](const RasterView& face) {
       m.draw_objects(scene, face, RasterPass::shadow, false);
     });
     t.shadow_ms = finish_ms(since);
   }
+
+  m.with_environment = scene.environment.present();
+  if (m.with_environment) m.environment.update(scene);
 
   m.size_targets(w, h);
   glBindFramebuffer(GL_FRAMEBUFFER, m.framebuffer);
@@ -324,6 +389,7 @@ std::shared_ptr<RenderedFrame> RasterRenderer::render(const Scene& scene,
     glBindTexture(GL_TEXTURE_2D_ARRAY, m.shadows.texture());
   }
   m.shadow_bias = settings.shadow_bias;
+  if (m.with_environment && scene.environment.as_background) m.draw_sky(scene, view);
   m.draw_objects(
       scene, view,
       settings.shading == ShadingFrequency::vertex ? RasterPass::vertex : RasterPass::pixel,

@@ -119,10 +119,66 @@ RasterView cube_face_view(const glm::vec3& light_position, int face) {
   return v;
 }
 
+namespace {
+// Two unit vectors completing unit forward to a frame (right, up): up is the world's y unless
+// forward is nearly along it. right = cross(forward, up) keeps the camera's handedness.
+void frame_across(const glm::vec3& forward, glm::vec3& right, glm::vec3& up) {
+  const glm::vec3 hint = std::abs(forward.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+  right = glm::normalize(glm::cross(forward, hint));
+  up = glm::cross(right, forward);
+}
+}  // namespace
+
+RasterView spot_view(const glm::vec3& position, const glm::vec3& direction, float cutoff_degrees) {
+  RasterView v;
+  v.origin = position;
+  v.forward = direction;
+  frame_across(direction, v.right, v.up);
+  const float spread = std::tan(cutoff_degrees * 3.14159265f / 180.0f);
+  v.scale = {spread, spread};
+  v.near_w = std::max(1e-6f, 1e-6f * glm::length(position));
+  v.depth = {1.0f, -2.0f * v.near_w};
+  return v;
+}
+
+RasterView directional_view(const glm::vec3& direction, const std::vector<DrawnBox>& boxes) {
+  RasterView v;
+  v.orthographic = true;
+  v.forward = direction;
+  frame_across(direction, v.right, v.up);
+  glm::vec3 lo(INFINITY), hi(-INFINITY);  // along right, up, forward
+  for (const DrawnBox& b : boxes) {
+    if (b.empty) continue;
+    for (int c = 0; c < 8; ++c) {
+      const glm::vec3 corner((c & 1) ? b.hi.x : b.lo.x, (c & 2) ? b.hi.y : b.lo.y,
+                             (c & 4) ? b.hi.z : b.lo.z);
+      const glm::vec3 k(glm::dot(corner, v.right), glm::dot(corner, v.up),
+                        glm::dot(corner, v.forward));
+      lo = glm::min(lo, k);
+      hi = glm::max(hi, k);
+    }
+  }
+  if (!(lo.x <= hi.x)) lo = glm::vec3(-1.0f), hi = glm::vec3(1.0f);
+  // 1 % of the extent around it (at least 1e-6 of its size), so no silhouette is shaved off.
+  const glm::vec3 margin = glm::max(0.01f * (hi - lo), glm::vec3(1e-6f * glm::length(hi - lo)));
+  lo -= margin;
+  hi += margin;
+  const glm::vec3 centre = 0.5f * (lo + hi);
+  v.origin = centre.x * v.right + centre.y * v.up + lo.z * v.forward;
+  v.scale = {0.5f * (hi.x - lo.x), 0.5f * (hi.y - lo.y)};
+  const float depth = hi.z - lo.z;
+  v.near_w = 0.0f;
+  v.depth = {2.0f / depth, -1.0f};  // w = 0 .. depth to -1 .. 1
+  return v;
+}
+
 bool may_be_seen(const RasterView& view, const DrawnBox& box) {
   if (box.empty) return false;
   const glm::vec3 centre = 0.5f * (box.lo + box.hi);
   const float radius = 0.5f * glm::length(box.hi - box.lo);
+  if (view.orthographic) {  // every box is inside the box the view was fitted to
+    return true;
+  }
   // In front of the origin and inside the four side planes, |dot(d, right)| <= scale.x
   // dot(d, forward) and the same with up, for the box's bounding sphere.
   const glm::vec3 d = centre - view.origin;
@@ -137,6 +193,7 @@ bool may_be_seen(const RasterView& view, const DrawnBox& box) {
 }
 
 bool near_faces_suffice(const RasterView& view, const DrawnBox& cube) {
+  if (view.orthographic) return false;  // both faces: parallel rays have no eye to face
   // Outside the cube and every corner (so every point) of it past the near plane.
   return box_distance(view.origin, cube) > 0.0f && box_w_range(view, cube).x > view.near_w;
 }
@@ -148,6 +205,7 @@ void set_view_uniforms(GLuint program, const RasterView& view) {
   set_uniform(program, "gloss_view_up", &view.up.x);
   set_uniform(program, "gloss_view_scale", view.scale.x, view.scale.y);
   set_uniform(program, "gloss_view_depth", view.depth.x, view.depth.y);
+  set_uniform(program, "gloss_view_ortho", view.orthographic ? 1 : 0);
 }
 
 }  // namespace gloss

@@ -18,6 +18,9 @@ struct RasterView {
   glm::vec2 scale{1.0f};        // image-plane half extents at distance 1 along forward
   glm::vec2 depth{1.0f, 0.0f};  // (A, B): clip z = A w + B, w the distance along forward
   float near_w = 0.0f;          // w of the near plane: anything closer is clipped away
+  // No perspective: x and y are distances across forward divided by scale, and w the distance
+  // along it from the origin's plane (a directional light's shadow map).
+  bool orthographic = false;
 };
 
 // The axis-aligned box one object's drawn geometry lies in: a sphere's impostor cube
@@ -43,6 +46,16 @@ RasterView camera_view(const Scene& scene, const std::vector<DrawnBox>& boxes, i
 // shadow pass keeps the nearest distance by blending, not by the depth test). Its frame is
 // left-handed (cross(right, up) = forward), the camera's right-handed.
 RasterView cube_face_view(const glm::vec3& light_position, int face);
+
+// A spot's shadow view: a square frustum from the light along its unit direction whose
+// half-angle across is the cutoff (cutoff <= 60 degrees; wider cones take the cube), far plane at
+// infinity as the cube faces'.
+RasterView spot_view(const glm::vec3& position, const glm::vec3& direction, float cutoff_degrees);
+
+// A directional light's shadow view: orthographic along its unit direction, fitted to every
+// drawn box (the scene as the light sees it), its origin on a plane just before the nearest
+// corner and its far plane just past the farthest. Nothing drawn: a unit box at the origin.
+RasterView directional_view(const glm::vec3& direction, const std::vector<DrawnBox>& boxes);
 
 // Whether box can have a part inside view's frustum (a conservative test).
 bool may_be_seen(const RasterView& view, const DrawnBox& box);

@@ -28,6 +28,8 @@ const char* title(BrowsePurpose purpose) {
       return "Save the selected material";
     case BrowsePurpose::export_glsl:
       return "Export GLSL";
+    case BrowsePurpose::open_environment:
+      return "Environment map";
   }
   return "File";
 }
@@ -51,6 +53,8 @@ std::vector<std::string> extensions(BrowsePurpose purpose) {
       return {".json", ".mtl"};
     case BrowsePurpose::export_glsl:
       return {".frag", ".glsl"};
+    case BrowsePurpose::open_environment:
+      return {".hdr", ".exr", ".png"};
   }
   return {};
 }
@@ -58,6 +62,7 @@ std::vector<std::string> extensions(BrowsePurpose purpose) {
 RecentKind recent_kind(BrowsePurpose purpose) {
   switch (purpose) {
     case BrowsePurpose::add_model:
+    case BrowsePurpose::open_environment:  // files added to a scene (the list is not extended)
       return RecentKind::model;
     case BrowsePurpose::load_materials:
     case BrowsePurpose::save_materials:

@@ -15,9 +15,10 @@ enum class BrowsePurpose {
   add_model,
   load_materials,
   save_scene,
-  save_materials,  // every material of the scene
-  save_material,   // the selected object's material alone
-  export_glsl,     // issue 12: the selected object's material as a fragment shader
+  save_materials,    // every material of the scene
+  save_material,     // the selected object's material alone
+  export_glsl,       // issue 12: the selected object's material as a fragment shader
+  open_environment,  // an environment map (HDR, EXR, PNG)
 };
 // The recent list the panel offers for purpose (scenes for scenes, models for Add model, ...).
 RecentKind recent_kind(BrowsePurpose purpose);

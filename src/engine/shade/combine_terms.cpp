@@ -16,6 +16,13 @@
 namespace gloss {
 
 namespace {
+// Where primary rays miss: the environment's sky (when shown and made for this image) or the
+// background colour.
+bool shows_sky(const PixelFactors& factors, const Recombination& recombination) {
+  const std::size_t pixels = static_cast<std::size_t>(factors.width) * factors.height;
+  return recombination.sky_shown() && factors.sky.size() == pixels;
+}
+
 // The pixels combine_terms' dense loop does not finish, into total (and the four term images of
 // out when given): adaptive sampling's refined pixels (their weight and background share are
 // their own; written whole) and the further materials of mixed pixels (added).
@@ -23,6 +30,7 @@ void recombine_refined(const PixelFactors& factors, const Recombination& recombi
                        Image& total, TermImages* terms) {
   const std::size_t pixels = static_cast<std::size_t>(factors.width) * factors.height;
   const std::size_t lights = factors.lights;
+  const bool sky = shows_sky(factors, recombination);
   for (std::size_t k = 0; k < factors.refined_pixel.size(); ++k) {
     const std::size_t i = factors.refined_pixel[k];
     glm::vec3 term[4] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
@@ -31,7 +39,8 @@ void recombine_refined(const PixelFactors& factors, const Recombination& recombi
       recombination.terms(m, factors.refined_weight[k], factors.diffuse.data() + i,
                           factors.specular.data() + i, pixels, term);
     }
-    total.pixels[i] = recombination.total(term, factors.refined_background[k]);
+    total.pixels[i] = sky ? recombination.total_under_sky(term, factors.sky[i])
+                          : recombination.total(term, factors.refined_background[k]);
     if (terms != nullptr) {
       terms->emissive.pixels[i] = term[0];
       terms->ambient.pixels[i] = term[1];
@@ -73,6 +82,7 @@ void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermIm
   const Recombination recombination(ctx);
   // The factors were built for the same plan (an edit that changes it is classed `light`).
   assert(recombination.lights() == factors.lights);
+  const bool sky = shows_sky(factors, recombination);
   // The pixel loop, instantiated per (one sample, term images) so it holds no such branches.
   auto pixels_loop = [&](auto single_tag, auto terms_tag, std::size_t begin, std::size_t end) {
     constexpr bool kSingle = decltype(single_tag)::value;  // weight, background from material
@@ -86,7 +96,8 @@ void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermIm
         recombination.terms(m, weight, factors.diffuse.data() + i, factors.specular.data() + i,
                             pixels, term);
       }
-      out.total.pixels[i] = recombination.total(term, missed);
+      out.total.pixels[i] = sky ? recombination.total_under_sky(term, factors.sky[i])
+                                : recombination.total(term, missed);
       if constexpr (kTerms) {
         out.emissive.pixels[i] = term[0];
         out.ambient.pixels[i] = term[1];

@@ -45,9 +45,10 @@ void PixelGroups::write(std::size_t idx, float inv_n, PixelFactors& out, float& 
 
 std::size_t PixelFactors::bytes() const {
   return material.size() * sizeof(std::int32_t) + (weight.size() + background.size()) * 4 +
-         refined_pixel.size() * 12 + (diffuse.size() + specular.size()) * 4 +
-         extra_pixel.size() * 8 +
-         (extra_weight.size() + extra_diffuse.size() + extra_specular.size()) * 4;
+         refined_pixel.size() * 12 +
+         (diffuse.size() + specular.size()) * 4 + extra_pixel.size() * 8 +
+         (extra_weight.size() + extra_diffuse.size() + extra_specular.size()) * 4 +
+         sky.size() * sizeof(glm::vec3);
 }
 
 void size_pixel_factors(PixelFactors& out, int width, int height, int samples, std::size_t lights) {
@@ -117,7 +118,7 @@ void single_sample_light(const MaterialExponents& exponents, PowMode mode,
 
 bool build_centre_factors(const SampleCache& cache, const RenderContext& ctx, PixelFactors& out) {
   const std::size_t pixels = cache.pixel_count();
-  const std::size_t lights = ctx.plan.lights.size();
+  const std::size_t lights = ctx.plan.slots();
   size_pixel_factors(out, cache.width, cache.height, 1, lights);
   const ShadingModel model = ctx.scene->render.model;
   const PowMode pow_mode = ctx.scene->render.pow;
@@ -148,7 +149,7 @@ bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pix
     return build_centre_factors(cache, ctx, out) && refine_pixel_factors(cache, ctx, out);
   }
   const Scene& scene = *ctx.scene;
-  const std::size_t lights = ctx.plan.lights.size();
+  const std::size_t lights = ctx.plan.slots();
   size_pixel_factors(out, cache.width, cache.height, n, lights);
   const int rows = band_rows(cache.width);
   std::vector<FactorExtras> extras(static_cast<std::size_t>((cache.height + rows - 1) / rows));

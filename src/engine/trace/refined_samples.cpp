@@ -89,7 +89,7 @@ bool trace_refined_samples(SampleCache& cache, const RenderContext& ctx,
   RefinedSamples& refined = cache.refined;
   refined.spp = spp;
   refined.pixels = std::move(pixels);
-  size_plane(refined.plane, refined.entries(), ctx.plan.lights.size());
+  size_plane(refined.plane, refined.entries(), ctx.plan.slots());
   const SamplePattern pattern = make_sample_pattern(cache.seed, spp);
   const int width = static_cast<int>(refined.entries());
   const bool done = for_each_entry_packet(cache, ctx, [&](SamplePacket& packet) {
@@ -173,7 +173,7 @@ bool update_refined_samples(SampleCache& cache, const RenderContext& ctx,
   next.spp = old.spp;
   next.pixels = std::move(pixels);
   next.plane = std::move(spare);
-  size_plane(next.plane, next.entries(), ctx.plan.lights.size());
+  size_plane(next.plane, next.entries(), ctx.plan.slots());
   // The light factors of kept samples are copied when current (the same plan), else made anew.
   const bool copy_lights = !lights_stale && old.plane.lights.size() == next.plane.lights.size();
   const bool copied =
@@ -219,13 +219,26 @@ bool update_refined_samples(SampleCache& cache, const RenderContext& ctx,
 bool recompute_refined_light_factors(SampleCache& cache, const RenderContext& ctx) {
   RefinedSamples& refined = cache.refined;
   if (refined.spp == 0) return true;
-  size_plane(refined.plane, refined.entries(), ctx.plan.lights.size());
+  size_plane(refined.plane, refined.entries(), ctx.plan.slots());
   const SamplePattern pattern = make_sample_pattern(cache.seed, refined.spp);
   const int width = static_cast<int>(refined.entries());
   return for_each_entry_packet(cache, ctx, [&](SamplePacket& packet) {
     entry_directions(packet, cache, pattern);
     load_hits(packet, width, refined.plane);
     return shade_sample(packet, cache, ctx, refined.plane, no_consumer);
+  });
+}
+
+bool visit_refined_samples(const SampleCache& cache, const RenderContext& ctx,
+                           const std::function<long long(SamplePacket&)>& visit) {
+  const RefinedSamples& refined = cache.refined;
+  if (refined.spp == 0) return true;
+  const SamplePattern pattern = make_sample_pattern(cache.seed, refined.spp);
+  const int width = static_cast<int>(refined.entries());
+  return for_each_entry_packet(cache, ctx, [&](SamplePacket& packet) {
+    entry_directions(packet, cache, pattern);
+    load_hits(packet, width, refined.plane);
+    return visit(packet);
   });
 }
 

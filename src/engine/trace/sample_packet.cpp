@@ -13,6 +13,7 @@
 #include "engine/trace/ray_packet.h"
 #include "engine/trace/self_shadow.h"
 #include "scene/camera.h"
+#include "shading/light_source.h"
 #include "shading/shading.h"
 #include "shading/surface.h"
 
@@ -194,13 +195,30 @@ void packet_surfaces(const SamplePacket& packet, const SampleCache& cache, const
   }
 }
 
-long long packet_light(const SamplePacket& packet, const SurfaceLanes& surfaces,
-                       const RenderContext& ctx, std::size_t li, LightLanes& out) {
-  const PointLight& light = ctx.scene->lights[static_cast<std::size_t>(ctx.plan.lights[li])];
-  alignas(64) int lit[kLanes];  // Embree mask, 64-byte aligned
+namespace {
+// One planned light's shadow rays and factors for the lanes, instantiated per light type so
+// each copy's loops see only their own maths (the point light's are those of the point-only
+// renderer, so its bits and its vector code stay as they were).
+template <LightType Kind>
+long long light_lanes(const SamplePacket& packet, const SurfaceLanes& surfaces,
+                      const RenderContext& ctx, std::size_t li, LightLanes& out) {
+  const LightSource<float>& light = ctx.plan.sources[li];
+  const glm::vec3 towards = -light.direction;  // directional: l, the same at every point
+  alignas(64) int lit[kLanes];                 // Embree mask, 64-byte aligned
+  alignas(64) double spot[kLanes];             // spot: the cone's factor (light_source.h)
   for (int i = 0; i < kLanes; ++i) {
     const Surface s = surfaces.get(i);
-    lit[i] = surfaces.hit[i] != 0 && glm::dot(s.n, light.position - s.p) > 0.0f ? -1 : 0;
+    if constexpr (Kind == LightType::directional) {
+      lit[i] = surfaces.hit[i] != 0 && glm::dot(s.n, towards) > 0.0f ? -1 : 0;
+    } else {
+      lit[i] = surfaces.hit[i] != 0 && glm::dot(s.n, light.position - s.p) > 0.0f ? -1 : 0;
+    }
+  }
+  if constexpr (Kind == LightType::spot) {  // outside the cone: no light, no shadow ray
+    for (int i = 0; i < kLanes; ++i) {
+      spot[i] = lit[i] != 0 ? spot_at<float>(surfaces.get(i).p, light) : 0.0;
+      lit[i] = spot[i] > 0.0 ? lit[i] : 0;
+    }
   }
   alignas(64) float vis[kLanes];
   for (int i = 0; i < kLanes; ++i) vis[i] = 1.0f;
@@ -209,7 +227,11 @@ long long packet_light(const SamplePacket& packet, const SurfaceLanes& surfaces,
     RTCRay16 ray;
     for (int i = 0; i < kLanes; ++i) {  // vector code: no call, no branch
       const glm::vec3 org = shadow_ray_origin(surfaces.get(i), packet.t[i]);
-      set_packet_ray(ray, i, org, light.position - org, kShadowRayEnd);
+      if constexpr (Kind == LightType::directional) {  // no end: any surface blocks it
+        set_packet_ray(ray, i, org, towards);
+      } else {
+        set_packet_ray(ray, i, org, light.position - org, kShadowRayEnd);
+      }
     }
     // Only spheres can find their own origin (self_shadow.h); set_packet_ray left "none". A
     // loop of its own: the call inside the loop above kept it scalar (retrace 12.8 -> 14.2 ms).
@@ -225,27 +247,55 @@ long long packet_light(const SamplePacket& packet, const SurfaceLanes& surfaces,
       vis[i] = lit[i] != 0 && ray.tfar[i] == -std::numeric_limits<float>::infinity() ? 0.0f : 1.0f;
     }
   }
+  auto store = [&](int i, const LightFactors<float>& f) {
+    const bool on = lit[i] != 0;
+    out.diffuse_weight[i] = on ? f.diffuse_weight : 0.0f;
+    out.spec_weight[i] = on ? f.spec_weight : 0.0f;
+    out.cos_phong[i] = on ? f.cos_phong : 0.0f;
+    out.cos_blinn[i] = on ? f.cos_blinn : 0.0f;
+  };
   // One copy of the loop per attenuation switch, so each sees a constant and the (1, 0, 0) copy
   // does no attenuation maths.
   auto factors = [&](auto unit_attenuation) {
-    for (int i = 0; i < kLanes; ++i) {
-      const Surface s = surfaces.get(i);
-      const LightFactors<float> f =
-          light_factors<float>(s.p, s.n, s.v, light.position, light.attenuation,
-                               decltype(unit_attenuation)::value, vis[i]);
-      const bool on = lit[i] != 0;
-      out.diffuse_weight[i] = on ? f.diffuse_weight : 0.0f;
-      out.spec_weight[i] = on ? f.spec_weight : 0.0f;
-      out.cos_phong[i] = on ? f.cos_phong : 0.0f;
-      out.cos_blinn[i] = on ? f.cos_blinn : 0.0f;
+    constexpr bool kUnit = decltype(unit_attenuation)::value;
+    if constexpr (Kind == LightType::point) {
+      for (int i = 0; i < kLanes; ++i) {
+        const Surface s = surfaces.get(i);
+        store(i, light_factors<float>(s.p, s.n, s.v, light.position, light.attenuation, kUnit,
+                                      vis[i]));
+      }
+    } else if constexpr (Kind == LightType::directional) {
+      for (int i = 0; i < kLanes; ++i) {
+        const Surface s = surfaces.get(i);
+        store(i, directional_light_factors<float>(s.n, s.v, light, vis[i]));
+      }
+    } else {
+      for (int i = 0; i < kLanes; ++i) {
+        const Surface s = surfaces.get(i);
+        store(i, spot_light_factors<float>(s.p, s.n, s.v, light, kUnit, spot[i], vis[i]));
+      }
     }
   };
   if (ctx.plan.unit_attenuation[li]) {
     factors(std::true_type{});
-  } else {
+  } else if constexpr (Kind != LightType::directional) {
     factors(std::false_type{});
   }
   return rays;
+}
+}  // namespace
+
+long long packet_light(const SamplePacket& packet, const SurfaceLanes& surfaces,
+                       const RenderContext& ctx, std::size_t li, LightLanes& out) {
+  switch (ctx.plan.sources[li].type) {
+    case LightType::directional:
+      return light_lanes<LightType::directional>(packet, surfaces, ctx, li, out);
+    case LightType::spot:
+      return light_lanes<LightType::spot>(packet, surfaces, ctx, li, out);
+    case LightType::point:
+      break;
+  }
+  return light_lanes<LightType::point>(packet, surfaces, ctx, li, out);
 }
 
 void store_light(const SamplePacket& packet, int width, const LightLanes& lanes,

@@ -14,6 +14,7 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "io/image/png_support.h"
 #include "scene/render_settings.h"
 
 namespace gloss {
@@ -76,35 +77,7 @@ int parse_dimension(const std::string& path, const std::string& token, const cha
   return value;
 }
 
-// ---- PNG through libpng ----------------------------------------------------------------------
-// libpng reports errors by longjmp back to the setjmp in the run_png_* functions. Those functions
-// and the structs they touch hold no C++ object with a destructor, since longjmp would skip it.
-
-struct PngError {
-  char message[256] = "libpng could not allocate its state";
-  char warning[128] = "";  // the last warning: libpng says why in it before a generic error
-  int system_error = 0;    // errno when libpng gave up (its "Write Error" after a short fwrite)
-};
-
-void on_png_error(png_structp png, png_const_charp message) {
-  auto* error = static_cast<PngError*>(png_get_error_ptr(png));
-  error->system_error = errno;
-  // "Invalid IHDR data" follows the warning that names the field ("Image width exceeds user
-  // limit in IHDR"): both, so the user learns which.
-  if (error->warning[0] != '\0') {
-    std::snprintf(error->message, sizeof error->message, "%s (%s)", message, error->warning);
-  } else {
-    std::snprintf(error->message, sizeof error->message, "%s", message);
-  }
-  png_longjmp(png, 1);
-}
-
-// Warnings (an unknown chunk, a benign CRC policy note) do not stop reading or writing; the last
-// one is kept for the error that may follow.
-void on_png_warning(png_structp png, png_const_charp message) {
-  auto* error = static_cast<PngError*>(png_get_error_ptr(png));
-  if (error != nullptr) std::snprintf(error->warning, sizeof error->warning, "%s", message);
-}
+// ---- PNG through libpng (png_support.h) ----------------------------------------------------
 
 struct PngWriteJob {
   std::FILE* file = nullptr;
@@ -143,74 +116,15 @@ bool run_png_write(PngWriteJob& job) {
   return true;
 }
 
-struct PngReadJob {
-  std::FILE* file = nullptr;
-  png_structp png = nullptr;
-  png_infop info = nullptr;
-  int width = 0, height = 0;
-  std::size_t row_bytes = 0;
-  // What the file's bytes can hold at most once inflated, 0 when its size is unknown: deflate
-  // expands at most 1032:1 (zlib's documented limit: a 258-byte match coded in 2 bits).
-  std::uint64_t inflated_limit = 0;
-  // The image data as stored (before expansion to 8-bit RGB), without filter bytes: a lower
-  // bound of what the file's image data must inflate to.
-  std::uint64_t stored_bytes = 0;
-  PngError error;
-};
-
-// libpng allocates a chunk (text, ICC profile) at its declared length before reading it, even
-// past its chunk_malloc_max, which only warns for ancillary chunks: a 900-byte file declaring a
-// 1.9 GB tEXt got 1.9 GB. No allocation larger than the file can inflate to is granted; libpng
-// skips an ancillary chunk it cannot allocate and fails on a critical one.
-png_voidp allocate_for_png_read(png_structp png, png_alloc_size_t size) {
-  const auto* job = static_cast<const PngReadJob*>(png_get_mem_ptr(png));
-  if (job != nullptr && job->inflated_limit > 0 && size > job->inflated_limit) return nullptr;
-  return std::malloc(size);
-}
-
-void free_for_png(png_structp, png_voidp pointer) {
-  std::free(pointer);
-}
-
-// Reads the header (the 8 signature bytes are already consumed) and sets up 8-bit RGB output.
-bool run_png_read_header(PngReadJob& job) {
-  job.png = png_create_read_struct_2(PNG_LIBPNG_VER_STRING, &job.error, on_png_error,
-                                     on_png_warning, &job, allocate_for_png_read, free_for_png);
-  if (job.png == nullptr) return false;
-  job.info = png_create_info_struct(job.png);
-  if (job.info == nullptr) return false;
-  if (setjmp(png_jmpbuf(job.png))) return false;
-  png_init_io(job.png, job.file);
-  png_set_sig_bytes(job.png, 8);
-  // gloss writes no image larger than a render (scene/render_settings.h); libpng refuses a larger
-  // header before anything is allocated for it (its own default allows 1e6 x 1e6).
-  png_set_user_limits(job.png, kMaxImageSide, kMaxImageSide);
-  png_read_info(job.png, job.info);
+// 8-bit RGB output, whatever the file holds (the scene PNGs gloss writes and reads back).
+void png_to_rgb8(PngReadJob& job) {
   const png_byte color_type = png_get_color_type(job.png, job.info);
   const png_byte bit_depth = png_get_bit_depth(job.png, job.info);
-  const std::uint64_t stored_bits =
-      static_cast<std::uint64_t>(png_get_image_width(job.png, job.info)) *
-      png_get_image_height(job.png, job.info) * png_get_channels(job.png, job.info) * bit_depth;
-  job.stored_bytes = stored_bits / 8;
   if (color_type == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(job.png);
   if (color_type == PNG_COLOR_TYPE_GRAY && bit_depth < 8) png_set_expand_gray_1_2_4_to_8(job.png);
   if (bit_depth == 16) png_set_scale_16(job.png);
   if ((color_type & PNG_COLOR_MASK_ALPHA) != 0) png_set_strip_alpha(job.png);
   if ((color_type & PNG_COLOR_MASK_COLOR) == 0) png_set_gray_to_rgb(job.png);
-  png_set_interlace_handling(job.png);
-  png_read_update_info(job.png, job.info);
-  job.width = static_cast<int>(png_get_image_width(job.png, job.info));
-  job.height = static_cast<int>(png_get_image_height(job.png, job.info));
-  job.row_bytes = png_get_rowbytes(job.png, job.info);
-  return true;
-}
-
-// Reads the pixels and the chunks after them (text may follow the image data).
-bool run_png_read_pixels(PngReadJob& job, png_bytep* rows) {
-  if (setjmp(png_jmpbuf(job.png))) return false;
-  png_read_image(job.png, rows);
-  png_read_end(job.png, job.info);
-  return true;
 }
 
 // PNG keywords: 1 to 79 printable Latin-1 characters, no leading, trailing or double spaces.
@@ -368,35 +282,9 @@ void write_png(const std::string& path, const Image& image, const DisplayTransfo
 }
 
 Png8 read_png(const std::string& path) {
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                       &std::fclose);
-  if (!file) throw InputError(path, std::string("cannot read: ") + std::strerror(errno));
-  png_byte signature[8] = {};
-  if (std::fread(signature, 1, sizeof signature, file.get()) != sizeof signature ||
-      png_sig_cmp(signature, 0, sizeof signature) != 0) {
-    throw InputError(path, "not a PNG file");
-  }
-
-  PngReadJob job;
-  job.file = file.get();
-  std::error_code size_error;
-  const std::uint64_t file_bytes = std::filesystem::file_size(path, size_error);
-  if (!size_error) job.inflated_limit = 1032 * file_bytes;
-  struct Destroy {
-    PngReadJob& job;
-    ~Destroy() {
-      if (job.png != nullptr) png_destroy_read_struct(&job.png, &job.info, nullptr);
-    }
-  } destroy{job};
-  if (!run_png_read_header(job))
-    throw InputError(path, std::string("invalid PNG: ") + job.error.message);
-  // A header claiming more pixels than the file can inflate to is refused before the pixel
-  // buffer (up to 16384 x 16384 x 3 bytes) is allocated: 57 bytes cannot hold such an image.
-  if (job.inflated_limit > 0 && job.stored_bytes > job.inflated_limit) {
-    throw InputError(path, "invalid PNG: its header claims " + std::to_string(job.width) + "x" +
-                               std::to_string(job.height) + " pixels, more than its " +
-                               std::to_string(file_bytes) + " bytes can hold");
-  }
+  // gloss writes no image larger than a render (scene/render_settings.h).
+  PngFile file(path, kMaxImageSide, png_to_rgb8);
+  PngReadJob& job = file.job();
   if (job.row_bytes != static_cast<std::size_t>(job.width) * 3) {
     throw InputError(path, "PNG does not decode to 8-bit RGB");
   }
@@ -415,9 +303,7 @@ Png8 read_png(const std::string& path) {
   png.rgb.resize(job.row_bytes * job.height);
   std::vector<png_bytep> rows(job.height);
   for (int y = 0; y < job.height; ++y) rows[y] = png.rgb.data() + job.row_bytes * y;
-  if (!run_png_read_pixels(job, rows.data())) {
-    throw InputError(path, std::string("invalid PNG: ") + job.error.message);
-  }
+  file.read_rows(rows.data());
 
   png_textp text = nullptr;
   int text_count = 0;

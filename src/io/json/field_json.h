@@ -28,12 +28,14 @@ FieldValue read_field_value(const JsonObjectReader& reader, const std::string& k
 nlohmann::json field_value_json(FieldKind kind, const std::vector<const char*>& choices,
                                 const FieldValue& value);
 
-// Sets every field of table that reader's object holds; a missing required field is an error.
+// Sets every field of table that reader's object holds; a missing required field is an error
+// where it applies (Field::applies, judged on the fields read before it: a light's `type` comes
+// first in its table).
 template <class S>
 void read_fields(const JsonObjectReader& reader, const FieldTable<S>& table, S& out) {
   for (const Field<S>& f : table) {
     if (!reader.has(f.key)) {
-      if (f.required) reader.required(f.key);  // throws "missing required field"
+      if (f.required && f.applies_to(out)) reader.required(f.key);  // "missing required field"
       continue;
     }
     if (f.one_number && reader.required(f.key).is_number()) {  // "scale": 2 for [2, 2, 2]
@@ -61,10 +63,15 @@ void write_changed_fields(const FieldTable<S>& table, const S& value, const S& d
   }
 }
 
-// Adds every field of table to out, in table order.
+// Adds every field of table to out, in table order, except those that do not apply to value
+// and hold their default (S{}'s): a point light's file keeps its old keys, and a spot switched
+// to a point light keeps its cone for a switch back.
 template <class S>
 void write_fields(const FieldTable<S>& table, const S& value, nlohmann::ordered_json& out) {
-  for (const Field<S>& f : table) out[f.key] = field_value_json(f.kind, f.choices, f.get(value));
+  for (const Field<S>& f : table) {
+    if (!f.applies_to(value) && f.get(value) == f.get(S{})) continue;
+    out[f.key] = field_value_json(f.kind, f.choices, f.get(value));
+  }
 }
 
 // The keys of table, plus extra ones the caller reads itself.

@@ -157,6 +157,11 @@ std::string scene_to_json_text(const Scene& scene) {
     root["objects"].push_back(
         object_json(object, known ? scene.material_names[object.material] : std::string()));
   }
+  if (!scene.environment.file.empty()) {
+    Json& environment = root["environment"];
+    environment["file"] = scene.environment.file;
+    write_fields(environment_fields(), scene.environment, environment);
+  }
   write_fields(render_fields(), scene.render, root["render"]);
   std::string out;
   pretty(root, 0, 0, true, out);

@@ -13,6 +13,7 @@
 #include "io/json/json_location.h"
 #include "io/json/material_json.h"
 #include "io/json/name_escape.h"
+#include "io/scene/environment_reader.h"
 #include "io/scene/scene_json_reader.h"
 #include "io/scene/scene_object_reader.h"
 #include "scene/fields/fields.h"
@@ -43,6 +44,34 @@ std::vector<PointLight> read_lights(const JsonObjectReader& top) {
     lights.push_back(light);
   }
   return lights;
+}
+
+// The `environment` block: its map read now (relative paths against the scene's folder), the map
+// and the engine's tables for it counted against what the budget leaves besides the geometry.
+Environment read_environment(const JsonObjectReader& top, const std::string& base_dir,
+                             std::uint64_t claimed_bytes, std::vector<std::string>* warnings) {
+  Environment environment;
+  if (!top.has("environment")) return environment;
+  const JsonObjectReader reader(top.required("environment"), top.file(), "environment",
+                                allowed_keys(environment_fields(), {"file"}));
+  read_fields(reader, environment_fields(), environment);
+  environment.file = reader.string("file");
+  if (environment.file.empty()) reader.fail("file", "must name a map file");
+  const std::filesystem::path file(environment.file);
+  const std::string path =
+      file.is_absolute() || base_dir.empty() ? file.string() : (std::filesystem::path(base_dir) / file).string();
+  const std::uint64_t budget = memory_budget_bytes();
+  if (claimed_bytes >= budget) {
+    reader.fail("file", "no memory budget is left for a map after the geometry (" +
+                            memory_budget_text() + ")");
+  }
+  try {
+    environment.map = read_environment_map(path, budget - claimed_bytes, warnings);
+  } catch (const InputError& error) {
+    // One line naming the scene, the field and the map file (error.what() names the file).
+    reader.fail("file", error.what());
+  }
+  return environment;
 }
 
 MaterialMap read_materials(const JsonObjectReader& top) {
@@ -116,7 +145,8 @@ Scene parse_scene(const std::string& text, const std::string& path,
   refuse_materials_file(root, path);
   const JsonObjectReader top(
       root, path, "",
-      allowed_keys(scene_fields(), {"camera", "lights", "materials", "objects", "render"}));
+      allowed_keys(scene_fields(),
+                   {"camera", "lights", "materials", "objects", "render", "environment"}));
 
   Scene scene;
   scene.path = path;
@@ -141,6 +171,7 @@ Scene parse_scene(const std::string& text, const std::string& path,
     read_scene_object(objects[i], i, context, materials, pending);
   }
   resolve_materials(path, materials, pending, scene);
+  scene.environment = read_environment(top, context.base_dir, claimed_bytes, warnings);
   validate_scene(scene);
   return scene;
 }
@@ -165,6 +196,14 @@ void save_scene(const Scene& scene, const std::string& path) {
       if (object.type != ObjectType::mesh || file.empty() || file.is_absolute()) continue;
       const fs::path relative = (from / file).lexically_normal().lexically_relative(to);
       object.params.file = relative.empty() ? (from / file).string() : relative.generic_string();
+    }
+  }
+  if (!scene.path.empty() && from != to && !moved.environment.file.empty()) {
+    const fs::path file(moved.environment.file);
+    if (!file.is_absolute()) {
+      const fs::path relative = (from / file).lexically_normal().lexically_relative(to);
+      moved.environment.file =
+          relative.empty() ? (from / file).string() : relative.generic_string();
     }
   }
   moved.path = path;

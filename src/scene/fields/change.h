@@ -10,9 +10,12 @@ enum class ChangeClass {
                  // recombine cached per-pixel factors, no rays
   exponent = 2,  // shininess, Phong / Blinn-Phong, pow mode, which material an object uses:
                  // rebuild the per-pixel factors from cached per-sample cosines, no rays
-  light = 3,     // light position, attenuation, lights added or removed, shadows switch, or a
+  environment = 3,  // the environment's map or rotation (and, under an environment, what
+                    // `exponent` covers: its specular term depends on the exponent and model):
+                    // the environment's factors from the cached hits, no primary rays
+  light = 4,     // light position, attenuation, lights added or removed, shadows switch, or a
                  // change of the render plan: shadow rays and re-shade, primary hits reused
-  full = 4,      // camera, geometry, resolution, spp target, seed: progressive restart
+  full = 5,      // camera, geometry, resolution, spp target, seed: progressive restart
 };
 
 const char* to_string(ChangeClass change);

@@ -69,6 +69,12 @@ struct Field {
   std::vector<const char*> choices;         // names of a choice field, in enum order
   FieldValue (*get)(const S&) = nullptr;
   void (*set)(S&, const FieldValue&) = nullptr;
+  // Whether the value's other fields make this one matter (a light's type: a directional light
+  // has no position); null: always. A field that does not apply is kept and ignored: not
+  // required, not shown, written only when it differs from its default.
+  bool (*applies)(const S&) = nullptr;
+
+  bool applies_to(const S& s) const { return applies == nullptr || applies(s); }
 
   // Builder steps for the tables' rows.
   Field& range(double lo, double hi) {
@@ -97,6 +103,10 @@ struct Field {
   }
   Field& explain(const char* text) {
     help = text;
+    return *this;
+  }
+  Field& only_when(bool (*condition)(const S&)) {
+    applies = condition;
     return *this;
   }
   Field& uniform_allowed() {

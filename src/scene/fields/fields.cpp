@@ -65,34 +65,93 @@ const FieldTable<PhysicalReference>& reference_fields() {
   return table;
 }
 
-const FieldTable<PointLight>& light_fields() {
-  static const FieldTable<PointLight> table = [] {
-    constexpr FieldKind colour = FieldKind::colour;
-    FieldTable<PointLight> t;
-    t.push_back(vec3_field<&PointLight::position>(FieldKind::vector, "position", "position")
+namespace {
+bool positioned(const Light& l) {
+  return has_position(l.type);
+}
+bool aimed(const Light& l) {
+  return l.type != LightType::point;
+}
+bool spot(const Light& l) {
+  return l.type == LightType::spot;
+}
+bool directional(const Light& l) {
+  return l.type == LightType::directional;
+}
+}  // namespace
+
+const FieldTable<Light>& light_fields() {
+  static const FieldTable<Light> table = [] {
+    constexpr FieldKind colour = FieldKind::colour, vector = FieldKind::vector;
+    FieldTable<Light> t;
+    // First: whether the other fields apply is judged on it (read_fields reads in table order).
+    t.push_back(choice_field<&Light::type>("type", "type", {"point", "directional", "spot"})
+                    .invalidates(ChangeClass::light)
+                    .explain("point: from a position; directional: from a direction, no "
+                             "attenuation; spot: a point light cut to a cone"));
+    t.push_back(vec3_field<&Light::position>(vector, "position", "position")
                     .range(-kMaxCoordinate, kMaxCoordinate)
                     .ui(-1e4, 1e4)
                     .invalidates(ChangeClass::light)
                     .needed()
+                    .only_when(positioned)
                     .explain("P, world units"));
-    t.push_back(vec3_field<&PointLight::ambient>(colour, "ambient", "La ambient")
+    t.push_back(vec3_field<&Light::direction>(vector, "direction", "direction")
+                    .range(-kMaxCoordinate, kMaxCoordinate)
+                    .ui(-1.0, 1.0)
+                    .invalidates(ChangeClass::light)
+                    .only_when(aimed)
+                    .explain("D, the way the light travels (any length but 0); camera space "
+                             "(x right, y up, -z ahead) when it follows the camera"));
+    t.push_back(vec3_field<&Light::ambient>(colour, "ambient", "La ambient")
                     .invalidates(ChangeClass::shade)
                     .explain("La: added to the ambient sum, never shadowed or attenuated"));
-    t.push_back(vec3_field<&PointLight::diffuse>(colour, "diffuse", "Ld diffuse")
+    t.push_back(vec3_field<&Light::diffuse>(colour, "diffuse", "Ld diffuse")
                     .invalidates(ChangeClass::shade)
                     .explain("Ld: the colour the diffuse term sees"));
-    t.push_back(vec3_field<&PointLight::specular>(colour, "specular", "Ls specular")
+    t.push_back(vec3_field<&Light::specular>(colour, "specular", "Ls specular")
                     .invalidates(ChangeClass::shade)
                     .explain("Ls: the colour the highlight sees"));
+    t.push_back(vec3_field<&Light::attenuation>(vector, "attenuation", "attenuation")
+                    .range(0.0, kInf)
+                    .ui(0.0, 100.0)
+                    .invalidates(ChangeClass::light)
+                    .only_when(positioned)
+                    .explain("c0, c1, c2: 1 / (c0 + c1 d + c2 d^2), not all 0"));
+    t.push_back(scalar_field<&Light::cutoff>(FieldKind::number, "cutoff", "cutoff")
+                    .range(0.0, 90.0)
+                    .open(true, false)
+                    .ui(0.01, 90.0)
+                    .invalidates(ChangeClass::light)
+                    .only_when(spot)
+                    .explain("the cone's half-angle, degrees: no light outside it"));
+    t.push_back(scalar_field<&Light::inner>(FieldKind::number, "inner", "inner")
+                    .range(0.0, 90.0)
+                    .ui(0.0, 90.0)
+                    .invalidates(ChangeClass::light)
+                    .only_when(spot)
+                    .explain("half-angle of full strength, degrees, used as min(inner, cutoff); "
+                             "the edge fades between them (at cutoff or above: a hard edge)"));
+    t.push_back(scalar_field<&Light::exponent>(FieldKind::number, "exponent", "exponent")
+                    .range(0.0, 1e6)
+                    .ui(0.0, 1e3, true)
+                    .invalidates(ChangeClass::light)
+                    .only_when(spot)
+                    .explain("fall-off towards the edge: cos_t^exponent (OpenGL's "
+                             "GL_SPOT_EXPONENT)"));
     t.push_back(
-        vec3_field<&PointLight::attenuation>(FieldKind::vector, "attenuation", "attenuation")
-            .range(0.0, kInf)
-            .ui(0.0, 100.0)
+        scalar_field<&Light::follow_camera>(FieldKind::flag, "follow_camera", "follow camera")
             .invalidates(ChangeClass::light)
-            .explain("c0, c1, c2: 1 / (c0 + c1 d + c2 d^2), not all 0"));
+            .only_when(directional)
+            .explain("a headlight: the direction is in camera space and turns with "
+                     "the camera"));
     return t;
   }();
   return table;
+}
+
+const char* to_string(LightType type) {
+  return light_fields().front().choices.at(static_cast<std::size_t>(type));
 }
 
 const FieldTable<RenderSettings>& render_fields() {
@@ -158,6 +217,20 @@ const FieldTable<RenderSettings>& render_fields() {
                     .ui(0.001, 0.25, true)
                     .explain("adaptive: refine where neighbouring centre pixels differ by more, "
                              "per channel of the displayed total (after exposure, tone, clamp)"));
+    t.push_back(scalar_field<&RenderSettings::env_resolution>(whole, "env_resolution",
+                                                              "environment map resolution")
+                    .range(1, 8)
+                    .ui(1, 8)
+                    .invalidates(ChangeClass::environment)
+                    .explain("the fast path's prefiltered maps: texels per lobe width"));
+    t.push_back(
+        scalar_field<&RenderSettings::env_samples>(whole, "env_samples", "environment directions")
+            .range(0, kMaxEnvSamples)
+            .ui(0, 4096, true)
+            .invalidates(ChangeClass::environment)
+            .explain("directions per sample that converge on the environment's exact "
+                     "terms (visibility included with shadows on); 0: the fast path "
+                     "alone"));
     return t;
   }();
   return table;
@@ -184,6 +257,31 @@ const FieldTable<Camera>& camera_fields() {
                     .open(true, true)
                     .ui(1.0, 150.0)
                     .explain("vertical field of view, degrees"));
+    return t;
+  }();
+  return table;
+}
+
+const FieldTable<Environment>& environment_fields() {
+  static const FieldTable<Environment> table = [] {
+    FieldTable<Environment> t;
+    // The engine keeps the environment's terms at intensity 1 and scales them as it recombines.
+    t.push_back(scalar_field<&Environment::intensity>(FieldKind::number, "intensity", "intensity")
+                    .range(0.0, 1e6)
+                    .ui(0.0, 10.0)
+                    .invalidates(ChangeClass::shade)
+                    .explain("the map's radiance times this"));
+    t.push_back(scalar_field<&Environment::rotation>(FieldKind::number, "rotation", "rotation")
+                    .range(-1e6, 1e6)
+                    .ui(-180.0, 180.0)
+                    .invalidates(ChangeClass::environment)
+                    .explain("degrees about the up axis; positive turns the map counter-clockwise "
+                             "seen from above"));
+    t.push_back(
+        scalar_field<&Environment::as_background>(FieldKind::flag, "as_background", "as background")
+            .invalidates(ChangeClass::shade)
+            .explain("primary rays that hit nothing see the map; off: the background "
+                     "colour"));
     return t;
   }();
   return table;
@@ -264,8 +362,12 @@ bool operator==(const Material& a, const Material& b) {
   return same_fields(material_fields(), a, b) && a.preset == b.preset && a.reference == b.reference;
 }
 
-bool operator==(const PointLight& a, const PointLight& b) {
+bool operator==(const Light& a, const Light& b) {
   return same_fields(light_fields(), a, b);
+}
+
+bool operator==(const Environment& a, const Environment& b) {
+  return same_fields(environment_fields(), a, b) && a.file == b.file && a.map == b.map;
 }
 
 bool operator==(const Camera& a, const Camera& b) {

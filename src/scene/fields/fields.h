@@ -15,9 +15,11 @@ namespace gloss {
 const FieldTable<Material>& material_fields();
 // A material's physical reference (its optional `reference` block).
 const FieldTable<PhysicalReference>& reference_fields();
-const FieldTable<PointLight>& light_fields();
+const FieldTable<Light>& light_fields();
 const FieldTable<RenderSettings>& render_fields();
 const FieldTable<Camera>& camera_fields();
+// The environment light's numbers (its map is read and compared apart: scene_diff.h).
+const FieldTable<Environment>& environment_fields();
 // The scene's own fields (background, A_scene).
 const FieldTable<Scene>& scene_fields();
 // An object's transform (the "transform" block of an object) and its own fields ("hidden").

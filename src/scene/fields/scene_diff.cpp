@@ -43,6 +43,8 @@ const char* to_string(ChangeClass change) {
       return "shade";
     case ChangeClass::exponent:
       return "exponent";
+    case ChangeClass::environment:
+      return "environment";
     case ChangeClass::light:
       return "light";
     case ChangeClass::full:
@@ -56,6 +58,14 @@ SceneDiff diff_scenes(const Scene& before, const Scene& after) {
   diff_fields(camera_fields(), before.camera, after.camera, diff);
   diff_fields(render_fields(), before.render, after.render, diff);
   diff_fields(scene_fields(), before, after, diff);
+  diff_fields(environment_fields(), before.environment, after.environment, diff);
+  // Another map (or none): its factors anew; added or removed, the plan changes too
+  // (engine/change_class.h raises that to `light`).
+  if (before.environment.map != after.environment.map) {
+    diff.change = raise(diff.change, ChangeClass::environment);
+    diff.any = true;
+  }
+  diff.any = diff.any || before.environment.file != after.environment.file;
   // Lights added or removed need new shadow rays and factors.
   if (before.lights.size() != after.lights.size()) {
     diff.change = raise(diff.change, ChangeClass::light);

@@ -87,10 +87,15 @@ void check_render(const std::string& file, const RenderSettings& render) {
   }
 }
 
-void check_light(const std::string& file, const std::string& field, const PointLight& light) {
+// Every type's fields are checked, those it ignores too: they are kept for a switch back.
+void check_light(const std::string& file, const std::string& field, const Light& light) {
   if (light.attenuation == glm::vec3(0.0f)) {
     fail_field(file, field + ".attenuation",
                "coefficients [c0, c1, c2] must be >= 0 and not all 0");
+  }
+  // Normalised in double (shading/light_source.h): only an exact 0 has no direction.
+  if (glm::dvec3(light.direction) == glm::dvec3(0.0)) {
+    fail_field(file, field + ".direction", "must not be [0, 0, 0]: it gives the light's way");
   }
 }
 
@@ -164,6 +169,16 @@ void check_memory(const Scene& scene, SampleMemory samples) {
                      " MB with it, budget " + memory_budget_text());
     }
   }
+  if (scene.environment.present()) {
+    total += environment_bytes(scene.environment);
+    if (total > budget) {
+      const Image& map = scene.environment.map->radiance;
+      fail_field(file, "environment.file",
+                 std::to_string(map.width) + "x" + std::to_string(map.height) +
+                     " map: the scene needs ~" + std::to_string(megabytes(total)) +
+                     " MB with it, budget " + memory_budget_text());
+    }
+  }
   const RenderSettings& r = scene.render;
   const std::uint64_t render = render_bytes(r, scene.lights.size(), samples);
   if (total + render > budget) {
@@ -185,6 +200,7 @@ void validate_scene(const Scene& scene, SampleMemory samples) {
   check_fields(file, "render", render_fields(), scene.render);
   check_render(file, scene.render);
   check_fields(file, "", scene_fields(), scene);
+  check_fields(file, "environment", environment_fields(), scene.environment);
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const std::string field = index_path("lights", i);
     check_fields(file, field, light_fields(), scene.lights[i]);

@@ -37,4 +37,10 @@ std::uint64_t render_bytes(const RenderSettings& render, std::size_t lights, Sam
          static_cast<std::uint64_t>(rows) * sample_row_bytes(render.width, render.spp, lights);
 }
 
+std::uint64_t environment_bytes(const Environment& environment) {
+  if (!environment.present()) return 0;
+  const Image& map = environment.map->radiance;
+  return static_cast<std::uint64_t>(map.width) * map.height * kEnvironmentBytesPerTexel;
+}
+
 }  // namespace gloss

@@ -21,6 +21,11 @@ constexpr std::uint64_t kBytesPerPixelLight = 8;
 // gloss-cli renders the sample cache in bands of rows of about this many bytes (at least 4 rows).
 constexpr std::uint64_t kSampleBandBytes = std::uint64_t(256) << 20;
 
+// Per texel of an environment map besides its decoded samples: the map (12 bytes of RGB float)
+// and the engine's tables for it (its prefiltered levels, at most about the map's own size, and
+// the sampling tables, 4 bytes): rounded up.
+constexpr std::uint64_t kEnvironmentBytesPerTexel = 32;
+
 // How a renderer holds its samples: gloss-cli's renderer band by band, the editor's progressive
 // renderer for the whole image.
 enum class SampleMemory { banded, whole_image };
@@ -37,6 +42,9 @@ std::uint64_t sample_row_bytes(int width, int spp, std::size_t lights);
 
 // The rows of one band of gloss-cli's renderer: as many as fit kSampleBandBytes, 4 to height.
 int sample_band_rows(int width, int height, int spp, std::size_t lights);
+
+// Bytes an environment map and the engine's tables for it hold (0 without one).
+std::uint64_t environment_bytes(const Environment& environment);
 
 // Bytes of the render for the scene's render settings and lights.
 std::uint64_t render_bytes(const RenderSettings& render, std::size_t lights, SampleMemory samples);

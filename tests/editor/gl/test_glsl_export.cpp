@@ -232,8 +232,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         Plant{"blinn_cosine_for_phong", "float c = gloss_model_cosine(f, gloss_model);",
               "float c = f.cos_blinn;"},
-        Plant{"attenuation_dropped", "float att = gloss_attenuation(attenuation_coeffs, d);",
-              "float att = 1.0;"},
+        Plant{"attenuation_dropped",
+              "float att = gloss_attenuation(gloss_light_attenuation[i], d);", "float att = 1.0;"},
         Plant{"ambient_light_sum_dropped", "ambient_light += gloss_light_ambient[i];", ""},
         Plant{"two_sided_rule_dropped", "gloss_two_sided(n_g, n, v);", "", true},
         // pow of a negative cosine is undefined in GLSL (non-finite on llvmpipe): counted as

@@ -107,30 +107,19 @@ TEST(LobeAndInspectScript, InspectPrintsTheReading) {
   EXPECT_EQ(r.result.next, LineResult::Next::go_on);
   EXPECT_EQ(r.err, "");
   const Reading reading = read(r.out);
-  const std::vector<std::string> expected = {"pixel",
-                                             "object",
-                                             "material",
-                                             "alpha",
-                                             "energy_factor",
-                                             "total",
-                                             "emissive",
-                                             "ambient",
-                                             "diffuse",
-                                             "specular",
-                                             "light0.ndl",
-                                             "light0.c",
-                                             "light0.c_alpha",
-                                             "light0.attenuation",
-                                             "light0.visibility",
-                                             "light0.diffuse",
-                                             "light0.specular",
-                                             "light1.ndl",
-                                             "light1.c",
-                                             "light1.c_alpha",
-                                             "light1.attenuation",
-                                             "light1.visibility",
-                                             "light1.diffuse",
-                                             "light1.specular"};
+  const std::vector<std::string> expected = {"pixel",          "object",
+                                             "material",       "alpha",
+                                             "energy_factor",  "total",
+                                             "emissive",       "ambient",
+                                             "diffuse",        "specular",
+                                             "light0.ndl",     "light0.c",
+                                             "light0.c_alpha", "light0.attenuation",
+                                             "light0.spot",    "light0.visibility",
+                                             "light0.diffuse", "light0.specular",
+                                             "light1.ndl",     "light1.c",
+                                             "light1.c_alpha", "light1.attenuation",
+                                             "light1.spot",    "light1.visibility",
+                                             "light1.diffuse", "light1.specular"};
   EXPECT_EQ(reading.names, expected) << r.out;
   EXPECT_EQ(reading.words.at("pixel"), "15 16 64x48");
   EXPECT_EQ(reading.words.at("object"), "left");
@@ -148,6 +137,7 @@ TEST(LobeAndInspectScript, InspectPrintsTheReading) {
     const double c_alpha = reading.numbers.at(l + "c_alpha")[0];
     const double att = reading.numbers.at(l + "attenuation")[0];
     const double vis = reading.numbers.at(l + "visibility")[0];
+    EXPECT_EQ(reading.numbers.at(l + "spot"), std::vector<double>{1.0}) << l;  // point lights
     EXPECT_NEAR(ndl, i == 0 ? 0.559512 : 0.494857, 1e-5) << l;
     EXPECT_NEAR(c_alpha, std::pow(reading.numbers.at(l + "c")[0], 64.0), 1e-7) << l;
     const PointLight& light = scene.lights[static_cast<std::size_t>(i)];

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "editor/model/document/document.h"
 #include "editor/model/document/object_commands.h"
@@ -21,14 +22,15 @@ class CommandError : public std::runtime_error {
 
 // The struct a field edit targets, and how SetField::index names it.
 enum class FieldPart {
-  material,   // the material object `index` uses (shared materials change on every user)
-  light,      // light `index`
-  render,     // the render settings
-  camera,     // the camera
-  scene,      // the scene's own fields: background, ambient
-  reference,  // the physical reference of the material object `index` uses (it must have one)
-  transform,  // object `index`'s transform (translate, rotate, scale, pivot)
-  object,     // object `index`'s own fields (hidden)
+  material,     // the material object `index` uses (shared materials change on every user)
+  light,        // light `index`
+  render,       // the render settings
+  camera,       // the camera
+  scene,        // the scene's own fields: background, ambient
+  reference,    // the physical reference of the material object `index` uses (it must have one)
+  transform,    // object `index`'s transform (translate, rotate, scale, pivot)
+  object,       // object `index`'s own fields (hidden)
+  environment,  // the environment light's numbers (intensity, rotation, as_background)
 };
 const char* to_string(FieldPart part);
 
@@ -80,6 +82,12 @@ struct RemoveLight {
 struct SetCamera {
   Camera camera;
 };
+// Gives the scene the environment map `file` (read when the command applies: a path, relative to
+// the working folder or else to the scene's folder, or a shipped map's name such as "studio"),
+// keeping intensity, rotation and background; an empty file removes the environment light.
+struct SetEnvironment {
+  std::string file;
+};
 // Orbits the current camera about its target (camera.h's orbit_camera), degrees.
 struct OrbitCamera {
   float yaw_deg = 0.0f;
@@ -101,7 +109,9 @@ using Command =
                  OrbitCamera, SetTessellation, ReplaceScene, SetReference, ApplyFit,
                  // objects and material identities (object_commands.h)
                  AddObjects, DeleteObjects, DuplicateObjects, SetHidden, SoloObjects, RenameObject,
-                 TransformObjects, RenameMaterial, AssignMaterial, NewMaterial>;
+                 TransformObjects, RenameMaterial, AssignMaterial, NewMaterial,
+                 // the environment light's map
+                 SetEnvironment>;
 
 // Applies command to scene and validates the result (scene/fields/validation.h, the document's one
 // validator). Throws CommandError naming the bad argument or field; scene is then unchanged.
@@ -118,6 +128,9 @@ std::optional<Command> field_command(FieldPart part, int index, const FieldTable
   }
   return std::nullopt;
 }
+
+// The shipped environment maps (assets/environments/NAME.exr), by name: studio, sunset, city.
+const std::vector<std::string>& shipped_environments();
 
 // A reference as labels and scripts write it: "gold r 0.2", "dielectric 0.6 0.1 0.1 r 0.5".
 std::string reference_text(const PhysicalReference& reference);

@@ -1,10 +1,17 @@
 #include "editor/model/export/glsl_export.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <functional>
 #include <stdexcept>
 
 #include "base/atomic_file.h"
 #include "base/printable_text.h"
+#include "editor/model/export/environment_atlas.h"
+#include "io/image/image_io.h"
+#include "shading/light_source.h"
 
 namespace gloss {
 
@@ -24,22 +31,82 @@ std::string vec3_literal(const glm::vec3& v) {
   return "vec3(" + literal(v.x) + ", " + literal(v.y) + ", " + literal(v.z) + ")";
 }
 
-// `const vec3 NAME[N] = vec3[N](...);` with one entry per light and its source on each line.
-std::string light_array(const Scene& scene, const char* name, const char* field,
-                        glm::vec3 PointLight::*member) {
+// `const TYPE NAME[N] = TYPE[N](...);` with one entry per light, entry(light) its literal,
+// and its source on each line.
+std::string light_array(const Scene& scene, const char* type, const char* name, const char* field,
+                        const std::function<std::string(const Light&)>& entry) {
   const std::string n = std::to_string(scene.lights.size());
-  std::string out = "const vec3 " + std::string(name) + "[" + n + "] = vec3[" + n + "](\n";
+  std::string out =
+      std::string("const ") + type + " " + name + "[" + n + "] = " + type + "[" + n + "](\n";
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-    out += "    " + vec3_literal(scene.lights[i].*member) +
-           (i + 1 < scene.lights.size() ? "," : " ") + "  // lights[" + std::to_string(i) + "]." +
-           field + "\n";
+    out += "    " + entry(scene.lights[i]) + (i + 1 < scene.lights.size() ? "," : " ") +
+           "  // lights[" + std::to_string(i) + "]." + field + "\n";
   }
   return out + ");\n";
 }
 
+std::string light_vec3_array(const Scene& scene, const char* name, const char* field,
+                             glm::vec3 Light::*member) {
+  return light_array(scene, "vec3", name, field,
+                     [&](const Light& l) { return vec3_literal(l.*member); });
+}
+
+// 1 - cos(degrees) without the cancellation near 0: 2 sin^2(degrees / 2).
+float one_minus_cos(double degrees) {
+  const double half = std::sin(degrees * (3.14159265358979323846 / 360.0));
+  return static_cast<float>(2.0 * half * half);
+}
+
+// The environment's part of the shader: its constants and environment.glsl, or a line saying
+// there is none. atlas: the file the levels are written to, as the shader should name it.
+std::string environment_part(const Scene& scene, const std::string& atlas) {
+  if (!scene.environment.present()) {
+    return "// The scene has no environment light.\n#define GLOSS_ENVIRONMENT 0\n\n";
+  }
+  PrefilterSettings settings;
+  settings.texels_per_lobe = scene.render.env_resolution;
+  const EnvironmentAtlas packed =
+      make_environment_atlas(*prefiltered_environment(scene.environment.map, settings));
+  const double a = scene.environment.rotation * (3.14159265358979323846 / 180.0);
+  std::string s;
+  s += "// The scene's environment light (" + printable_text(scene.environment.file) +
+       "), its fast path: the map\n";
+  s += "// prefiltered for Phong lobes of alpha 0, 1, 2 ... 1024 and the map itself, packed in\n";
+  s += "// " + printable_text(atlas) + " beside this file (" + std::to_string(packed.image.width) +
+       " x " + std::to_string(packed.image.height) +
+       ", RGB float; PFM stores rows bottom to top: upload it with row 0\n";
+  s += "// the image's top row, GL_RGB32F, and bind it to gloss_env_atlas). No horizon, no\n";
+  s += "// shadows and, for Blinn-Phong, the Phong level of alpha / 4: docs/accuracy.md.\n";
+  s += "#define GLOSS_ENVIRONMENT 1\n";
+  s += "uniform sampler2D gloss_env_atlas;  // " + printable_text(atlas) + "\n";
+  s += "const ivec4 gloss_env_level[13] = ivec4[13](\n";
+  for (std::size_t k = 0; k < packed.levels.size(); ++k) {
+    const glm::ivec4& l = packed.levels[k];
+    s += "    ivec4(" + std::to_string(l.x) + ", " + std::to_string(l.y) + ", " +
+         std::to_string(l.z) + ", " + std::to_string(l.w) + ")" +
+         (k + 1 < packed.levels.size() ? "," : " ") +
+         (k + 1 < packed.levels.size() ? "  // level " + std::to_string(k) : "  // the map") + "\n";
+  }
+  s += ");\n";
+  s += "const vec2 gloss_env_rotation = vec2(" + literal(static_cast<float>(std::cos(a))) + ", " +
+       literal(static_cast<float>(std::sin(a))) + ");  // environment.rotation " +
+       literal(scene.environment.rotation) + " degrees\n";
+  s += "const float gloss_env_intensity = " + literal(scene.environment.intensity) +
+       ";  // environment.intensity\n";
+  s += "// ---- shaders/environment.glsl ----\n";
+  s += kEnvironmentGlsl;
+  s += "// ---- end of shaders/environment.glsl ----\n\n";
+  return s;
+}
+
 }  // namespace
 
-std::string export_glsl(const Scene& scene, int material) {
+std::string environment_atlas_name(const std::string& shader_path) {
+  const std::filesystem::path p(shader_path);
+  return p.stem().string() + "-environment.pfm";
+}
+
+std::string export_glsl(const Scene& scene, int material, const std::string& atlas) {
   if (material < 0 || material >= static_cast<int>(scene.materials.size())) {
     throw std::out_of_range("no material " + std::to_string(material));
   }
@@ -55,9 +122,8 @@ std::string export_glsl(const Scene& scene, int material) {
   s += "// For GLSL ES 3.00 / WebGL 2, make the line above `#version 300 es`; nothing else "
        "changes.\n";
   s += "// Exported by gloss (Export GLSL): the shading contract of docs/spec/shading.md for\n";
-  s += "// " + where + " under the scene's " + std::to_string(scene.lights.size()) +
-       " point light(s)" + (scene.path.empty() ? "" : ", from " + printable_text(scene.path)) +
-       ".\n";
+  s += "// " + where + " under the scene's " + std::to_string(scene.lights.size()) + " light(s)" +
+       (scene.path.empty() ? "" : ", from " + printable_text(scene.path)) + ".\n";
   s += "//\n";
   s += "// The host program supplies, per fragment, in world space:\n";
   s += "//   gloss_position  the surface point p\n";
@@ -90,15 +156,35 @@ std::string export_glsl(const Scene& scene, int material) {
        to_string(scene.render.model) + "\" (0 GLOSS_PHONG, 1 GLOSS_BLINN_PHONG)\n";
   s += std::string("const bool gloss_energy_normalize = ") +
        (scene.render.energy_normalize ? "true" : "false") + ";  // render.energy_normalize\n\n";
-  s += "// The point lights, in the scene's order.\n";
+  s += "// The lights, in the scene's order.\n";
   s += "#define GLOSS_LIGHT_COUNT " + std::to_string(scene.lights.size()) + "\n";
   if (!scene.lights.empty()) {
-    s += light_array(scene, "gloss_light_position", "position", &PointLight::position);
-    s += light_array(scene, "gloss_light_ambient", "ambient (La)", &PointLight::ambient);
-    s += light_array(scene, "gloss_light_diffuse", "diffuse (Ld)", &PointLight::diffuse);
-    s += light_array(scene, "gloss_light_specular", "specular (Ls)", &PointLight::specular);
-    s += light_array(scene, "gloss_light_attenuation", "attenuation (c0, c1, c2)",
-                     &PointLight::attenuation);
+    s += light_vec3_array(scene, "gloss_light_position", "position", &Light::position);
+    s += light_vec3_array(scene, "gloss_light_ambient", "ambient (La)", &Light::ambient);
+    s += light_vec3_array(scene, "gloss_light_diffuse", "diffuse (Ld)", &Light::diffuse);
+    s += light_vec3_array(scene, "gloss_light_specular", "specular (Ls)", &Light::specular);
+    s += light_vec3_array(scene, "gloss_light_attenuation", "attenuation (c0, c1, c2)",
+                          &Light::attenuation);
+    bool headlight = false;
+    for (const Light& l : scene.lights) {
+      headlight |= l.type == LightType::directional && l.follow_camera;
+    }
+    if (headlight) {
+      s += "// A light that follows the camera has its direction turned into the world frame of\n"
+           "// the scene's camera (camera.eye, target, up); recompute it for another camera.\n";
+    }
+    s += light_array(scene, "vec3", "gloss_light_direction", "direction (unit, world space)",
+                     [&](const Light& l) {
+                       return vec3_literal(glm::vec3(world_light_direction(l, scene.camera)));
+                     });
+    s += light_array(scene, "vec4", "gloss_light_cone",
+                     "type, 1 - cos(cutoff), 1 - cos(min(inner, cutoff)), exponent",
+                     [&](const Light& l) {
+                       return "vec4(" + literal(float(static_cast<int>(l.type))) + ", " +
+                              literal(one_minus_cos(l.cutoff)) + ", " +
+                              literal(one_minus_cos(std::min(l.inner, l.cutoff))) + ", " +
+                              literal(l.exponent) + ")";
+                     });
   }
   s += "\n// Visibility of light i from p: 1 lit, 0 shadowed.\n";
   s += scene.render.shadows
@@ -106,6 +192,7 @@ std::string export_glsl(const Scene& scene, int material) {
              "// test: replace the body with your shadow-map lookup.\n"
            : "// The scene has shadows off (render.shadows).\n";
   s += "float gloss_visibility(int light, vec3 p, vec3 n_g) {\n  return 1.0;\n}\n\n";
+  s += environment_part(scene, atlas);
   s += "// ---- shaders/phong_contract.glsl ----\n";
   s += kPhongContractGlsl;
   s += "// ---- end of shaders/phong_contract.glsl ----\n\n";
@@ -122,7 +209,15 @@ std::string export_glsl(const Scene& scene, int material) {
 }
 
 void write_glsl_export(const std::string& path, const Scene& scene, int material) {
-  write_text_atomically(path, export_glsl(scene, material));
+  const std::string atlas = environment_atlas_name(path);
+  if (scene.environment.present()) {
+    PrefilterSettings settings;
+    settings.texels_per_lobe = scene.render.env_resolution;
+    write_pfm(
+        (std::filesystem::path(path).parent_path() / atlas).string(),
+        make_environment_atlas(*prefiltered_environment(scene.environment.map, settings)).image);
+  }
+  write_text_atomically(path, export_glsl(scene, material, atlas));
 }
 
 }  // namespace gloss

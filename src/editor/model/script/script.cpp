@@ -59,6 +59,20 @@ ScriptAction parse_light(Tokens& t) {
   return parse_field(t, light_fields(), FieldPart::light, light, t.word("light field"));
 }
 
+// `environment FILE|NAME|off`, `environment rotation DEG`, `environment intensity X`,
+// `environment background on|off` (or any key of the environment's table).
+ScriptAction parse_environment(Tokens& t) {
+  const std::string& what = t.word("environment file, name, off or field");
+  if (what == "off" || what == "none") return Command(SetEnvironment{});
+  if (what == "background") {
+    return parse_field(t, environment_fields(), FieldPart::environment, 0, "as_background");
+  }
+  if (find_field(environment_fields(), what) != nullptr) {
+    return parse_field(t, environment_fields(), FieldPart::environment, 0, what);
+  }
+  return Command(SetEnvironment{what});
+}
+
 // Shorter spellings of render fields, kept working: `shadows on`, `energy on`, `spp 16`,
 // `encoding srgb`, `exposure STOPS` (once a view preference, now the document's render.exposure),
 // `tone aces`.
@@ -235,6 +249,7 @@ ScriptAction parse_line(Tokens& t) {
     return Command(c);
   }
   if (verb == "light") return parse_light(t);
+  if (verb == "environment") return parse_environment(t);
   // Issue 24: objects by index or name, material names (script_objects.cpp).
   if (verb == "object" || verb == "material" || verb == "assign" || verb == "save" ||
       verb == "browse" || verb == "gizmo") {

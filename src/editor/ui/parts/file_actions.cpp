@@ -197,6 +197,12 @@ void FileActions::browser_action(const std::string& path) {
       case BrowsePurpose::export_glsl:
         export_glsl_shader(path);
         break;
+      case BrowsePurpose::open_environment:
+        // The command reads the map; a bad file throws (the panel shows why) and the scene
+        // keeps what it had.
+        m_document.execute(SetEnvironment{path});
+        m_commands.info("environment " + path);
+        break;
     }
     browser.open = false;
     save_last_folder(m_session.config_folder, browser.last_folder);

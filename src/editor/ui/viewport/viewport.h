@@ -156,6 +156,12 @@ class Viewport {
   void handle_input(Commands& commands, ViewSettings& view, Selection& selection,
                     const InputState& input, double now_s);
   void draw_light_markers(const Scene& scene, const Selection& selection, ImDrawList* list) const;
+  // viewport_gizmos.cpp: directional and spot lights' arrows, cones and aim handles; the
+  // environment turned by Ctrl+drag.
+  void draw_light_gizmos(const Scene& scene, const Selection& selection, ImDrawList* list) const;
+  int aim_handle_at(const Scene& scene, ImVec2 press) const;  // light index or -1
+  void drag_aim_handle(Commands& commands, ImVec2 mouse) const;
+  void turn_environment(Commands& commands, float dx_px) const;
   int pane_at(ImVec2 screen) const;  // -1: over no image pane
   // The pixel of the document's render size (width x height) under screen point p in an image
   // pane (not the A/B legend); false outside them.
@@ -304,11 +310,13 @@ class Viewport {
   ExposureHistogram m_histogram;
 
   // Gesture state (viewport_input.cpp).
-  ViewportGizmo m_gizmo;          // the selection's transform gizmo and its drag (gizmo.h)
-  int m_drag_button = -1;         // ImGuiMouseButton being dragged in the viewport, -1 none
-  int m_drag_light = -1;          // light being dragged, -1 none
-  bool m_drag_off_view = false;   // ... by its off-view arrow: brought to the target's depth
-  bool m_marker_pressed = false;  // the press hit a light marker (no orbit, no pick)
+  ViewportGizmo m_gizmo;            // the selection's transform gizmo and its drag (gizmo.h)
+  int m_drag_button = -1;           // ImGuiMouseButton being dragged in the viewport, -1 none
+  int m_drag_light = -1;            // light being dragged, -1 none
+  bool m_drag_off_view = false;     // ... by its off-view arrow: brought to the target's depth
+  int m_drag_aim = -1;              // light whose aim handle is dragged, -1 none
+  bool m_drag_environment = false;  // Ctrl+drag: turning the environment
+  bool m_marker_pressed = false;    // the press hit a light marker (no orbit, no pick)
   int m_drag_pane = 0;
   float m_drag_distance = 0.0f;  // farthest the cursor went from the press, pixels
   ImVec2 m_drag_press{0, 0};     // where the drag's button went down (screen)

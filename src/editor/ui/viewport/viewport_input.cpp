@@ -114,7 +114,7 @@ void Viewport::draw_inspected_pixel(const ViewSettings& view, const RenderSettin
 
 bool Viewport::moving_gesture(double now_s) const {
   if (m_drag_button < 0) return gesture_active(now_s);  // a recent wheel zoom
-  return m_drag_light >= 0 || m_gizmo.dragging() ||
+  return m_drag_light >= 0 || m_drag_aim >= 0 || m_drag_environment || m_gizmo.dragging() ||
          (m_drag_distance > kClickSlop && !m_marker_pressed);
 }
 
@@ -170,6 +170,7 @@ void Viewport::draw(Commands& commands, ViewSettings& view, Selection& selection
   ImDrawList* list = ImGui::GetWindowDrawList();
   draw_labels(view, list);
   if (view.mode == ViewMode::ab) draw_legend(view, list, m_legend);
+  draw_light_gizmos(commands.scene(), selection, list);
   draw_light_markers(commands.scene(), selection, list);
   m_gizmo.draw(commands.scene(), pane_camera(commands.scene()), selection, view, m_panes[0].min,
                m_panes[0].size, ImGui::GetIO().MousePos, list);
@@ -219,6 +220,7 @@ void Viewport::draw_light_markers(const Scene& scene, const Selection& selection
       }
     }
     for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i) {
+      if (scene.lights[i].type == LightType::directional) continue;  // no position: its arrow
       const EdgeMarker m = light_marker(scene, i, pane);
       const ImVec2 centre(pane.min.x + m.position.x, pane.min.y + m.position.y);
       const glm::vec3 c = glm::clamp(scene.lights[i].diffuse, glm::vec3(0.0f), glm::vec3(1.0f));
@@ -276,16 +278,28 @@ void Viewport::handle_input(Commands& commands, ViewSettings& view, Selection& s
     m_drag_distance = 0.0f;
     m_drag_pane = pane_at(press);
     m_drag_light = -1;
+    m_drag_aim = -1;
     m_marker_pressed = false;
-    // The selection's gizmo takes a press on its handles first (gizmo.h).
+    m_drag_environment = false;
+    // The selection's gizmo takes a press on its handles first (gizmo.h); then Ctrl+drag turns
+    // the environment; then the lights' handles and markers.
     if (m_drag_button == ImGuiMouseButton_Left && !io.KeyShift && m_drag_pane == 0 &&
         view.mode != ViewMode::lobe &&
         m_gizmo.press(scene, pane_camera(scene), selection, view, m_panes[0].min, m_panes[0].size,
                       press)) {
       m_marker_pressed = true;  // no orbit, no pick
+    } else if (m_drag_button == ImGuiMouseButton_Left && io.KeyCtrl &&
+               scene.environment.present()) {
+      m_drag_environment = true;
     } else if (m_drag_button == ImGuiMouseButton_Left && !io.KeyShift && m_drag_pane >= 0) {
       const Pane& pane = m_panes[m_drag_pane];
-      for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i) {
+      m_drag_aim = aim_handle_at(scene, press);
+      if (m_drag_aim >= 0) {
+        m_marker_pressed = true;
+        selection.light = m_drag_aim;
+      }
+      for (int i = 0; i < static_cast<int>(scene.lights.size()) && m_drag_aim < 0; ++i) {
+        if (scene.lights[i].type == LightType::directional) continue;
         // Hit where it is drawn (light_marker, the same position as draw_light_markers).
         const EdgeMarker m = light_marker(scene, i, pane);
         const float dx = pane.min.x + m.position.x - press.x;
@@ -311,6 +325,11 @@ void Viewport::handle_input(Commands& commands, ViewSettings& view, Selection& s
     const bool pan = m_drag_button != ImGuiMouseButton_Left || io.KeyShift;
     if (m_gizmo.dragging()) {
       m_gizmo.drag(commands, io.KeyCtrl, io.MousePos);
+    } else if (m_drag_environment) {
+      m_marker_pressed = true;  // no pick at the release
+      turn_environment(commands, d.x);
+    } else if (m_drag_aim >= 0) {
+      drag_aim_handle(commands, io.MousePos);
     } else if (m_drag_light >= 0 && m_drag_light < static_cast<int>(scene.lights.size())) {
       const int w = static_cast<int>(pane.size.x), h = static_cast<int>(pane.size.y);
       const Camera camera = pane_camera(scene);
@@ -358,6 +377,8 @@ void Viewport::handle_input(Commands& commands, ViewSettings& view, Selection& s
     }
     m_drag_button = -1;
     m_drag_light = -1;
+    m_drag_aim = -1;
+    m_drag_environment = false;
     m_gizmo.release();
   }
 
