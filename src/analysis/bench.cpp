@@ -36,12 +36,10 @@ void full_render(const Scene& scene, const EmbreeScene& embree, SampleCache& cac
                  PixelFactors& factors, TermImages& out, bool terms) {
   const RenderContext ctx = make_render_context(scene, embree);
   reset_sample_cache(cache, scene, scene.render.width, scene.render.height, 1);
-  // As the engine's first pass: the environment as the background adds its sky after the
-  // factors (combine_terms shows it), so the total cannot be made in the same pass.
-  if (terms || (ctx.plan.sky && scene.environment.as_background)) {
+  if (terms) {
     trace_single_sample(cache, ctx, factors);
-    environment_sky(cache, ctx, factors);
-    combine_terms(factors, ctx, out, terms);
+    environment_sky(cache, ctx, factors);  // the environment as the background (else nothing)
+    combine_terms(factors, ctx, out, true);
   } else {
     trace_single_sample(cache, ctx, factors, &out.total);  // the total made in the same pass
   }
