@@ -15,10 +15,12 @@
 #include <tbb/task_arena.h>
 #include <nlohmann/json.hpp>
 
+#include "analysis/bench_render.h"
 #include "analysis/image_metrics.h"
 #include "analysis/paired_timing.h"
 #include "analysis/ray_baseline.h"
 #include "base/timing.h"
+#include "engine/environment/environment_stage.h"
 #include "engine/progressive_renderer.h"
 #include "engine/render_context.h"
 #include "engine/renderer.h"
@@ -30,23 +32,21 @@
 
 namespace gloss {
 
-namespace {
-using Clock = std::chrono::steady_clock;
-
-// A full 1-spp render through the engine's stages, BVH already built: trace, light factors,
-// per-pixel factors and the total image in one fused pass, as the engine's first
-// full-resolution pass; with terms, the four term images by recombination after it.
 void full_render(const Scene& scene, const EmbreeScene& embree, SampleCache& cache,
                  PixelFactors& factors, TermImages& out, bool terms) {
   const RenderContext ctx = make_render_context(scene, embree);
   reset_sample_cache(cache, scene, scene.render.width, scene.render.height, 1);
   if (terms) {
     trace_single_sample(cache, ctx, factors);
+    environment_sky(cache, ctx, factors);  // the environment as the background (else nothing)
     combine_terms(factors, ctx, out, true);
   } else {
     trace_single_sample(cache, ctx, factors, &out.total);  // the total made in the same pass
   }
 }
+
+namespace {
+using Clock = std::chrono::steady_clock;
 
 double peak_rss_mb() {
   rusage usage{};
@@ -305,6 +305,7 @@ std::string format_bench_table(const BenchReport& r) {
       s += line;
     }
   }
+  if (r.environment) s += format_environment_bench_table(*r.environment);
   return s;
 }
 
@@ -355,6 +356,8 @@ std::string bench_to_json(const BenchReport& r) {
     }
     j["scaling"] = rows;
   }
+  if (r.environment)
+    j["environment"] = nlohmann::json::parse(environment_bench_json(*r.environment));
   return j.dump(2) + "\n";
 }
 

@@ -2,9 +2,11 @@
 // The engine benchmark behind `gloss-cli bench`: every figure is the median of several runs and
 // every ratio is taken against a baseline measured in the same process (ray_baseline.h), as the
 // median of the ratios within alternating pairs of runs.
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "analysis/bench_environment.h"
 #include "analysis/bench_scaling.h"
 #include "scene/scene.h"
 
@@ -47,7 +49,8 @@ struct BenchReport {
   double peak_rss_mb = 0;        // of a plain render at this size in its own process (the CLI's)
   double bench_peak_rss_mb = 0;  // of this benchmark's process
   std::vector<TessellationPoint> tessellation;
-  std::vector<ScalingPoint> scaling;  // `--scaling` (bench_scaling.h), else empty
+  std::vector<ScalingPoint> scaling;                  // `--scaling` (bench_scaling.h), else empty
+  std::optional<EnvironmentBenchReport> environment;  // `--environment` (bench_environment.h)
 };
 
 BenchReport run_benchmark(const Scene& scene, const BenchOptions& options);

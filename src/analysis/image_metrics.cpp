@@ -63,6 +63,27 @@ std::string psnr_text(double psnr_db) {
   return text;
 }
 
+double relative_rmse(const Image& test, const Image& reference,
+                     const std::vector<std::uint8_t>& mask) {
+  if (test.width != reference.width || test.height != reference.height ||
+      mask.size() != reference.pixels.size()) {
+    throw std::invalid_argument("relative_rmse: sizes differ");
+  }
+  double squares = 0.0, sum = 0.0;  // double: a million float squares would lose digits
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
+    if (mask[i] == 0) continue;
+    for (int c = 0; c < 3; ++c) {
+      const double d = double(test.pixels[i][c]) - reference.pixels[i][c];
+      squares += d * d;
+      sum += reference.pixels[i][c];
+    }
+    count += 3;
+  }
+  if (count == 0 || !(sum > 0.0)) return 0.0;
+  return std::sqrt(squares / double(count)) / (sum / double(count));
+}
+
 double percent_within(const Image& test, const Image& reference, double tolerance) {
   if (test.width != reference.width || test.height != reference.height) {
     throw std::invalid_argument("percent_within: image sizes differ");

@@ -28,6 +28,13 @@ ImageMetrics compare_images(const Image& test, const Image& reference);
 ImageMetrics compare_images(const Image& test, const Image& reference,
                             const std::vector<std::uint8_t>& mask, std::uint8_t which);
 
+// The relative RMSE of docs/accuracy.md ("Relative RMSE"): the RMSE over the pixels whose mask
+// entry is not 0 and their three channels, over the mean of reference there (mask: one entry
+// per pixel, such as ReferenceOptions::hits, the surface pixels). 0 when no pixel counts or that
+// mean is 0. Throws std::invalid_argument when the sizes differ.
+double relative_rmse(const Image& test, const Image& reference,
+                     const std::vector<std::uint8_t>& mask);
+
 // % of pixels of test whose every channel is within tolerance of reference (a non-finite value
 // disagrees); 0 for empty images. Throws std::invalid_argument when the sizes differ.
 double percent_within(const Image& test, const Image& reference, double tolerance);

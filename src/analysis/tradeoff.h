@@ -48,12 +48,12 @@ struct TradeoffOptions {
   std::vector<int> spp_levels{1, 2, 4, 8, 16, 32, 64};  // spp knob, uniform sampling
   int adaptive_spp = 16;                                // adaptive knob: its spp and
   std::vector<float> adaptive_thresholds{1.0f / 16, 1.0f / 32, 1.0f / 64, 1.0f / 128,
-                                         1.0f / 256};     // refine thresholds
-  std::vector<int> tessellation_levels{2, 4, 8, 16, 32};  // teapot segments per patch side
-  std::vector<int> resolution_divisors{8, 4, 2, 1};       // preview at 1/d, upsampled
-  std::vector<int> env_sample_levels{0, 16, 64, 256};     // env_samples knob (0: fast path)
-  std::vector<int> env_resolution_levels{1, 2, 4};        // env_resolution knob
-  std::vector<Knob> knobs;                                // the knobs to measure; empty: all
+                                         1.0f / 256};        // refine thresholds
+  std::vector<int> tessellation_levels{2, 4, 8, 16, 32};     // teapot segments per patch side
+  std::vector<int> resolution_divisors{8, 4, 2, 1};          // preview at 1/d, upsampled
+  std::vector<int> env_sample_levels{0, 16, 64, 256, 1024};  // env_samples (0: fast path)
+  std::vector<int> env_resolution_levels{1, 2, 4};           // env_resolution knob
+  std::vector<Knob> knobs;                                   // the knobs to measure; empty: all
   const std::atomic<bool>* cancel = nullptr;  // checked between renders and inside references
 };
 

@@ -26,6 +26,7 @@ TradeoffOptions quick_tradeoff_options() {
   o.reference_spp = 64;
   o.spp_levels = {1, 2, 4, 8, 16};
   o.adaptive_thresholds = {1.0f / 16, 1.0f / 64};
+  o.env_sample_levels = {0, 16, 64, 256};  // 1024 directions: tens of seconds at this size
   return o;
 }
 

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "base/assets.h"
 #include "base/atomic_file.h"
 #include "cli/commands.h"
+#include "io/scene/environment_reader.h"
 #include "io/scene/scene_loader.h"
 #include "scene/isa_variant.h"
 
@@ -28,7 +30,10 @@ struct BenchArgs {
   std::string json;
   bool scaling = false;     // --scaling: the rows of bench_scaling.h, each in its own process
   std::string scaling_row;  // hidden --scaling-row L,T,W,H: measure that row alone (the child)
+  std::string environment;  // --environment FILE|NAME: the environment section with that map
+  bool environment_only = false;
   BenchOptions options;
+  EnvironmentBenchOptions environment_options;
 };
 
 // Runs this program with `words` as its arguments, stdout to /dev/null, and waits. Returns its
@@ -102,10 +107,42 @@ std::vector<ScalingPoint> scaling_rows(const std::string& scene, const BenchOpti
   return rows;
 }
 
+// The scene with the map of --environment (a file, or a shipped map's name: studio, sunset,
+// city) in place of its own environment, if any; intensity and rotation as the scene says.
+Scene with_environment(Scene scene, const std::string& map) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const std::string shipped = asset_path("environments/" + map + ".exr");
+  const std::string file = !fs::exists(map, error) && fs::exists(shipped, error) ? shipped : map;
+  scene.environment.map = read_environment_map(file);
+  scene.environment.file = file;
+  return scene;
+}
+
 void run_bench(const BenchArgs& args) {
   const std::string path =
       args.scene.empty() ? asset_path("scenes/cornell-teapot.json") : args.scene;
-  const Scene scene = load_scene(path);
+  Scene scene = load_scene(path);
+  // The environment section runs for --environment or a scene with an environment; the other
+  // figures are then those of the scene without it (point lights: their baseline).
+  if (!args.environment.empty()) scene = with_environment(scene, args.environment);
+  std::optional<EnvironmentBenchReport> environment;
+  if (scene.environment.present()) {
+    EnvironmentBenchOptions options = args.environment_options;
+    options.width = args.options.width;
+    options.height = args.options.height;
+    options.runs = args.options.runs;
+    environment = run_environment_benchmark(scene, options);
+    scene.environment = Environment{};
+    if (args.environment_only) {
+      std::cout << format_environment_bench_table(*environment);
+      if (!args.json.empty()) {
+        write_text_atomically(args.json, environment_bench_json(*environment) + "\n");
+        std::cout << "wrote " << args.json << "\n";
+      }
+      return;
+    }
+  }
   if (!args.scaling_row.empty()) {  // a child of --scaling: one row, written as JSON
     const ScalingPoint point =
         run_scaling_row(scene, parse_scaling_setup(args.scaling_row), args.options.runs);
@@ -119,6 +156,7 @@ void run_bench(const BenchArgs& args) {
   if (args.scaling) scaling = scaling_rows(path, args.options);
   BenchReport report = run_benchmark(scene, args.options);
   report.peak_rss_mb = render_peak_mb;
+  report.environment = environment;
   report.scaling = std::move(scaling);
   std::cout << format_bench_table(report);
   // Which build of the pixel code ran: native, the baseline, or a variant the loader chose.
@@ -142,6 +180,17 @@ void add_bench_command(CLI::App& app) {
       ->check(CLI::Range(1, 16384));
   cmd->add_option("--runs", args->options.runs, "Repetitions per figure")
       ->check(CLI::Range(1, 1000));
+  cmd->add_option("--environment", args->environment,
+                  "Also measure the environment light with this map (FILE, or studio, sunset, "
+                  "city): fast path, edit, progressive path to 1 % relative RMSE (minutes)");
+  cmd->add_flag("--environment-only", args->environment_only,
+                "Only the environment's figures (with --environment or a scene that has one)");
+  cmd->add_option("--env-accuracy-divisor", args->environment_options.accuracy_divisor,
+                  "The progressive path's accuracy measured at 1/N of the size (4)")
+      ->check(CLI::Range(1, 64));
+  cmd->add_option("--env-reference-stride", args->environment_options.reference_stride,
+                  "Its exact value on every Nth pixel both ways (2)")
+      ->check(CLI::Range(1, 64));
   cmd->add_flag("--scaling", args->scaling,
                 "Also time how cost grows: 1-64 lights, 10 k-10 M triangles, 720p-4K (minutes)");
   // The child process of --scaling for one row; not for users (no group: hidden from --help).

@@ -49,9 +49,8 @@ int EditPreview::shift(ChangeClass change, double budget_ms, int max_shift, doub
 bool EditPreview::render(const RenderContext& ctx, int width, int height, TermImages& images,
                          bool terms) {
   reset_sample_cache(m_cache, *ctx.scene, width, height, 1);
-  // The environment's sky comes after the factors (combine_terms adds it).
-  const bool sky = ctx.plan.sky && ctx.scene->environment.as_background;
-  if (terms || sky) {
+  // With the total alone the fused pass makes it, the environment's sky included.
+  if (terms) {
     if (!trace_single_sample(m_cache, ctx, m_factors)) return false;
     if (ctx.plan.sky && !environment_sky(m_cache, ctx, m_factors)) return false;
     combine_terms(m_factors, ctx, images, terms);

@@ -62,10 +62,9 @@ bool ProgressiveRenderer::Impl::step() {
   }
   const std::shared_ptr<RenderedFrame> frame =
       FramePool::make(frame_pool, cache.width, cache.height, worker_terms);
-  // The first pass makes the total itself unless a term view wants the terms or the
-  // environment is the background (its sky comes after the factors: combine_terms adds it).
-  const bool sky_shown = ctx.plan.sky && scene->environment.as_background;
-  Image* const total = worker_terms || sky_shown ? nullptr : &frame->images.total;
+  // The first pass makes the total itself (and the sky, when the environment is the
+  // background) unless a term view wants the terms.
+  Image* const total = worker_terms ? nullptr : &frame->images.total;
   // The environment's estimates belong to the cache's samples and slots as they are: an edit
   // that rewrites the slots (environment, light) or the samples (full) starts them again, from
   // the fast path. Edits below keep them (a material edit only recombines).
@@ -127,8 +126,11 @@ bool ProgressiveRenderer::Impl::step() {
     redo = std::max(redo, ChangeClass::exponent);
     ok = adaptive_state.build_factors(cache, ctx, factors);
   }
-  // The sky follows the camera, the samples and the environment's map and rotation.
-  if (ok && ctx.plan.sky && dirty != ChangeClass::shade && dirty != ChangeClass::exponent) {
+  // The sky follows the camera, the samples and the environment's map and rotation (a fused
+  // pass with the total made it already).
+  const bool fused_total = total_done && total != nullptr;
+  if (ok && ctx.plan.sky && dirty != ChangeClass::shade && dirty != ChangeClass::exponent &&
+      !fused_total) {
     ok = environment_sky(cache, ctx, factors);
   }
   ctx.rays = nullptr;

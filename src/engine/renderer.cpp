@@ -43,9 +43,9 @@ TermImages render(const Scene& scene, const RenderOptions& options) {
     out.emissive = out.ambient = out.diffuse = out.specular = Image(w, h);
   }
   const bool adaptive = spp > 1 && scene.render.sampling == Sampling::adaptive;
-  // The environment as the background: its sky is added by combine_terms. Its exact terms: the
-  // estimates replace the fast path's factors before the image is made.
-  const bool sky_shown = ctx.plan.sky && scene.environment.as_background;
+  // The environment's exact terms: the estimates replace the fast path's factors before the
+  // image is made. Its sky: made by the fused 1-spp pass with the total, else by
+  // environment_sky, and shown by combine_terms.
   EnvironmentEstimates environment;
   const bool exact = next_environment_steps(ctx, environment) > 0;
   if (options.refined != nullptr) options.refined->clear();
@@ -79,8 +79,7 @@ TermImages render(const Scene& scene, const RenderOptions& options) {
         for (const std::uint32_t p : cache.refined.pixels) options.refined->push_back(p + region0);
       }
     } else if (spp == 1) {  // the same bits, one pass (with the total, unless terms are wanted)
-      trace_single_sample(cache, ctx, factors,
-                          options.terms || sky_shown || exact ? nullptr : &band.total);
+      trace_single_sample(cache, ctx, factors, options.terms || exact ? nullptr : &band.total);
     } else {
       add_samples(cache, ctx, spp);
       build_pixel_factors(cache, ctx, factors);
@@ -90,8 +89,10 @@ TermImages render(const Scene& scene, const RenderOptions& options) {
       add_environment_steps(cache, ctx, environment, scene.render.env_samples);
       build_pixel_factors(cache, ctx, factors);
     }
-    environment_sky(cache, ctx, factors);
-    if (spp != 1 || options.terms || sky_shown || exact) {
+    // The fused 1-spp pass made the total, and the sky with it.
+    const bool fused = !adaptive && spp == 1 && !options.terms && !exact;
+    if (!fused) {
+      environment_sky(cache, ctx, factors);
       combine_terms(factors, ctx, band, options.terms);
     }
     const int from = row0 - halo0;

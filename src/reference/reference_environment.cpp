@@ -2,7 +2,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "shading/sampling.h"
+#include "engine/environment/scrambled_sobol.h"
 
 namespace gloss {
 
@@ -13,7 +13,8 @@ ReferenceEnvironment::ReferenceEnvironment(const Scene& scene,
   m_environment = &scene.environment;
   m_rotation = environment_rotation<double>(scene.environment.rotation);
   m_quadrature = environment_quadrature(scene.environment.map);
-  if (scene.render.shadows) m_sampler = std::make_unique<EnvironmentSampler>(*scene.environment.map);
+  if (scene.render.shadows)
+    m_sampler = std::make_unique<EnvironmentSampler>(*scene.environment.map);
 }
 
 glm::dvec3 ReferenceEnvironment::radiance(const glm::dvec3& d) const {
@@ -35,7 +36,8 @@ ReferenceEnvironment::Reading ReferenceEnvironment::at(
     out.diffuse_error = d.bound * intensity;
   }
   if (specular && (m_options.bounded || alpha <= 16.0)) {
-    const QuadratureResult s = m_quadrature->specular(model, nm, vm, rm, alpha, m_options.tolerance);
+    const QuadratureResult s =
+        m_quadrature->specular(model, nm, vm, rm, alpha, m_options.tolerance);
     out.unshadowed_specular = s.value * intensity;
     out.specular_error = s.bound * intensity;
   } else if (specular) {
@@ -54,14 +56,12 @@ ReferenceEnvironment::Reading ReferenceEnvironment::at(
   hit.diffuse = diffuse;
   hit.specular = specular;
   EnvironmentSums sums;
+  const StepNumbers numbers(seed);
   for (int step = 0; step < m_options.steps; ++step) {
     double u[6];
-    std::uint32_t h = mix_bits(seed ^ mix_bits(static_cast<std::uint32_t>(step) + 0x632be5abU));
-    for (double& x : u) {
-      h = mix_bits(h + 0x9e3779b9U);
-      x = (static_cast<double>(h >> 5) + 0.5) * (1.0 / 134217728.0);
-    }
-    const EnvironmentDraws draws = environment_draws(hit, *m_environment, m_rotation, *m_sampler, u);
+    numbers.at(static_cast<std::uint32_t>(step), u);
+    const EnvironmentDraws draws =
+        environment_draws(hit, *m_environment, m_rotation, *m_sampler, u);
     bool visible[EnvironmentDraws::kCount];
     for (int k = 0; k < EnvironmentDraws::kCount; ++k) {
       visible[k] = draws.carries[k] && !blocked(draws.w[k]);
@@ -74,7 +74,8 @@ ReferenceEnvironment::Reading ReferenceEnvironment::at(
   out.diffuse_error = sums.diffuse.error(sums.steps) * intensity;
   out.specular_error = sums.specular.error(sums.steps) * intensity;
   const double lum_shadowed = out.diffuse.x + out.diffuse.y + out.diffuse.z;
-  const double lum_open = out.unshadowed_diffuse.x + out.unshadowed_diffuse.y + out.unshadowed_diffuse.z;
+  const double lum_open =
+      out.unshadowed_diffuse.x + out.unshadowed_diffuse.y + out.unshadowed_diffuse.z;
   out.visibility = lum_open > 0.0 ? std::min(1.0, lum_shadowed / lum_open) : 1.0;
   return out;
 }

@@ -3,7 +3,7 @@
 // diffuse and specular terms in double. Shadows off, they are the unshadowed integrals of
 // environment_quadrature.h, with their error bounds. Shadows on, they are estimates over
 // `steps` directions drawn as the progressive renderer draws them (cosine, lobe and map with
-// the balance heuristic, engine/environment/environment_sampling.h), each with its own shadow
+// the power heuristic, engine/environment/environment_sampling.h), each with its own shadow
 // ray, and their standard errors; the unshadowed integrals come along, so the share of the
 // irradiance that is visible (the inspector's `visibility`) is their ratio.
 #include <functional>
@@ -18,8 +18,8 @@
 namespace gloss {
 
 struct ReferenceEnvironmentOptions {
-  int steps = 1024;          // directions per hit for the shadowed estimate (3 rays each)
-  double tolerance = 1e-3;   // relative error bound of the unshadowed integrals
+  int steps = 1024;         // directions per hit for the shadowed estimate (3 rays each)
+  double tolerance = 1e-3;  // relative error bound of the unshadowed integrals
   // true: every unshadowed integral by the bounded cubature (the inspector); false: the
   // specular term above alpha 16 by the texel sum (lobe_sum.h; images), without a bound.
   bool bounded = false;
@@ -32,7 +32,7 @@ class ReferenceEnvironment {
 
   // What one hit receives, intensity included, before kd and ks.
   struct Reading {
-    glm::dvec3 diffuse{0.0}, specular{0.0};          // the contract's terms / kd, / ks
+    glm::dvec3 diffuse{0.0}, specular{0.0};              // the contract's terms / kd, / ks
     glm::dvec3 diffuse_error{0.0}, specular_error{0.0};  // bound (shadows off) or standard error
     glm::dvec3 unshadowed_diffuse{0.0}, unshadowed_specular{0.0};
     double visibility = 1.0;  // visible share of the irradiance (luminance), 1 without shadows

@@ -80,11 +80,15 @@ TermImages render_reference(const Scene& scene, const ReferenceOptions& options)
   if (options.refined != nullptr && options.refined->size() != pixels) {
     throw std::invalid_argument("render_reference: refined mask of the wrong size");
   }
+  if (options.pixel_stride < 1) throw std::invalid_argument("render_reference: stride below 1");
+  const int stride = options.pixel_stride, offset = stride / 2;
+  if (options.hits != nullptr) options.hits->assign(pixels, 0);
 
   auto rows = [&](const tbb::blocked_range<int>& range) {
     for (int y = range.begin(); y != range.end(); ++y) {
       if (options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed)) return;
-      for (int x = 0; x < w; ++x) {
+      if (y % stride != offset) continue;
+      for (int x = offset; x < w; x += stride) {
         const std::size_t i = static_cast<std::size_t>(y) * w + x;
         const int count = options.refined != nullptr && (*options.refined)[i] == 0 ? 1 : job.spp;
         const T inv_spp = T(1) / T(count);
@@ -103,6 +107,7 @@ TermImages render_reference(const Scene& scene, const ReferenceOptions& options)
         out.specular.pixels[i] = glm::vec3(sp);
         out.total.pixels[i] =
             glm::vec3(form_total(e, a, d, sp, missed_background(job, sum, inv_spp)));
+        if (options.hits != nullptr) (*options.hits)[i] = sum.misses == 0 ? 1 : 0;
         if (!first.empty()) {
           first[i] = key0;
           mixed[i] = is_mixed ? 1 : 0;

@@ -46,6 +46,13 @@ struct ReferenceOptions {
   // the diffuse one; Ls, the energy switch and the Gouraud knob do not apply to them. Ambient
   // and emission stay ka (A_scene + sum La) and ke. Other materials are shaded as always.
   bool physical = false;
+  // A sparse reference for a large image: only pixels (x, y) with x and y both = stride / 2
+  // modulo stride are computed, the others stay 0 (the environment benchmark's exact value).
+  // `edges` needs stride 1 (it compares neighbours).
+  int pixel_stride = 1;
+  // When set, resized to width * height and filled with 1 for pixels whose every sample hit a
+  // surface (computed pixels only), 0 elsewhere: the surface pixels a relative RMSE is over.
+  std::vector<std::uint8_t>* hits = nullptr;
 };
 
 // Renders scene.render's size, model, shadows, energy normalisation and seed, with the fast

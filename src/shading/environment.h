@@ -68,8 +68,10 @@ glm::tvec3<T> map_bilinear(const Image& map, T u, T t) {
   const T fx0 = std::floor(x), fy0 = std::floor(y);
   const T ax = x - fx0, ay = y - fy0;
   const long long w = map.width, h = map.height;
-  long long i0 = static_cast<long long>(fx0) % w;
-  if (i0 < 0) i0 += w;
+  // u in [0, 1] puts fx0 in [-1, w - 1]: wrapped without a division (the general case kept for
+  // u outside, which no mapping gives).
+  long long i0 = static_cast<long long>(fx0);
+  if (i0 < 0 || i0 >= w) i0 = i0 == -1 ? w - 1 : (i0 % w + w) % w;
   const long long i1 = i0 + 1 == w ? 0 : i0 + 1;
   const long long j0 = std::clamp<long long>(static_cast<long long>(fy0), 0, h - 1);
   const long long j1 = std::clamp<long long>(static_cast<long long>(fy0) + 1, 0, h - 1);

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/environment/environment_stage.h"
 #include "engine/trace/embree_scene.h"
 #include "io/scene/scene_loader.h"
 #include "support/scene_fixtures.h"
@@ -51,14 +52,17 @@ void expect_fused_equals_staged(const Scene& scene) {
     expect_same_bits(fused_cache.planes[0].lights[li].cos_blinn,
                      staged_cache.planes[0].lights[li].cos_blinn, "cos_blinn");
   }
-  // Given a total image, the same pass writes what combine_terms makes of the factors.
+  // Given a total image, the same pass writes what combine_terms makes of the factors, and
+  // under an environment the sky environment_sky makes (shown or not).
   Image total(3, 2, glm::vec3(-1.0f));  // the wrong size: resized
   ASSERT_TRUE(trace_single_sample(fused_cache, ctx, fused, &total));
+  ASSERT_TRUE(environment_sky(staged_cache, ctx, staged));
   TermImages combined;
   combine_terms(staged, ctx, combined, false);
   ASSERT_EQ(total.width, w);
   ASSERT_EQ(total.height, h);
   expect_same_bits(total.pixels, combined.total.pixels, "total");
+  expect_same_bits(fused.sky, staged.sky, "sky");
 }
 
 // 37 x 23: neither side a multiple of the 4 x 4 packets or the 32-pixel tiles.
@@ -79,6 +83,32 @@ TEST(SingleSamplePass, EqualsTracingThenBuildingFactorsOnASphereOverAFloor) {
   expect_fused_equals_staged(scene);
   // A background of -0 and a denormal: background pixels as combine_terms makes them.
   scene.background = {-0.0f, 1e-40f, 0.5f};
+  expect_fused_equals_staged(scene);
+}
+
+// The environment's fast path and its sky: the map as the background, turned, and not shown.
+TEST(SingleSamplePass, EqualsTheStagesUnderAnEnvironmentAndItsSky) {
+  Scene scene = test::sphere_on_floor_scene();
+  scene.render.width = 37;
+  scene.render.height = 23;
+  scene.camera.eye = {0.0f, 3.0f, 6.0f};  // the horizon in view: sky and surfaces in packets
+  auto map = std::make_shared<EnvironmentMap>();
+  map->radiance = Image(64, 32);
+  for (int j = 0; j < 32; ++j) {
+    for (int i = 0; i < 64; ++i) {
+      map->radiance.at(i, j) = glm::vec3(0.2f + i / 64.0f, 1.0f - j / 32.0f, 0.3f);
+    }
+  }
+  map->radiance.at(40, 8) = glm::vec3(50.0f);
+  scene.environment.map = map;
+  scene.environment.file = "gradient";
+  scene.environment.intensity = 1.7f;
+  scene.render.env_samples = 0;
+  expect_fused_equals_staged(scene);
+  scene.environment.rotation = 33.0f;
+  expect_fused_equals_staged(scene);
+  scene.environment.as_background = false;
+  scene.background = {0.05f, 0.1f, 0.2f};
   expect_fused_equals_staged(scene);
 }
 

@@ -19,11 +19,13 @@ EnvironmentContext make_environment_context(const Scene& scene, bool planned) {
   e.rotation_d = environment_rotation<double>(scene.environment.rotation);
   for (const Material& m : scene.materials) {
     e.exponent.push_back(phong_equivalent_exponent(scene.render.model, m.shininess));
+    e.blend.push_back(e.maps->blend(e.exponent.back()));
     e.diffuse.push_back(nonzero(m.diffuse) ? 1 : 0);
     e.specular.push_back(nonzero(m.specular) ? 1 : 0);
   }
   if (e.exponent.empty()) {
     e.exponent.push_back(0.0f);
+    e.blend.push_back(e.maps->blend(0.0f));
     e.diffuse.push_back(0);
     e.specular.push_back(0);
   }

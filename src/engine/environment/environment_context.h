@@ -19,9 +19,10 @@ struct EnvironmentContext {
   EnvironmentRotation<float> rotation;
   EnvironmentRotation<double> rotation_d;
   // Per material (entry 0 stands in when there are none).
-  std::vector<float> exponent;                     // phong_equivalent_exponent
-  std::vector<std::uint8_t> diffuse, specular;     // kd, ks not zero
-  std::vector<std::int32_t> object_material;       // per object
+  std::vector<float> exponent;                  // phong_equivalent_exponent
+  std::vector<LevelBlend> blend;                // the fast path's levels for it
+  std::vector<std::uint8_t> diffuse, specular;  // kd, ks not zero
+  std::vector<std::int32_t> object_material;    // per object
 };
 
 // The tables for scene; planned: the render plan has the environment (else an empty context).

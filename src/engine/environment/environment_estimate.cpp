@@ -7,10 +7,11 @@
 #include <embree3/rtcore.h>
 
 #include "engine/environment/environment_sampling.h"
+#include "engine/environment/scrambled_sobol.h"
+#include "engine/simd/lane_mask.h"
 #include "engine/trace/ray_packet.h"
 #include "engine/trace/refined_samples.h"
 #include "engine/trace/sample_packet.h"
-#include "engine/simd/lane_mask.h"
 #include "engine/trace/self_shadow.h"
 #include "shading/sampling.h"
 
@@ -19,15 +20,6 @@ namespace gloss {
 namespace {
 
 using Floats = float[EnvironmentEstimates::kFloats];
-
-// Six uniform numbers for (sample key, step), decorrelated by mixing.
-void uniforms(std::uint32_t key, int step, double (&u)[6]) {
-  std::uint32_t h = mix_bits(key ^ mix_bits(static_cast<std::uint32_t>(step) * 0x9e3779b9U + 0x85ebca6bU));
-  for (double& x : u) {
-    h = mix_bits(h + 0x632be5abU);
-    x = (static_cast<double>(h >> 8) + 0.5) * (1.0 / 16777216.0);
-  }
-}
 
 // The key of a sample's draws: its image pixel and which of the pixel's samples it is, so a
 // band of gloss-cli's renderer and the editor's whole image draw the same directions.
@@ -61,8 +53,8 @@ long long packet_steps(const SamplePacket& packet, const SampleCache& cache,
     for (int i = 0; i < kLanes; ++i) {
       active[i] = surfaces.hit[i] != 0 && packet.valid[i] != 0 && packet.object[i] >= 0;
       if (!active[i]) continue;
-      const auto m = static_cast<std::size_t>(
-          env.object_material[static_cast<std::size_t>(packet.object[i])]);
+      const auto m =
+          static_cast<std::size_t>(env.object_material[static_cast<std::size_t>(packet.object[i])]);
       const Surface s = surfaces.get(i);
       EnvironmentHit& h = hits[i];
       h.n = glm::normalize(glm::dvec3(s.n));
@@ -76,12 +68,16 @@ long long packet_steps(const SamplePacket& packet, const SampleCache& cache,
       origin[i] = shadow_ray_origin(s, packet.t[i]);
       id[i] = ctx.plan.spheres ? shadow_ray_id(scene, packet.object[i], s) : kNoOriginSphere;
     }
+    StepNumbers numbers[kLanes];
+    for (int i = 0; i < kLanes; ++i) {
+      if (active[i]) numbers[i] = StepNumbers(keys[i]);
+    }
     for (int k = first_step; k < first_step + steps; ++k) {
       EnvironmentDraws draws[kLanes];
       for (int i = 0; i < kLanes; ++i) {
         if (!active[i]) continue;
         double u[6];
-        uniforms(keys[i], k, u);
+        numbers[i].at(static_cast<std::uint32_t>(k), u);
         draws[i] = environment_draws(hits[i], scene.environment, env.rotation_d, *env.sampler, u);
       }
       bool visible[kLanes][EnvironmentDraws::kCount];
@@ -162,17 +158,18 @@ bool add_environment_steps(SampleCache& cache, const RenderContext& ctx,
   }
   const int first = estimates.steps;
   const std::uint32_t seed = mix_bits(ctx.scene->render.seed ^ 0x5bd1e995U);
-  const bool planes = visit_cached_samples(cache, ctx, [&](SamplePacket& packet, SamplePlane& plane) {
-    const auto s = static_cast<std::size_t>(&plane - cache.planes.data());
-    float* sums = estimates.planes[s].data() +
-                  (static_cast<std::size_t>(packet.y0) * cache.width + packet.x0) *
-                      EnvironmentEstimates::kFloats;
-    std::uint32_t keys[kLanes];
-    for (int i = 0; i < kLanes; ++i) {
-      keys[i] = sample_key(seed, packet.x0 + i, packet.y0 + cache.row0, static_cast<int>(s));
-    }
-    return packet_steps(packet, cache, ctx, keys, first, steps, sums, cache.width, plane);
-  });
+  const bool planes =
+      visit_cached_samples(cache, ctx, [&](SamplePacket& packet, SamplePlane& plane) {
+        const auto s = static_cast<std::size_t>(&plane - cache.planes.data());
+        float* sums = estimates.planes[s].data() +
+                      (static_cast<std::size_t>(packet.y0) * cache.width + packet.x0) *
+                          EnvironmentEstimates::kFloats;
+        std::uint32_t keys[kLanes];
+        for (int i = 0; i < kLanes; ++i) {
+          keys[i] = sample_key(seed, packet.x0 + i, packet.y0 + cache.row0, static_cast<int>(s));
+        }
+        return packet_steps(packet, cache, ctx, keys, first, steps, sums, cache.width, plane);
+      });
   if (!planes) return false;
   const int width = static_cast<int>(cache.refined.entries());
   const bool refined = visit_refined_samples(cache, ctx, [&](SamplePacket& packet) {
@@ -182,11 +179,13 @@ bool add_environment_steps(SampleCache& cache, const RenderContext& ctx,
     const RefinedSamples& refined = cache.refined;
     std::uint32_t keys[kLanes];
     for (int i = 0; i < kLanes; ++i) {
-      const std::size_t e = std::min(static_cast<std::size_t>(packet.x0 + i), refined.entries() - 1);
+      const std::size_t e =
+          std::min(static_cast<std::size_t>(packet.x0 + i), refined.entries() - 1);
       const std::uint32_t pixel = refined.pixels[e / static_cast<std::size_t>(refined.spp)];
       const int x = static_cast<int>(pixel % static_cast<std::uint32_t>(cache.width));
       const int y = static_cast<int>(pixel / static_cast<std::uint32_t>(cache.width)) + cache.row0;
-      keys[i] = sample_key(seed, x, y, 1 + static_cast<int>(e % static_cast<std::size_t>(refined.spp)));
+      keys[i] =
+          sample_key(seed, x, y, 1 + static_cast<int>(e % static_cast<std::size_t>(refined.spp)));
     }
     return packet_steps(packet, cache, ctx, keys, first, steps, sums, width, cache.refined.plane);
   });

@@ -1,10 +1,11 @@
 #pragma once
 // The environment's exact terms in the progressive renderer (docs/engine.md, "The
 // environment"): per cached sample, running sums of the self-normalised estimates of
-// environment_sampling.h, each step three directions (cosine, lobe, map) with the balance
-// heuristic and, with shadows on, a shadow ray each (16 lanes to a packet). After each pass
-// the environment's slots hold the estimates instead of the fast path's values; the usual
-// stages (pixel factors, recombination) make the image from them. No primary ray is traced.
+// environment_sampling.h, each step three directions (cosine, lobe, map) with the power
+// heuristic, stratified per sample (scrambled_sobol.h), and, with shadows on, a shadow ray each (16
+// lanes to a packet). After each pass the environment's slots hold the estimates instead of the
+// fast path's values; the usual stages (pixel factors, recombination) make the image from them. No
+// primary ray is traced.
 #include <cstdint>
 #include <vector>
 

@@ -16,13 +16,14 @@ void environment_lanes(const SamplePacket& packet, const SurfaceLanes& surfaces,
     glm::vec3 diffuse(0.0f), specular(0.0f);
     const std::int32_t object = packet.object[i];
     if (surfaces.hit[i] != 0 && object >= 0) {
-      const auto m = static_cast<std::size_t>(env.object_material[static_cast<std::size_t>(object)]);
+      const auto m =
+          static_cast<std::size_t>(env.object_material[static_cast<std::size_t>(object)]);
       const glm::vec3 n(surfaces.nx[i], surfaces.ny[i], surfaces.nz[i]);
       if (env.diffuse[m] != 0) diffuse = maps.diffuse(to_map_frame(n, env.rotation));
       if (env.specular[m] != 0) {
         const glm::vec3 v(surfaces.vx[i], surfaces.vy[i], surfaces.vz[i]);
         const glm::vec3 r = 2.0f * glm::dot(n, v) * n - v;
-        specular = maps.specular(env.exponent[m], to_map_frame(glm::normalize(r), env.rotation));
+        specular = maps.specular(env.blend[m], to_map_frame(glm::normalize(r), env.rotation));
       }
     }
     for (int c = 0; c < 3; ++c) {

@@ -2,7 +2,7 @@
 // Directions for the environment's exact terms (docs/engine.md, "The environment"): drawn from the
 // clamped cosine about n, from the specular lobe (Phong's about r, Blinn-Phong's through the half
 // vector about n) and from the map (texels in proportion to their brightness), and combined with
-// the balance heuristic, so neither a sharp lobe nor a small sun is noisy. The progressive
+// the power heuristic, so neither a sharp lobe nor a small sun is noisy. The progressive
 // renderer and the reference path's shadowed estimate both draw through these.
 #include <cstdint>
 #include <memory>
@@ -18,17 +18,26 @@ namespace gloss {
 
 // The map's texels drawn in proportion to their luminance times sin(theta) (their solid
 // angle). A texel's weight is the largest luminance of it and its 8 neighbours, so every place
-// where the bilinear map is not 0 has a density above 0 (the estimate stays unbiased).
+// where the bilinear map is not 0 has a density above 0 (the estimate stays unbiased). The
+// density a direction is given is the one its texel was drawn with (from the same tables), so
+// the heuristic's weights are exact.
 class EnvironmentSampler {
  public:
   explicit EnvironmentSampler(const EnvironmentMap& map);
 
   // Whether the map has any light to draw (a black map draws nothing: pdf 0 everywhere).
   bool active() const { return m_total > 0.0; }
-  // A unit map-frame direction from two uniform numbers in [0, 1), and its solid-angle density.
-  glm::dvec3 sample(double u1, double u2, double& pdf) const;
+  // A unit map-frame direction from two uniform numbers in [0, 1), its (u, t) and its
+  // solid-angle density.
+  glm::dvec3 sample(double u1, double u2, glm::dvec2& uv, double& pdf) const;
+  glm::dvec3 sample(double u1, double u2, double& pdf) const {
+    glm::dvec2 uv;
+    return sample(u1, u2, uv, pdf);
+  }
   // The solid-angle density of a unit map-frame direction.
   double pdf(const glm::dvec3& m) const;
+  // The same from the direction's (u, t) and sin(theta) (both known to the caller).
+  double pdf_at(const glm::dvec2& uv, double sin_theta) const;
   std::uint64_t bytes() const;
 
  private:
@@ -36,7 +45,12 @@ class EnvironmentSampler {
   double m_total = 0.0;
   std::vector<double> m_row_cdf;  // H + 1 entries, 0 .. 1
   std::vector<double> m_col_cdf;  // H rows of W + 1 entries, 0 .. 1
-  std::vector<float> m_weight;    // per texel, sum m_total
+  std::vector<float> m_density;   // per texel: its probability times W H (density in u, t)
+  // Guide tables (an indexed search): entry g of a table is the first row (column) whose cdf
+  // passes g / entries, so a draw reads a cell or two of the cdf instead of a binary search's
+  // ten scattered ones. Rows: H + 1 entries; columns: W + 1 per row.
+  std::vector<std::int32_t> m_row_guide;
+  std::vector<std::uint16_t> m_col_guide;
 };
 
 // The sampler of map, shared: made the first time and kept for the last few maps.
@@ -44,18 +58,15 @@ std::shared_ptr<const EnvironmentSampler> environment_sampler(
     const std::shared_ptr<const EnvironmentMap>& map);
 
 // Unit directions about an axis. Each returns the direction for two uniform numbers and its
-// solid-angle density; pdf_* gives the density of a direction.
+// solid-angle density (environment_draws evaluates the densities of other directions itself).
 glm::dvec3 sample_cosine(const glm::dvec3& n, double u1, double u2, double& pdf);
-double pdf_cosine(const glm::dvec3& n, const glm::dvec3& w);
 // cos^alpha about axis over the half-sphere around it: density (alpha + 1) / (2 pi) cos^alpha.
 glm::dvec3 sample_power_cosine(const glm::dvec3& axis, double alpha, double u1, double u2,
                                double& pdf);
-double pdf_power_cosine(const glm::dvec3& axis, double alpha, const glm::dvec3& w);
 // Blinn-Phong: the half vector h drawn as cos^alpha about n, w the mirror of v about h; density
 // pdf_h / (4 |v.h|). pdf 0 (and any w) when the draw gives no direction.
 glm::dvec3 sample_blinn(const glm::dvec3& n, const glm::dvec3& v, double alpha, double u1,
                         double u2, double& pdf);
-double pdf_blinn(const glm::dvec3& n, const glm::dvec3& v, double alpha, const glm::dvec3& w);
 
 // What one hit needs for the environment's exact terms.
 struct EnvironmentHit {
@@ -83,8 +94,9 @@ struct EnvironmentSums {
 };
 
 // The three directions of one step (drawn from the cosine, the lobe and the map) and what each
-// carries before visibility, with the balance heuristic over the three densities: f L / (sum of
-// densities) towards each term's sum and f / (sum of densities) towards its normaliser.
+// carries before visibility, with the power heuristic over the three densities p_j: the draw of
+// strategy k gives f L p_k / (sum of p_j^2) towards each term's sum and f p_k / (sum of p_j^2)
+// towards its normaliser. The six numbers come from scrambled_sobol.h (StepNumbers).
 struct EnvironmentDraws {
   static constexpr int kCount = 3;
   glm::dvec3 w[kCount];  // unit world directions

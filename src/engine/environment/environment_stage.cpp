@@ -27,7 +27,8 @@ void store_environment(const SamplePacket& packet, const SampleCache& cache,
   }
 }
 
-// The map's radiance (intensity 1) towards each missed lane, 0 where the lane hit.
+}  // namespace
+
 void sky_lanes(const SamplePacket& packet, const Environment& environment,
                const EnvironmentRotation<float>& rotation, glm::vec3 (&out)[kLanes]) {
   for (int i = 0; i < kLanes; ++i) {
@@ -40,14 +41,13 @@ void sky_lanes(const SamplePacket& packet, const Environment& environment,
   }
 }
 
-}  // namespace
-
 bool recompute_environment_factors(SampleCache& cache, const RenderContext& ctx) {
   if (!ctx.plan.environment) return true;
-  const bool planes = visit_cached_samples(cache, ctx, [&](SamplePacket& packet, SamplePlane& plane) {
-    store_environment(packet, cache, ctx, cache.width, plane);
-    return 0LL;
-  });
+  const bool planes =
+      visit_cached_samples(cache, ctx, [&](SamplePacket& packet, SamplePlane& plane) {
+        store_environment(packet, cache, ctx, cache.width, plane);
+        return 0LL;
+      });
   if (!planes) return false;
   const int width = static_cast<int>(cache.refined.entries());
   return visit_refined_samples(cache, ctx, [&](SamplePacket& packet) {

@@ -71,8 +71,9 @@ Image halve(const Image& map) {
     const double w0 = texel_omega(2 * j, map.width, map.height);
     const double w1 = texel_omega(2 * j + 1, map.width, map.height);
     for (int i = 0; i < out.width; ++i) {
-      const glm::dvec3 sum = glm::dvec3(map.at(2 * i, 2 * j) + map.at(2 * i + 1, 2 * j)) * w0 +
-                             glm::dvec3(map.at(2 * i, 2 * j + 1) + map.at(2 * i + 1, 2 * j + 1)) * w1;
+      const glm::dvec3 sum =
+          glm::dvec3(map.at(2 * i, 2 * j) + map.at(2 * i + 1, 2 * j)) * w0 +
+          glm::dvec3(map.at(2 * i, 2 * j + 1) + map.at(2 * i + 1, 2 * j + 1)) * w1;
       out.at(i, j) = glm::vec3(sum / (2.0 * (w0 + w1)));
     }
   }
@@ -127,7 +128,8 @@ Image convolve(const InputLevel& in, float alpha, int out_w, int out_h) {
         const double x = (c_min - a) / b;
         if (x > 1.0) continue;  // the row is outside the lobe's reach
         if (x > -1.0) {
-          half = std::min(half, static_cast<int>(std::ceil(std::acos(x) / (2.0 * kPi) * in.width)) + 1);
+          half = std::min(half,
+                          static_cast<int>(std::ceil(std::acos(x) / (2.0 * kPi) * in.width)) + 1);
         }
       } else if (a < c_min) {
         continue;
@@ -200,8 +202,8 @@ PrefilteredEnvironment::PrefilteredEnvironment(std::shared_ptr<const Environment
   std::vector<Image> pyramid;
   std::vector<InputLevel> inputs;
   inputs.push_back(make_input(source));
-  for (const Image* level = &source; level->width % 2 == 0 && level->height % 2 == 0 &&
-                                     level->width >= 8;) {
+  for (const Image* level = &source;
+       level->width % 2 == 0 && level->height % 2 == 0 && level->width >= 8;) {
     pyramid.push_back(halve(*level));
     level = &pyramid.back();
     inputs.push_back(make_input(*level));
@@ -248,9 +250,8 @@ glm::vec3 PrefilteredEnvironment::diffuse(const glm::vec3& n) const {
   return map_bilinear<float>(m_levels[1], uv.x, uv.y);
 }
 
-glm::vec3 PrefilteredEnvironment::specular(float alpha, const glm::vec3& r) const {
+glm::vec3 PrefilteredEnvironment::specular(const LevelBlend& b, const glm::vec3& r) const {
   const glm::vec2 uv = map_uv(r);
-  const LevelBlend b = blend(alpha);
   const glm::vec3 la = map_bilinear<float>(image(b.a), uv.x, uv.y);
   if (b.wb == 0.0f) return la;
   return la + (map_bilinear<float>(image(b.b), uv.x, uv.y) - la) * b.wb;

@@ -60,7 +60,9 @@ class PrefilteredEnvironment {
   // to_map_frame): the diffuse term's irradiance / pi at normal n, the specular term's lobe mean
   // of exponent alpha at the mirror direction r.
   glm::vec3 diffuse(const glm::vec3& n) const;
-  glm::vec3 specular(float alpha, const glm::vec3& r) const;
+  glm::vec3 specular(float alpha, const glm::vec3& r) const { return specular(blend(alpha), r); }
+  // The same with the levels already chosen (per material, once: EnvironmentContext).
+  glm::vec3 specular(const LevelBlend& blend, const glm::vec3& r) const;
 
   std::uint64_t bytes() const;
 

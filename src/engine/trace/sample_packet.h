@@ -18,6 +18,7 @@
 #include "engine/simd/lane_store.h"
 #include "engine/simd/lanes.h"
 #include "engine/trace/sample_cache.h"
+#include "shading/environment.h"
 #include "shading/sampling.h"
 #include "shading/surface.h"
 
@@ -97,6 +98,11 @@ long long packet_light(const SamplePacket& packet, const SurfaceLanes& surfaces,
 // (engine/environment/environment_lanes.cpp).
 void environment_lanes(const SamplePacket& packet, const SurfaceLanes& surfaces,
                        const RenderContext& ctx, LightLanes (&out)[3]);
+
+// The map's radiance (intensity 1) towards each missed lane of packet, 0 where the lane hit
+// (engine/environment/environment_stage.cpp): the sky.
+void sky_lanes(const SamplePacket& packet, const Environment& environment,
+               const EnvironmentRotation<float>& rotation, glm::vec3 (&out)[kLanes]);
 
 void store_light(const SamplePacket& packet, int width, const LightLanes& lanes,
                  LightFactorPlane& plane);

@@ -7,6 +7,7 @@
 #include "engine/shade/total_lanes.h"
 #include "engine/simd/lane_store.h"
 #include "engine/trace/sample_packet.h"
+#include "shading/total.h"
 
 namespace gloss {
 
@@ -40,6 +41,16 @@ bool fused_factors_pass(const SampleCache& cache, const RenderContext& ctx, Pixe
     *total = Image(width, cache.height);
   }
   const Recombination recombination(ctx);
+  // With a total and an environment, the pass writes the sky too (factors.sky, one sample per
+  // pixel: its own radiance, as environment_sky; kept for a later re-shade that turns the
+  // background on) and, as the background, shows it where the lanes missed, as combine_terms
+  // would (the same bits: total_under_sky with terms of 0, and + 0 on hits).
+  const bool sky = total != nullptr && ctx.plan.sky;
+  const bool shown = sky && recombination.sky_shown();
+  const EnvironmentRotation<float> rotation =
+      environment_rotation<float>(sky ? scene.environment.rotation : 0.0f);
+  if (sky) factors.sky.assign(pixels, glm::vec3(0.0f));
+  const float intensity = scene.environment.intensity;
   return for_each_packet(cache, ctx, [&](SamplePacket& packet) {
     alignas(64) std::int32_t material[kLanes];
     alignas(64) float diffuse[kLanes], specular[kLanes];
@@ -66,6 +77,19 @@ bool fused_factors_pass(const SampleCache& cache, const RenderContext& ctx, Pixe
     if (total != nullptr) {
       float rgb[3 * kLanes];
       totals.store(material, rgb);
+      if (sky) {
+        glm::vec3 radiance[kLanes];
+        sky_lanes(packet, scene.environment, rotation, radiance);
+        glm::vec3* row = &factors.sky[static_cast<std::size_t>(packet.y0) * width + packet.x0];
+        for (int i = 0; i < packet.x1 - packet.x0; ++i) {
+          if (material[i] >= 0) continue;
+          row[i] = radiance[i];
+          if (!shown) continue;
+          for (int c = 0; c < 3; ++c) {
+            rgb[3 * i + c] = form_total(0.0f, 0.0f, 0.0f, 0.0f, radiance[i][c] * intensity);
+          }
+        }
+      }
       store_pixels(packet, rgb, *total);
     }
     return rays;

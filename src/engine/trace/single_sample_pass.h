@@ -4,7 +4,9 @@
 // cache and reading it back (build_pixel_factors). The result equals
 // add_samples(cache, ctx, 1) followed by build_pixel_factors, bit for bit. Given a total image,
 // the pass also writes the total combine_terms would make of the factors (the same bits), so a
-// view of the total needs no second pass.
+// view of the total needs no second pass; with an environment it writes the sky as well
+// (factors.sky, as environment_sky would, shown where the environment is the background), so
+// no sky pass is needed either.
 #include "base/image.h"
 #include "engine/render_context.h"
 #include "engine/shade/pixel_factors.h"
