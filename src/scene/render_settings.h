@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <string>
 
+#include "texture/texture_lookup.h"
+
 namespace gloss {
 
 enum class ShadingModel { phong, blinn_phong };
@@ -42,6 +44,9 @@ struct RenderSettings {
   // Adaptive sampling refines a pixel whose clamped total differs from a neighbour's by more
   // than this, per channel (linear, 0..1); a speed knob: lower refines more pixels.
   float aa_threshold = 1.0f / 64.0f;
+  // How maps are read (docs/spec/shading.md, "Textures"): trilinear at the footprint's level
+  // (the contract), or a knob: bilinear or the nearest texel at level 0.
+  MapFilter map_filter = MapFilter::trilinear;
 };
 
 // Largest image side and pixel count accepted; larger requests are refused before allocating.
