@@ -14,6 +14,10 @@ ChangeClass classify_change(const Scene& before, const Scene& after, const Scene
   if (change < ChangeClass::light && make_render_plan(before) != make_render_plan(after)) {
     change = ChangeClass::light;
   }
+  // Under an environment the specular term's factors depend on the exponent and the model.
+  if (change == ChangeClass::exponent && make_render_plan(after).environment) {
+    change = ChangeClass::environment;
+  }
   if (change == ChangeClass::none && diff.any) change = ChangeClass::shade;
   return change;
 }

@@ -7,6 +7,8 @@
 #include <thread>
 
 #include "engine/adaptive_refinement.h"
+#include "engine/environment/environment_estimate.h"
+#include "engine/environment/environment_stage.h"
 #include "engine/frame_pool.h"
 #include "engine/render_context.h"
 #include "engine/render_plan.h"
@@ -58,6 +60,7 @@ struct ProgressiveRenderer::Impl {
   RenderContext ctx;
   SampleCache cache;
   PixelFactors factors;
+  EnvironmentEstimates environment;  // the environment's exact terms, pass by pass
   std::shared_ptr<FramePool> frame_pool = std::make_shared<FramePool>();
   int level = 0;                  // 0 .. preview_levels - 1: coarse passes; preview_levels: full
   double last_full_pass_ms = -1;  // the last full-resolution 1-spp pass (preview_budget_ms)
@@ -83,9 +86,13 @@ struct ProgressiveRenderer::Impl {
   }
   // Samples per pixel the cache stands for (adaptive: per refined pixel, once refined).
   int cached_spp() const { return cache.refined.spp > 0 ? cache.refined.spp : cache.samples(); }
+  // Every sample traced at full resolution (the environment's passes come after).
+  bool samples_done() const {
+    return level == options.preview_levels && cached_spp() >= scene->render.spp;
+  }
   bool converged_state() const {
-    return dirty == ChangeClass::none && level == options.preview_levels &&
-           cached_spp() >= scene->render.spp;
+    return dirty == ChangeClass::none && samples_done() &&
+           next_environment_steps(ctx, environment) == 0;
   }
   // Traces the refined samples the centre image asks for; false when cancelled.
   bool refine();
@@ -141,9 +148,7 @@ bool ProgressiveRenderer::Impl::take_inbox() {
     embree = std::make_unique<EmbreeScene>(*next);
   }
   scene = std::move(next);
-  ctx.scene = scene.get();
-  ctx.embree = embree.get();
-  ctx.plan = make_render_plan(*scene);
+  bind_scene(ctx, *scene, *embree);
   ctx.cancel = &cancel;
   dirty = std::max(dirty, change);
   return true;
@@ -187,11 +192,23 @@ bool ProgressiveRenderer::Impl::step() {
   }
   const std::shared_ptr<RenderedFrame> frame =
       FramePool::make(frame_pool, cache.width, cache.height, worker_terms);
-  Image* const total = worker_terms ? nullptr : &frame->images.total;
+  // The first pass makes the total itself unless a term view wants the terms or the
+  // environment is the background (its sky comes after the factors: combine_terms adds it).
+  const bool sky_shown = ctx.plan.sky && scene->environment.as_background;
+  Image* const total = worker_terms || sky_shown ? nullptr : &frame->images.total;
+  // The environment's estimates belong to the cache's samples and slots as they are: an edit
+  // that rewrites the slots (environment, light) or the samples (full) starts them again, from
+  // the fast path. Edits below keep them (a material edit only recombines).
+  if (dirty >= ChangeClass::environment) environment.reset();
+  const int environment_steps =
+      dirty == ChangeClass::none && samples_done() ? next_environment_steps(ctx, environment) : 0;
   if (restart) {
     redo = ChangeClass::full;
     ok = trace_single_sample(cache, ctx, factors, total);
     factors_done = total_done = true;
+  } else if (dirty == ChangeClass::environment) {
+    redo = ChangeClass::environment;  // its factors from the cached hits, no rays
+    ok = recompute_environment_factors(cache, ctx);
   } else if (dirty == ChangeClass::light) {
     redo = ChangeClass::light;
     if (cache.samples() == 1 && cache.refined.spp == 0) {  // one pass: light and pixel factors
@@ -213,6 +230,9 @@ bool ProgressiveRenderer::Impl::step() {
       level = previous_level;
       reclaim_planes(cache, std::move(traced));
     }
+  } else if (environment_steps > 0) {
+    redo = ChangeClass::environment;  // cancelled: back to the fast path, estimates anew
+    ok = add_environment_steps(cache, ctx, environment, environment_steps);
   } else if (dirty == ChangeClass::none && adaptive()) {
     redo = ChangeClass::exponent;  // cancelled: the factors are rebuilt from the centres
     ok = refine() && refine_pixel_factors(cache, ctx, factors);
@@ -225,6 +245,10 @@ bool ProgressiveRenderer::Impl::step() {
   if (ok && dirty != ChangeClass::shade && !factors_done) {
     redo = std::max(redo, ChangeClass::exponent);
     ok = build_pixel_factors(cache, ctx, factors);
+  }
+  // The sky follows the camera, the samples and the environment's map and rotation.
+  if (ok && ctx.plan.sky && dirty != ChangeClass::shade && dirty != ChangeClass::exponent) {
+    ok = environment_sky(cache, ctx, factors);
   }
   ctx.rays = nullptr;
   if (!ok) {

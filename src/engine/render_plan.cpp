@@ -63,16 +63,25 @@ RenderPlan make_render_plan(const Scene& scene, bool full) {
     any_ks = any_ks || nonzero(m.specular);
   }
   plan.spheres = has_object_type(scene, ObjectType::sphere);
+  const bool environment = scene.environment.present();
+  plan.sky = environment;
   if (full) {
     plan.shadow_rays = scene.render.shadows;
     plan.emissive = plan.ambient = plan.diffuse = plan.specular = true;
+    plan.environment = environment;
     return plan;
   }
   plan.emissive = any_ke;
   plan.ambient = any_ka && nonzero(ambient_light);
   plan.diffuse = any_kd && any_ld;
   plan.specular = any_ks && any_ls;
-  if (!plan.diffuse && !plan.specular) {  // lights then only feed the ambient sum
+  // An environment at intensity 0 is still planned: its intensity is a recombination constant
+  // (a `shade` edit), so turning it up again traces nothing.
+  plan.environment = environment && (any_kd || any_ks);
+  const bool lights_lit = plan.diffuse || plan.specular;
+  plan.diffuse = plan.diffuse || (plan.environment && any_kd);
+  plan.specular = plan.specular || (plan.environment && any_ks);
+  if (!lights_lit) {  // lights then only feed the ambient sum
     plan.lights.clear();
     plan.unit_attenuation.clear();
     plan.sources.clear();

@@ -21,11 +21,24 @@ struct RenderPlan {
   bool diffuse = false;      // some kd != 0 and a planned light has Ld != 0
   bool specular = false;     // some ks != 0 and a planned light has Ls != 0
   bool spheres = false;      // some object is a sphere (its hits are refined in double)
+  // The environment light reaches some kd or ks: three more slots of light factors after the
+  // planned lights, one per colour channel (engine/environment/environment_lanes.cpp).
+  bool environment = false;
+  // The scene has an environment: the sky (the map seen where primary rays miss) is kept per
+  // pixel, so turning as_background on or off only recombines.
+  bool sky = false;
+
+  // Slots of light factors per sample: the planned lights, then the environment's three.
+  std::size_t slots() const { return lights.size() + (environment ? 3 : 0); }
+  std::size_t environment_slot(int channel) const {
+    return lights.size() + static_cast<std::size_t>(channel);
+  }
 
   bool operator==(const RenderPlan& o) const {
     return lights == o.lights && unit_attenuation == o.unit_attenuation && sources == o.sources &&
            shadow_rays == o.shadow_rays && emissive == o.emissive && ambient == o.ambient &&
-           diffuse == o.diffuse && specular == o.specular && spheres == o.spheres;
+           diffuse == o.diffuse && specular == o.specular && spheres == o.spheres &&
+           environment == o.environment && sky == o.sky;
   }
   bool operator!=(const RenderPlan& o) const { return !(*this == o); }
 };

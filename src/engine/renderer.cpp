@@ -4,6 +4,8 @@
 #include <cstring>
 
 #include "engine/adaptive_refinement.h"
+#include "engine/environment/environment_estimate.h"
+#include "engine/environment/environment_stage.h"
 #include "engine/render_context.h"
 #include "engine/shade/pixel_factors.h"
 #include "engine/trace/embree_scene.h"
@@ -28,14 +30,12 @@ TermImages render(const Scene& scene, const RenderOptions& options) {
   validate_scene(scene);
   const EmbreeScene embree(scene);
   RenderContext ctx;
-  ctx.scene = &scene;
-  ctx.embree = &embree;
-  ctx.plan = make_render_plan(scene, options.full_plan);
+  bind_scene(ctx, scene, embree, options.full_plan);
 
   const int w = scene.render.width, h = scene.render.height, spp = scene.render.spp;
   // Larger images go band by band, each band's sample cache about kSampleBandBytes; validation
   // counted the same (scene/memory/memory_estimate.h).
-  const int band_rows = sample_band_rows(w, h, spp, ctx.plan.lights.size());
+  const int band_rows = sample_band_rows(w, h, spp, ctx.plan.slots());
 
   TermImages out;
   out.total = Image(w, h);
@@ -43,6 +43,11 @@ TermImages render(const Scene& scene, const RenderOptions& options) {
     out.emissive = out.ambient = out.diffuse = out.specular = Image(w, h);
   }
   const bool adaptive = spp > 1 && scene.render.sampling == Sampling::adaptive;
+  // The environment as the background: its sky is added by combine_terms. Its exact terms: the
+  // estimates replace the fast path's factors before the image is made.
+  const bool sky_shown = ctx.plan.sky && scene.environment.as_background;
+  EnvironmentEstimates environment;
+  const bool exact = next_environment_steps(ctx, environment) > 0;
   if (options.refined != nullptr) options.refined->clear();
   SampleCache cache;
   PixelFactors factors;
@@ -74,12 +79,21 @@ TermImages render(const Scene& scene, const RenderOptions& options) {
         for (const std::uint32_t p : cache.refined.pixels) options.refined->push_back(p + region0);
       }
     } else if (spp == 1) {  // the same bits, one pass (with the total, unless terms are wanted)
-      trace_single_sample(cache, ctx, factors, options.terms ? nullptr : &band.total);
+      trace_single_sample(cache, ctx, factors,
+                          options.terms || sky_shown || exact ? nullptr : &band.total);
     } else {
       add_samples(cache, ctx, spp);
       build_pixel_factors(cache, ctx, factors);
     }
-    if (spp != 1 || options.terms) combine_terms(factors, ctx, band, options.terms);
+    if (exact) {
+      environment.reset();
+      add_environment_steps(cache, ctx, environment, scene.render.env_samples);
+      build_pixel_factors(cache, ctx, factors);
+    }
+    environment_sky(cache, ctx, factors);
+    if (spp != 1 || options.terms || sky_shown || exact) {
+      combine_terms(factors, ctx, band, options.terms);
+    }
     const int from = row0 - halo0;
     copy_rows(band.total, from, rows, row0, out.total);
     if (options.terms) {

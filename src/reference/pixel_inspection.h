@@ -30,6 +30,17 @@ struct LightBreakdown {
   glm::dvec3 specular{0.0};   // ks Ls c^alpha att vis (times the energy factor), 0 when ndl <= 0
 };
 
+// The environment's terms at the pixel's hit (reference_environment.h): exact integrals with
+// error bounds when shadows are off, estimates with standard errors when they are on.
+struct EnvironmentBreakdown {
+  bool present = false;   // the scene has an environment and the pixel a hit
+  bool estimated = false;  // shadows on: estimates (error = standard error) not bounds
+  glm::dvec3 diffuse{0.0}, specular{0.0};            // kd (1/pi) int L cos vis, ks lobe mean
+  glm::dvec3 diffuse_error{0.0}, specular_error{0.0};
+  glm::dvec3 unshadowed_diffuse{0.0}, unshadowed_specular{0.0};  // the same without vis
+  double visibility = 1.0;  // the visible share of the irradiance (1 with shadows off)
+};
+
 // What one map gave at the pixel's hit.
 struct MapReading {
   bool present = false;
@@ -54,6 +65,7 @@ struct PixelBreakdown {
   glm::dvec3 emissive{0.0}, ambient{0.0}, diffuse{0.0}, specular{0.0};
   glm::dvec3 total{0.0};  // shading/total.h form_total of the four (background on a miss)
   std::vector<LightBreakdown> lights;  // one per scene light, in order
+  EnvironmentBreakdown environment;
   // Maps (docs/spec/shading.md, "Textures"), when the material has any.
   bool textured = false;
   glm::dvec2 uv[2] = {glm::dvec2(0.0), glm::dvec2(0.0)};  // (u, v) of sets 0 and 1

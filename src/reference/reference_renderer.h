@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "base/image.h"
+#include "reference/reference_environment.h"
 #include "scene/render_settings.h"
 #include "scene/scene.h"
 
@@ -36,6 +37,9 @@ struct ReferenceOptions {
   // Adaptive sampling's placement (engine RenderOptions::refined): when set (width * height
   // entries), pixels marked 1 take spp stratified samples and the others one at the centre.
   const std::vector<std::uint8_t>* refined = nullptr;
+  // The environment light's integrals: their error bound with shadows off, directions per hit
+  // with shadows on (reference_environment.h).
+  ReferenceEnvironmentOptions environment;
 };
 
 // Renders scene.render's size, model, shadows, energy normalisation and seed, with the fast

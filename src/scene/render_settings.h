@@ -44,6 +44,12 @@ struct RenderSettings {
   // Adaptive sampling refines a pixel whose clamped total differs from a neighbour's by more
   // than this, per channel (linear, 0..1); a speed knob: lower refines more pixels.
   float aa_threshold = 1.0f / 64.0f;
+  // The environment light (docs/engine.md, "The environment"): the fast path's prefiltered maps
+  // have env_resolution texels per lobe width; then env_samples directions per sample, drawn
+  // from the lobes and the map and combined, converge on the contract's integrals (with
+  // visibility when shadows are on). 0: the fast path alone.
+  int env_resolution = 2;
+  int env_samples = 64;
   // How maps are read (docs/spec/shading.md, "Textures"): trilinear at the footprint's level
   // (the contract), or a knob: bilinear or the nearest texel at level 0.
   MapFilter map_filter = MapFilter::trilinear;
@@ -53,5 +59,6 @@ struct RenderSettings {
 constexpr int kMaxImageSide = 16384;
 constexpr long long kMaxImagePixels = 64LL * 1024 * 1024;
 constexpr int kMaxSpp = 4096;
+constexpr int kMaxEnvSamples = 65536;
 
 }  // namespace gloss

@@ -18,22 +18,22 @@ namespace gloss {
 // The surface at a hit as the maps need it.
 template <class T>
 struct MapFrame {
-  glm::vec<2, T> uv[2];               // (u, v) of each set (a shape with one set has it twice)
-  T footprint[2] = {T(0), T(0)};      // the sample's footprint in each set's (u, v) units
-  Vec3<T> n;                          // the shading normal, on the viewer's side
-  Vec3<T> v;                          // to the eye
-  T side = T(1);                      // -1 where the two-sided rule turned n around
-  Vec3<T> tangent{T(1), T(0), T(0)};  // set 0's tangent as the mesh gives it (not turned)
+  glm::vec<2, T> uv[2];           // (u, v) of each set (a shape with one set has it twice)
+  T footprint[2] = {T(0), T(0)};  // the sample's footprint in each set's (u, v) units
+  glm::vec<3, T> n;               // the shading normal, on the viewer's side
+  glm::vec<3, T> v;               // to the eye
+  T side = T(1);                  // -1 where the two-sided rule turned n around
+  glm::vec<3, T> tangent{T(1), T(0), T(0)};  // set 0's tangent as the mesh gives it (not turned)
   T handedness = T(1);
-  Vec3<T> dpdu{T(0)}, dpdv{T(0)};  // set 0's derivatives (bump maps); 0: the tangent frame's
+  glm::vec<3, T> dpdu{T(0)}, dpdv{T(0)};  // set 0's derivatives (bump maps); 0: the tangent frame's
 };
 
 // What the maps give; 1 (and n unchanged) where a material has no map.
 template <class T>
 struct MapValues {
-  Vec3<T> kd{T(1)}, ka{T(1)}, ks{T(1)}, ke{T(1)};
+  glm::vec<3, T> kd{T(1)}, ka{T(1)}, ks{T(1)}, ke{T(1)};
   T alpha = T(1);
-  Vec3<T> n{T(0)};
+  glm::vec<3, T> n{T(0)};
   // For the inspector: each map's level read and texel, by MapSlot.
   T level[kMapSlots] = {};
   glm::vec<4, T> texel[kMapSlots] = {};
@@ -78,17 +78,17 @@ MapValues<T> map_values(const Material& material, const MapFrame<T>& frame, MapF
   };
   auto uv_of = [&](MapSlot slot) { return frame.uv[material.map(slot).uv_set == 1 ? 1 : 0]; };
   if (material.has_map(MapSlot::diffuse)) {
-    out.kd = Vec3<T>(read(MapSlot::diffuse, uv_of(MapSlot::diffuse)));
+    out.kd = glm::vec<3, T>(read(MapSlot::diffuse, uv_of(MapSlot::diffuse)));
     out.ka = out.kd;
   }
   if (material.has_map(MapSlot::ambient)) {
-    out.ka = Vec3<T>(read(MapSlot::ambient, uv_of(MapSlot::ambient)));
+    out.ka = glm::vec<3, T>(read(MapSlot::ambient, uv_of(MapSlot::ambient)));
   }
   if (material.has_map(MapSlot::specular)) {
-    out.ks = Vec3<T>(read(MapSlot::specular, uv_of(MapSlot::specular)));
+    out.ks = glm::vec<3, T>(read(MapSlot::specular, uv_of(MapSlot::specular)));
   }
   if (material.has_map(MapSlot::emission)) {
-    out.ke = Vec3<T>(read(MapSlot::emission, uv_of(MapSlot::emission)));
+    out.ke = glm::vec<3, T>(read(MapSlot::emission, uv_of(MapSlot::emission)));
   }
   if (material.has_map(MapSlot::shininess)) {
     out.alpha = read(MapSlot::shininess, uv_of(MapSlot::shininess)).x;
@@ -100,12 +100,12 @@ MapValues<T> map_values(const Material& material, const MapFrame<T>& frame, MapF
   }
   // The normal maps work in the surface's own orientation (the side it was modelled with), then
   // turn with it: on the back of a two-sided surface a bump is a dent.
-  const Vec3<T> n0 = frame.side * frame.n;
-  Vec3<T> n = n0;
+  const glm::vec<3, T> n0 = frame.side * frame.n;
+  glm::vec<3, T> n = n0;
   if (material.has_map(MapSlot::normal)) {
     const TextureMap& map = material.map(MapSlot::normal);
     const glm::vec<4, T> texel = read(MapSlot::normal, uv_of(MapSlot::normal));
-    Vec3<T> n_t = tangent_space_normal(texel, static_cast<T>(material.normal_scale));
+    glm::vec<3, T> n_t = tangent_space_normal(texel, static_cast<T>(material.normal_scale));
     // A map turned or mirrored in (u, v) turns its tangent-space x and y back.
     if (map.rotation != 0.0f || map.scale.x < 0.0f || map.scale.y < 0.0f) {
       const T angle = -static_cast<T>(map.rotation) * T(3.14159265358979323846) / T(180);
@@ -126,7 +126,7 @@ MapValues<T> map_values(const Material& material, const MapFrame<T>& frame, MapF
     const T level = map_level(map, frame.footprint[set]);
     const T h_u = scale * read_map(map, filter, uv + glm::vec<2, T>(du, T(0)), level).x;
     const T h_v = scale * read_map(map, filter, uv + glm::vec<2, T>(T(0), du), level).x;
-    Vec3<T> dpdu = frame.dpdu, dpdv = frame.dpdv;
+    glm::vec<3, T> dpdu = frame.dpdu, dpdv = frame.dpdv;
     if (glm::length(glm::cross(dpdu, dpdv)) == T(0)) {  // no derivatives: the tangent frame's
       dpdu = orthogonal_tangent(n, frame.tangent);
       dpdv = frame.handedness * glm::cross(n, dpdu);

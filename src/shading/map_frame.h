@@ -20,7 +20,8 @@ MapFrame<T> mesh_map_frame(const Mesh& mesh, std::uint32_t prim, const T (&b)[3]
   MapFrame<T> f;
   if (!mesh.textured() || prim >= mesh.triangles.size()) return f;
   const glm::uvec3 tri = mesh.triangles[prim];
-  const Vec3<T> p0(mesh.positions[tri.x]), p1(mesh.positions[tri.y]), p2(mesh.positions[tri.z]);
+  const glm::vec<3, T> p0(mesh.positions[tri.x]), p1(mesh.positions[tri.y]),
+      p2(mesh.positions[tri.z]);
   for (int set = 0; set < 2; ++set) {
     const std::vector<glm::vec2>& uv = mesh.uv_set(set);
     const glm::vec<2, T> t0(uv[tri.x]), t1(uv[tri.y]), t2(uv[tri.z]);
@@ -31,7 +32,7 @@ MapFrame<T> mesh_map_frame(const Mesh& mesh, std::uint32_t prim, const T (&b)[3]
   }
   if (mesh.tangents.size() == mesh.positions.size()) {
     const glm::vec4 &a = mesh.tangents[tri.x], &c = mesh.tangents[tri.y], &d = mesh.tangents[tri.z];
-    f.tangent = b[0] * Vec3<T>(a) + b[1] * Vec3<T>(c) + b[2] * Vec3<T>(d);
+    f.tangent = b[0] * glm::vec<3, T>(a) + b[1] * glm::vec<3, T>(c) + b[2] * glm::vec<3, T>(d);
     f.handedness = a.w < 0.0f ? T(-1) : T(1);
   } else if (glm::length(f.dpdu) > T(0)) {
     f.tangent = f.dpdu;
@@ -41,11 +42,12 @@ MapFrame<T> mesh_map_frame(const Mesh& mesh, std::uint32_t prim, const T (&b)[3]
 
 // A sphere of centre c and radius r hit at p.
 template <class T>
-MapFrame<T> sphere_map_frame(const Vec3<T>& c, T r, const Vec3<T>& p, T t, T spread, T cos_theta) {
+MapFrame<T> sphere_map_frame(const glm::vec<3, T>& c, T r, const glm::vec<3, T>& p, T t, T spread,
+                             T cos_theta) {
   MapFrame<T> f;
-  Vec3<T> d = p - c;
+  glm::vec<3, T> d = p - c;
   const T len = glm::length(d);
-  d = len > T(0) ? d / len : Vec3<T>(0, 0, 1);
+  d = len > T(0) ? d / len : glm::vec<3, T>(0, 0, 1);
   f.uv[0] = f.uv[1] = sphere_uv(d);
   f.footprint[0] = f.footprint[1] = footprint_uv(t, spread, cos_theta, sphere_uv_density(r, d.y));
   f.tangent = sphere_tangent(d);

@@ -12,21 +12,19 @@
 
 namespace gloss {
 
-template <class T>
-using Vec3 = glm::vec<3, T>;
-
 // A unit vector perpendicular to the unit n (for frames that have no tangent of their own).
 template <class T>
-Vec3<T> any_perpendicular(const Vec3<T>& n) {
-  const Vec3<T> axis = std::fabs(n.x) < T(0.9) ? Vec3<T>(1, 0, 0) : Vec3<T>(0, 1, 0);
+glm::vec<3, T> any_perpendicular(const glm::vec<3, T>& n) {
+  const glm::vec<3, T> axis =
+      std::fabs(n.x) < T(0.9) ? glm::vec<3, T>(1, 0, 0) : glm::vec<3, T>(0, 1, 0);
   return glm::normalize(glm::cross(axis, n));
 }
 
 // The tangent t made perpendicular to the unit normal n (Gram-Schmidt), unit length; any
 // perpendicular where t has no part across n.
 template <class T>
-Vec3<T> orthogonal_tangent(const Vec3<T>& n, const Vec3<T>& t) {
-  const Vec3<T> p = t - n * glm::dot(n, t);
+glm::vec<3, T> orthogonal_tangent(const glm::vec<3, T>& n, const glm::vec<3, T>& t) {
+  const glm::vec<3, T> p = t - n * glm::dot(n, t);
   const T len = glm::length(p);
   return len > T(1e-12) && std::isfinite(len) ? p / len : any_perpendicular(n);
 }
@@ -34,20 +32,21 @@ Vec3<T> orthogonal_tangent(const Vec3<T>& n, const Vec3<T>& t) {
 // A normal map's texel as a tangent-space direction: n_t = 2 c - 1 per channel, x and y times
 // scale, normalised; (0, 0, 1) where that leaves nothing to normalise.
 template <class T>
-Vec3<T> tangent_space_normal(const glm::vec<4, T>& texel, T scale) {
-  const Vec3<T> n((T(2) * texel.x - T(1)) * scale, (T(2) * texel.y - T(1)) * scale,
-                  T(2) * texel.z - T(1));
+glm::vec<3, T> tangent_space_normal(const glm::vec<4, T>& texel, T scale) {
+  const glm::vec<3, T> n((T(2) * texel.x - T(1)) * scale, (T(2) * texel.y - T(1)) * scale,
+                         T(2) * texel.z - T(1));
   const T len = glm::length(n);
-  return len > T(0) && std::isfinite(len) ? n / len : Vec3<T>(0, 0, 1);
+  return len > T(0) && std::isfinite(len) ? n / len : glm::vec<3, T>(0, 0, 1);
 }
 
 // n = normalize(T n_t.x + B n_t.y + N n_t.z) in the frame of the unit normal N, the tangent t
 // (made perpendicular to N) and B = w cross(N, T), w = +1 or -1 the handedness.
 template <class T>
-Vec3<T> normal_from_map(const Vec3<T>& N, const Vec3<T>& tangent, T w, const Vec3<T>& n_t) {
-  const Vec3<T> t = orthogonal_tangent(N, tangent);
-  const Vec3<T> b = w * glm::cross(N, t);
-  const Vec3<T> n = t * n_t.x + b * n_t.y + N * n_t.z;
+glm::vec<3, T> normal_from_map(const glm::vec<3, T>& N, const glm::vec<3, T>& tangent, T w,
+                               const glm::vec<3, T>& n_t) {
+  const glm::vec<3, T> t = orthogonal_tangent(N, tangent);
+  const glm::vec<3, T> b = w * glm::cross(N, t);
+  const glm::vec<3, T> n = t * n_t.x + b * n_t.y + N * n_t.z;
   const T len = glm::length(n);
   return len > T(0) && std::isfinite(len) ? n / len : N;
 }
@@ -58,11 +57,11 @@ Vec3<T> normal_from_map(const Vec3<T>& N, const Vec3<T>& tangent, T w, const Vec
 // displacement's own curvature, is left out: it vanishes on flat triangles and is of the order
 // of h / radius elsewhere.)
 template <class T>
-Vec3<T> normal_from_bump(const Vec3<T>& N, const Vec3<T>& dpdu, const Vec3<T>& dpdv, T h, T h_u,
-                         T h_v, T du, T dv) {
-  const Vec3<T> pu = dpdu - N * glm::dot(N, dpdu) + N * ((h_u - h) / du);
-  const Vec3<T> pv = dpdv - N * glm::dot(N, dpdv) + N * ((h_v - h) / dv);
-  Vec3<T> n = glm::cross(pu, pv);
+glm::vec<3, T> normal_from_bump(const glm::vec<3, T>& N, const glm::vec<3, T>& dpdu,
+                                const glm::vec<3, T>& dpdv, T h, T h_u, T h_v, T du, T dv) {
+  const glm::vec<3, T> pu = dpdu - N * glm::dot(N, dpdu) + N * ((h_u - h) / du);
+  const glm::vec<3, T> pv = dpdv - N * glm::dot(N, dpdv) + N * ((h_v - h) / dv);
+  glm::vec<3, T> n = glm::cross(pu, pv);
   const T len = glm::length(n);
   if (!(len > T(0)) || !std::isfinite(len)) return N;
   n /= len;
@@ -72,7 +71,7 @@ Vec3<T> normal_from_bump(const Vec3<T>& N, const Vec3<T>& dpdu, const Vec3<T>& d
 // The horizon rule: a mapped normal tilted away from the viewer (dot(n, v) < 0) is mirrored
 // about the plane perpendicular to v, back to v's side. n_g and the shadow rays are not touched.
 template <class T>
-Vec3<T> facing_viewer(const Vec3<T>& n, const Vec3<T>& v) {
+glm::vec<3, T> facing_viewer(const glm::vec<3, T>& n, const glm::vec<3, T>& v) {
   const T d = glm::dot(n, v);
   if (!(d < T(0))) return n;
   return glm::normalize(n - T(2) * d * v);
@@ -89,14 +88,15 @@ T bump_step(T footprint_uv) {
 // A triangle's dp/du and dp/dv from its corners' positions and (u, v) (zero where its (u, v)
 // area is zero).
 template <class T>
-void triangle_uv_derivatives(const Vec3<T>& p0, const Vec3<T>& p1, const Vec3<T>& p2,
-                             const glm::vec<2, T>& t0, const glm::vec<2, T>& t1,
-                             const glm::vec<2, T>& t2, Vec3<T>& dpdu, Vec3<T>& dpdv) {
+void triangle_uv_derivatives(const glm::vec<3, T>& p0, const glm::vec<3, T>& p1,
+                             const glm::vec<3, T>& p2, const glm::vec<2, T>& t0,
+                             const glm::vec<2, T>& t1, const glm::vec<2, T>& t2,
+                             glm::vec<3, T>& dpdu, glm::vec<3, T>& dpdv) {
   const glm::vec<2, T> a = t1 - t0, b = t2 - t0;
   const T det = a.x * b.y - a.y * b.x;
-  const Vec3<T> e1 = p1 - p0, e2 = p2 - p0;
+  const glm::vec<3, T> e1 = p1 - p0, e2 = p2 - p0;
   if (!(std::fabs(det) > T(0))) {
-    dpdu = dpdv = Vec3<T>(0);
+    dpdu = dpdv = glm::vec<3, T>(0);
     return;
   }
   dpdu = (b.y * e1 - a.y * e2) / det;

@@ -31,6 +31,12 @@ void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermIm
   const Recombination recombination(ctx);
   // The factors were built for the same plan (an edit that changes it is classed `light`).
   assert(recombination.lights() == lights);
+  // Where primary rays miss: the environment (its sky, when shown) or the background colour.
+  const bool sky = recombination.sky_shown() && factors.sky.size() == pixels;
+  auto pixel_total = [&](const glm::vec3 term[4], float missed, std::size_t i) {
+    return sky ? recombination.total_under_sky(term, factors.sky[i])
+               : recombination.total(term, missed);
+  };
   // The pixel loop, instantiated per (one sample, term images) so it holds no such branches.
   auto pixels_loop = [&](auto single_tag, auto terms_tag, std::size_t begin, std::size_t end) {
     constexpr bool kSingle = decltype(single_tag)::value;  // weight, background from material
@@ -44,7 +50,7 @@ void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermIm
         recombination.terms(m, weight, factors.diffuse.data() + i, factors.specular.data() + i,
                             pixels, term);
       }
-      out.total.pixels[i] = recombination.total(term, missed);
+      out.total.pixels[i] = pixel_total(term, missed, i);
       if constexpr (kTerms) {
         out.emissive.pixels[i] = term[0];
         out.ambient.pixels[i] = term[1];
@@ -77,7 +83,7 @@ void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermIm
       recombination.terms(m, factors.refined_weight[k], factors.diffuse.data() + i,
                           factors.specular.data() + i, pixels, term);
     }
-    out.total.pixels[i] = recombination.total(term, factors.refined_background[k]);
+    out.total.pixels[i] = pixel_total(term, factors.refined_background[k], i);
     if (terms) {
       out.emissive.pixels[i] = term[0];
       out.ambient.pixels[i] = term[1];

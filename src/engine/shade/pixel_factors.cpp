@@ -47,7 +47,8 @@ std::size_t PixelFactors::bytes() const {
   return material.size() * sizeof(std::int32_t) + (weight.size() + background.size()) * 4 +
          refined_pixel.size() * 12 +
          (diffuse.size() + specular.size()) * 4 + extra_pixel.size() * 8 +
-         (extra_weight.size() + extra_diffuse.size() + extra_specular.size()) * 4;
+         (extra_weight.size() + extra_diffuse.size() + extra_specular.size()) * 4 +
+         sky.size() * sizeof(glm::vec3);
 }
 
 void size_pixel_factors(PixelFactors& out, int width, int height, int samples, std::size_t lights) {
@@ -118,7 +119,7 @@ void single_sample_light(const MaterialExponents& exponents, PowMode mode,
 bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, PixelFactors& out) {
   const Scene& scene = *ctx.scene;
   const std::size_t pixels = cache.pixel_count();
-  const std::size_t lights = ctx.plan.lights.size();
+  const std::size_t lights = ctx.plan.slots();
   const int n = cache.samples();
   size_pixel_factors(out, cache.width, cache.height, n, lights);
   const int rows = band_rows(cache.width);

@@ -39,6 +39,10 @@ struct PixelFactors {
   // arrays like any pixel's.
   std::vector<std::uint32_t> refined_pixel;
   std::vector<float> refined_weight, refined_background;
+  // With an environment (RenderPlan::sky): per pixel the mean over its samples of the map's
+  // radiance at intensity 1 where they missed (environment/environment_stage.h); empty
+  // otherwise.
+  std::vector<glm::vec3> sky;
 
   std::size_t bytes() const;
 };

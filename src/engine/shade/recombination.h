@@ -1,8 +1,9 @@
 #pragma once
 // The linear part of the shading contract: the material constants folded with the light colours
 // and the scene ambient, per material (ke; ka (A_scene + sum La); per planned light kd Ld_i and
-// ks Ls_i, the latter times the optional energy normalisation), applied to per-pixel factor
-// means (pixel_factors.h): what combine_terms applies to every pixel.
+// ks Ls_i, the latter times the optional energy normalisation; per environment slot kd and ks
+// in its channel times the intensity), applied to per-pixel factor means (pixel_factors.h):
+// what combine_terms applies to every pixel.
 #include <cstdint>
 #include <vector>
 
@@ -46,6 +47,13 @@ class Recombination {
   glm::vec3 total(const glm::vec3 term[4], float missed) const {
     return form_total(term[0], term[1], term[2], term[3], missed * m_background);
   }
+  // The same where the environment is the background: sky is the pixel's mean over its samples
+  // of the map where they missed (intensity 1).
+  glm::vec3 total_under_sky(const glm::vec3 term[4], const glm::vec3& sky) const {
+    return form_total(term[0], term[1], term[2], term[3], sky * m_sky_intensity);
+  }
+  // Whether the environment is shown where primary rays miss (as_background with a sky).
+  bool sky_shown() const { return m_sky_shown; }
 
  private:
   std::size_t m_lights = 0;
@@ -55,6 +63,8 @@ class Recombination {
   std::size_t m_materials = 0;
   std::vector<float> m_columns;  // m_flat by column: [j * materials + material]
   glm::vec3 m_background{0.0f};
+  bool m_sky_shown = false;
+  float m_sky_intensity = 0.0f;
 };
 
 }  // namespace gloss

@@ -25,7 +25,7 @@ bool refine_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pi
   out.extra_specular.clear();
   if (refined.spp == 0) return true;
   const Scene& scene = *ctx.scene;
-  const std::size_t lights = ctx.plan.lights.size();
+  const std::size_t lights = ctx.plan.slots();
   const auto spp = static_cast<std::size_t>(refined.spp);
   const float inv_n = 1.0f / static_cast<float>(refined.spp);
   const MaterialExponents exponents = material_exponents(scene);

@@ -86,7 +86,7 @@ bool trace_refined_samples(SampleCache& cache, const RenderContext& ctx,
   RefinedSamples& refined = cache.refined;
   refined.spp = spp;
   refined.pixels = std::move(pixels);
-  size_plane(refined.plane, refined.entries(), ctx.plan.lights.size());
+  size_plane(refined.plane, refined.entries(), ctx.plan.slots());
   const SamplePattern pattern = make_sample_pattern(cache.seed, spp);
   const int width = static_cast<int>(refined.entries());
   const bool done = for_each_entry_packet(cache, ctx, [&](SamplePacket& packet) {
@@ -105,13 +105,26 @@ bool trace_refined_samples(SampleCache& cache, const RenderContext& ctx,
 bool recompute_refined_light_factors(SampleCache& cache, const RenderContext& ctx) {
   RefinedSamples& refined = cache.refined;
   if (refined.spp == 0) return true;
-  size_plane(refined.plane, refined.entries(), ctx.plan.lights.size());
+  size_plane(refined.plane, refined.entries(), ctx.plan.slots());
   const SamplePattern pattern = make_sample_pattern(cache.seed, refined.spp);
   const int width = static_cast<int>(refined.entries());
   return for_each_entry_packet(cache, ctx, [&](SamplePacket& packet) {
     entry_directions(packet, cache, pattern);
     load_hits(packet, width, refined.plane);
     return shade_sample(packet, cache, ctx, refined.plane, no_consumer);
+  });
+}
+
+bool visit_refined_samples(const SampleCache& cache, const RenderContext& ctx,
+                           const std::function<long long(SamplePacket&)>& visit) {
+  const RefinedSamples& refined = cache.refined;
+  if (refined.spp == 0) return true;
+  const SamplePattern pattern = make_sample_pattern(cache.seed, refined.spp);
+  const int width = static_cast<int>(refined.entries());
+  return for_each_entry_packet(cache, ctx, [&](SamplePacket& packet) {
+    entry_directions(packet, cache, pattern);
+    load_hits(packet, width, refined.plane);
+    return visit(packet);
   });
 }
 

@@ -77,7 +77,7 @@ void drop_planes(SampleCache& cache, int first) {
 
 bool add_samples(SampleCache& cache, const RenderContext& ctx, int count) {
   const int first = cache.samples();
-  append_planes(cache, ctx.plan.lights.size(), count);
+  append_planes(cache, ctx.plan.slots(), count);
   const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
   const bool done = for_each_packet(cache, ctx, [&](SamplePacket& packet) {
     long long rays = 0;
@@ -108,7 +108,7 @@ void size_planes(SampleCache& cache, std::size_t lights) {
 }
 
 bool recompute_light_factors(SampleCache& cache, const RenderContext& ctx) {
-  size_planes(cache, ctx.plan.lights.size());
+  size_planes(cache, ctx.plan.slots());
   const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
   const bool planes_done = for_each_packet(cache, ctx, [&](SamplePacket& packet) {
     long long rays = 0;
@@ -121,6 +121,21 @@ bool recompute_light_factors(SampleCache& cache, const RenderContext& ctx) {
     return rays;
   });
   return planes_done && recompute_refined_light_factors(cache, ctx);
+}
+
+bool visit_cached_samples(SampleCache& cache, const RenderContext& ctx,
+                          const std::function<long long(SamplePacket&, SamplePlane&)>& visit) {
+  const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
+  return for_each_packet(cache, ctx, [&](SamplePacket& packet) {
+    long long rays = 0;
+    for (int s = 0; s < cache.samples(); ++s) {
+      SamplePlane& plane = cache.planes[static_cast<std::size_t>(s)];
+      packet_directions(packet, cache, pattern, sample_stratum(pattern, s));
+      load_hits(packet, cache.width, plane);
+      rays += visit(packet, plane);
+    }
+    return rays;
+  });
 }
 
 }  // namespace gloss

@@ -5,6 +5,7 @@
 // its own array (structure of arrays): packets store and re-shading loops read them as vectors.
 // Bytes per sample: 20 for the hit + 16 per planned light.
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "base/uninitialized_buffer.h"
@@ -101,5 +102,13 @@ void size_planes(SampleCache& cache, std::size_t lights);
 // Recomputes the light factors (shadow rays included) of every plane and of the refined
 // samples for the context's scene and plan, reusing the primary hits. false when cancelled (the factors are then stale).
 bool recompute_light_factors(SampleCache& cache, const RenderContext& ctx);
+
+struct SamplePacket;
+
+// Runs visit(packet, plane) -> rays over every plane's packets (band by band on oneTBB
+// workers), each with the plane's directions and cached hits loaded. Adds the rays to ctx.rays;
+// false when cancelled.
+bool visit_cached_samples(SampleCache& cache, const RenderContext& ctx,
+                          const std::function<long long(SamplePacket&, SamplePlane&)>& visit);
 
 }  // namespace gloss

@@ -91,6 +91,13 @@ void packet_surfaces(const SamplePacket& packet, const SampleCache& cache, const
 long long packet_light(const SamplePacket& packet, const SurfaceLanes& surfaces,
                        const RenderContext& ctx, std::size_t li, LightLanes& out);
 
+// The environment's fast-path factors of the lanes, one LightLanes per colour channel: the
+// diffuse weight the irradiance / pi at n, the specular weight the lobe's mean around r, both at
+// intensity 1, and cosines of 1 so that the factor pipeline's c^alpha leaves them as they are
+// (engine/environment/environment_lanes.cpp).
+void environment_lanes(const SamplePacket& packet, const SurfaceLanes& surfaces,
+                       const RenderContext& ctx, LightLanes (&out)[3]);
+
 void store_light(const SamplePacket& packet, int width, const LightLanes& lanes,
                  LightFactorPlane& plane);
 
@@ -130,7 +137,7 @@ long long shade_sample(const SamplePacket& packet, const SampleCache& cache,
                        const RenderContext& ctx, SamplePlane& plane, OnLight&& on_light) {
   if (!any_hit(packet)) {  // all background (image borders): every light's factors are zero
     LightLanes none{};
-    for (std::size_t li = 0; li < ctx.plan.lights.size(); ++li) {
+    for (std::size_t li = 0; li < ctx.plan.slots(); ++li) {
       store_light(packet, cache.width, none, plane.lights[li]);
       on_light(li, none);
     }
@@ -144,6 +151,15 @@ long long shade_sample(const SamplePacket& packet, const SampleCache& cache,
     rays += packet_light(packet, surfaces, ctx, li, lanes);
     store_light(packet, cache.width, lanes, plane.lights[li]);
     on_light(li, lanes);
+  }
+  if (ctx.plan.environment) {  // the fast path's three slots (environment_lanes.h)
+    LightLanes channels[3];
+    environment_lanes(packet, surfaces, ctx, channels);
+    for (int c = 0; c < 3; ++c) {
+      const std::size_t slot = ctx.plan.environment_slot(c);
+      store_light(packet, cache.width, channels[c], plane.lights[slot]);
+      on_light(slot, channels[c]);
+    }
   }
   return rays;
 }

@@ -29,7 +29,7 @@ template <class Sample>
 bool fused_factors_pass(const SampleCache& cache, const RenderContext& ctx, PixelFactors& factors,
                         Image* total, Sample&& sample) {
   const Scene& scene = *ctx.scene;
-  const std::size_t lights = ctx.plan.lights.size();
+  const std::size_t lights = ctx.plan.slots();
   const std::size_t pixels = cache.pixel_count();
   size_pixel_factors(factors, cache.width, cache.height, 1, lights);
   const MaterialExponents exponents = material_exponents(scene);
@@ -76,7 +76,7 @@ bool fused_factors_pass(const SampleCache& cache, const RenderContext& ctx, Pixe
 bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFactors& factors,
                          Image* total) {
   drop_planes(cache, 0);  // the first sample of a fresh image (callers reset the cache)
-  append_planes(cache, ctx.plan.lights.size(), 1);
+  append_planes(cache, ctx.plan.slots(), 1);
   const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
   const int stratum = sample_stratum(pattern, 0);
   const bool done =
@@ -89,7 +89,7 @@ bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFact
 
 bool relight_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFactors& factors,
                            Image* total) {
-  size_planes(cache, ctx.plan.lights.size());
+  size_planes(cache, ctx.plan.slots());
   const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
   const int stratum = sample_stratum(pattern, 0);
   return fused_factors_pass(cache, ctx, factors, total, [&](SamplePacket& packet, auto& on_light) {

@@ -218,6 +218,20 @@ const FieldTable<RenderSettings>& render_fields() {
                     .ui(0.001, 0.25, true)
                     .explain("adaptive: refine where neighbouring centre pixels differ by more, "
                              "per channel of the clamped total"));
+    t.push_back(scalar_field<&RenderSettings::env_resolution>(whole, "env_resolution",
+                                                              "environment map resolution")
+                    .range(1, 8)
+                    .ui(1, 8)
+                    .invalidates(ChangeClass::environment)
+                    .explain("the fast path's prefiltered maps: texels per lobe width"));
+    t.push_back(scalar_field<&RenderSettings::env_samples>(whole, "env_samples",
+                                                           "environment directions")
+                    .range(0, kMaxEnvSamples)
+                    .ui(0, 4096, true)
+                    .invalidates(ChangeClass::environment)
+                    .explain("directions per sample that converge on the environment's exact "
+                             "terms (visibility included with shadows on); 0: the fast path "
+                             "alone"));
     t.push_back(choice_field<&RenderSettings::map_filter>("map_filter", "map filter",
                                                           {"trilinear", "bilinear", "nearest"})
                     .invalidates(ChangeClass::texture)

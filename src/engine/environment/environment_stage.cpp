@@ -1,0 +1,99 @@
+#include "engine/environment/environment_stage.h"
+
+#include <vector>
+
+#include "engine/parallel_loops.h"
+#include "engine/trace/refined_samples.h"
+#include "engine/trace/sample_packet.h"
+#include "shading/environment.h"
+
+namespace gloss {
+
+namespace {
+
+// The environment's slots of one packet's lanes, stored in plane (width: the plane's row).
+void store_environment(const SamplePacket& packet, const SampleCache& cache,
+                       const RenderContext& ctx, int width, SamplePlane& plane) {
+  LightLanes channels[3];
+  if (!any_hit(packet)) {
+    for (LightLanes& c : channels) c = LightLanes{};
+  } else {
+    SurfaceLanes surfaces;
+    packet_surfaces(packet, cache, ctx, surfaces);
+    environment_lanes(packet, surfaces, ctx, channels);
+  }
+  for (int c = 0; c < 3; ++c) {
+    store_light(packet, width, channels[c], plane.lights[ctx.plan.environment_slot(c)]);
+  }
+}
+
+// The map's radiance (intensity 1) towards each missed lane, 0 where the lane hit.
+void sky_lanes(const SamplePacket& packet, const Environment& environment,
+               const EnvironmentRotation<float>& rotation, glm::vec3 (&out)[kLanes]) {
+  for (int i = 0; i < kLanes; ++i) {
+    out[i] = glm::vec3(0.0f);
+    if (packet.valid[i] == 0 || packet.object[i] >= 0) continue;
+    const glm::vec3 d(static_cast<float>(packet.dir_x[i]), static_cast<float>(packet.dir_y[i]),
+                      static_cast<float>(packet.dir_z[i]));
+    const glm::vec2 uv = map_uv(to_map_frame(d, rotation));
+    out[i] = map_bilinear<float>(environment.map->radiance, uv.x, uv.y);
+  }
+}
+
+}  // namespace
+
+bool recompute_environment_factors(SampleCache& cache, const RenderContext& ctx) {
+  if (!ctx.plan.environment) return true;
+  const bool planes = visit_cached_samples(cache, ctx, [&](SamplePacket& packet, SamplePlane& plane) {
+    store_environment(packet, cache, ctx, cache.width, plane);
+    return 0LL;
+  });
+  if (!planes) return false;
+  const int width = static_cast<int>(cache.refined.entries());
+  return visit_refined_samples(cache, ctx, [&](SamplePacket& packet) {
+    store_environment(packet, cache, ctx, width, cache.refined.plane);
+    return 0LL;
+  });
+}
+
+bool environment_sky(const SampleCache& cache, const RenderContext& ctx, PixelFactors& factors) {
+  const Scene& scene = *ctx.scene;
+  if (!ctx.plan.sky) {
+    factors.sky.clear();
+    return true;
+  }
+  const EnvironmentRotation<float> rotation =
+      environment_rotation<float>(scene.environment.rotation);
+  factors.sky.assign(cache.pixel_count(), glm::vec3(0.0f));
+  const float share = 1.0f / static_cast<float>(std::max(1, cache.samples()));
+  SampleCache& planes = const_cast<SampleCache&>(cache);  // visited read-only
+  const bool done = visit_cached_samples(planes, ctx, [&](SamplePacket& packet, SamplePlane&) {
+    glm::vec3 sky[kLanes];
+    sky_lanes(packet, scene.environment, rotation, sky);
+    glm::vec3* row = &factors.sky[static_cast<std::size_t>(packet.y0) * cache.width + packet.x0];
+    for (int i = 0; i < packet.x1 - packet.x0; ++i) row[i] += sky[i] * share;
+    return 0LL;
+  });
+  if (!done || cache.refined.spp == 0) return done;
+  // Adaptive sampling's refined pixels: the mean over their own samples instead of the centre.
+  const RefinedSamples& refined = cache.refined;
+  std::vector<glm::vec3> entries(refined.entries());
+  const bool traced = visit_refined_samples(cache, ctx, [&](SamplePacket& packet) {
+    glm::vec3 sky[kLanes];
+    sky_lanes(packet, scene.environment, rotation, sky);
+    for (int i = 0; i < packet.x1 - packet.x0; ++i) {
+      entries[static_cast<std::size_t>(packet.x0 + i)] = sky[i];
+    }
+    return 0LL;
+  });
+  if (!traced) return false;
+  const float inv = 1.0f / static_cast<float>(refined.spp);
+  for (std::size_t k = 0; k < refined.pixels.size(); ++k) {
+    glm::vec3 sum(0.0f);
+    for (int s = 0; s < refined.spp; ++s) sum += entries[k * refined.spp + s];
+    factors.sky[refined.pixels[k]] = sum * inv;
+  }
+  return true;
+}
+
+}  // namespace gloss
