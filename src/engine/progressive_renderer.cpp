@@ -17,6 +17,7 @@
 #include "engine/trace/refined_samples.h"
 #include "engine/trace/sample_cache.h"
 #include "engine/trace/single_sample_pass.h"
+#include "engine/trace/texture_lanes.h"
 #include "scene/fields/scene_diff.h"
 
 namespace gloss {
@@ -209,6 +210,10 @@ bool ProgressiveRenderer::Impl::step() {
   } else if (dirty == ChangeClass::environment) {
     redo = ChangeClass::environment;  // its factors from the cached hits, no rays
     ok = recompute_environment_factors(cache, ctx);
+  } else if (dirty == ChangeClass::texture) {
+    redo = ChangeClass::texture;  // the maps at the cached hits, no rays
+    ok = resample_textures(cache, ctx) &&
+         (!ctx.plan.environment || recompute_environment_factors(cache, ctx));
   } else if (dirty == ChangeClass::light) {
     redo = ChangeClass::light;
     if (cache.samples() == 1 && cache.refined.spp == 0) {  // one pass: light and pixel factors

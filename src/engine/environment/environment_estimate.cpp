@@ -11,6 +11,7 @@
 #include "engine/trace/refined_samples.h"
 #include "engine/trace/sample_packet.h"
 #include "engine/trace/self_shadow.h"
+#include "engine/trace/texture_lanes.h"
 #include "shading/sampling.h"
 
 namespace gloss {
@@ -21,7 +22,8 @@ using Floats = float[EnvironmentEstimates::kFloats];
 
 // Six uniform numbers for (sample key, step), decorrelated by mixing.
 void uniforms(std::uint32_t key, int step, double (&u)[6]) {
-  std::uint32_t h = mix_bits(key ^ mix_bits(static_cast<std::uint32_t>(step) * 0x9e3779b9U + 0x85ebca6bU));
+  std::uint32_t h =
+      mix_bits(key ^ mix_bits(static_cast<std::uint32_t>(step) * 0x9e3779b9U + 0x85ebca6bU));
   for (double& x : u) {
     h = mix_bits(h + 0x632be5abU);
     x = (static_cast<double>(h >> 8) + 0.5) * (1.0 / 16777216.0);
@@ -42,7 +44,10 @@ void packet_steps(const SamplePacket& packet, const SampleCache& cache, const Re
   }
   if (any_hit(packet)) {
     SurfaceLanes surfaces;
-    packet_surfaces(packet, cache, ctx, surfaces);
+    mapped_surfaces(packet, cache, ctx, plane, surfaces);  // normal maps included
+    TexelLanes maps;
+    load_texels(packet, width, plane, maps);
+    const int alpha_map = ctx.plan.textures.alpha_channel();
     EnvironmentHit hits[kLanes];
     bool active[kLanes];
     glm::vec3 origin[kLanes];
@@ -50,14 +55,14 @@ void packet_steps(const SamplePacket& packet, const SampleCache& cache, const Re
     for (int i = 0; i < kLanes; ++i) {
       active[i] = surfaces.hit[i] != 0 && packet.valid[i] != 0 && packet.object[i] >= 0;
       if (!active[i]) continue;
-      const auto m = static_cast<std::size_t>(
-          env.object_material[static_cast<std::size_t>(packet.object[i])]);
+      const auto m =
+          static_cast<std::size_t>(env.object_material[static_cast<std::size_t>(packet.object[i])]);
       const Surface s = surfaces.get(i);
       EnvironmentHit& h = hits[i];
       h.n = glm::normalize(glm::dvec3(s.n));
       h.v = glm::normalize(glm::dvec3(s.v));
       h.r = 2.0 * glm::dot(h.n, h.v) * h.n - h.v;
-      h.alpha = scene.materials[m].shininess;
+      h.alpha = scene.materials[m].shininess * (alpha_map >= 0 ? maps.channel[alpha_map][i] : 1.0f);
       h.model = scene.render.model;
       h.diffuse = env.diffuse[m] != 0;
       h.specular = env.specular[m] != 0;
@@ -151,15 +156,16 @@ bool add_environment_steps(SampleCache& cache, const RenderContext& ctx,
   }
   const int first = estimates.steps;
   const std::uint32_t seed = mix_bits(ctx.scene->render.seed ^ 0x5bd1e995U);
-  const bool planes = visit_cached_samples(cache, ctx, [&](SamplePacket& packet, SamplePlane& plane) {
-    const auto s = static_cast<std::size_t>(&plane - cache.planes.data());
-    float* sums = estimates.planes[s].data() +
-                  (static_cast<std::size_t>(packet.y0) * cache.width + packet.x0) *
-                      EnvironmentEstimates::kFloats;
-    packet_steps(packet, cache, ctx, mix_bits(seed + static_cast<std::uint32_t>(s)), first, steps,
-                 sums, cache.width, plane);
-    return 0LL;
-  });
+  const bool planes =
+      visit_cached_samples(cache, ctx, [&](SamplePacket& packet, SamplePlane& plane) {
+        const auto s = static_cast<std::size_t>(&plane - cache.planes.data());
+        float* sums = estimates.planes[s].data() +
+                      (static_cast<std::size_t>(packet.y0) * cache.width + packet.x0) *
+                          EnvironmentEstimates::kFloats;
+        packet_steps(packet, cache, ctx, mix_bits(seed + static_cast<std::uint32_t>(s)), first,
+                     steps, sums, cache.width, plane);
+        return 0LL;
+      });
   if (!planes) return false;
   const int width = static_cast<int>(cache.refined.entries());
   const bool refined = visit_refined_samples(cache, ctx, [&](SamplePacket& packet) {

@@ -20,7 +20,8 @@ SamplePacket entry_packet(std::size_t e0, std::size_t e1) {
 }
 
 // Directions of the packet's entries: sample (entry mod spp) of pixel pixels[entry / spp].
-void entry_directions(SamplePacket& packet, const SampleCache& cache, const SamplePattern& pattern) {
+void entry_directions(SamplePacket& packet, const SampleCache& cache,
+                      const SamplePattern& pattern) {
   const RefinedSamples& refined = cache.refined;
   // Lane pixels and strata by increments (no division per lane; stride < count); masked-off
   // lanes repeat the last entry, a finite direction nobody reads.
@@ -86,7 +87,7 @@ bool trace_refined_samples(SampleCache& cache, const RenderContext& ctx,
   RefinedSamples& refined = cache.refined;
   refined.spp = spp;
   refined.pixels = std::move(pixels);
-  size_plane(refined.plane, refined.entries(), ctx.plan.slots());
+  size_plane(refined.plane, refined.entries(), ctx.plan.plane_shape());
   const SamplePattern pattern = make_sample_pattern(cache.seed, spp);
   const int width = static_cast<int>(refined.entries());
   const bool done = for_each_entry_packet(cache, ctx, [&](SamplePacket& packet) {
@@ -105,7 +106,7 @@ bool trace_refined_samples(SampleCache& cache, const RenderContext& ctx,
 bool recompute_refined_light_factors(SampleCache& cache, const RenderContext& ctx) {
   RefinedSamples& refined = cache.refined;
   if (refined.spp == 0) return true;
-  size_plane(refined.plane, refined.entries(), ctx.plan.slots());
+  size_plane(refined.plane, refined.entries(), ctx.plan.plane_shape());
   const SamplePattern pattern = make_sample_pattern(cache.seed, refined.spp);
   const int width = static_cast<int>(refined.entries());
   return for_each_entry_packet(cache, ctx, [&](SamplePacket& packet) {
