@@ -14,11 +14,13 @@
 
 namespace gloss {
 
+// The latitude as atan2(d.y, |d.xz|), which equals asin(d.y) for a unit d: GLSL's asin (Mesa's)
+// is too coarse for a map's sharp edges, its atan is not (shaders/texture_lookup.glsl).
 template <class T>
 glm::vec<2, T> sphere_uv(const glm::vec<3, T>& d) {
   constexpr T kPi = T(3.14159265358979323846);
-  const T y = d.y > T(1) ? T(1) : (d.y < T(-1) ? T(-1) : d.y);
-  return {T(0.5) + std::atan2(d.x, d.z) / (T(2) * kPi), T(0.5) + std::asin(y) / kPi};
+  const T across = std::sqrt(d.x * d.x + d.z * d.z);
+  return {T(0.5) + std::atan2(d.x, d.z) / (T(2) * kPi), T(0.5) + std::atan2(d.y, across) / kPi};
 }
 
 template <class T>

@@ -25,7 +25,8 @@ const char* pass_name(RasterPass pass) {
 
 std::string describe(const RasterVariant& v) {
   return std::string(v.shape == RasterShape::mesh ? "mesh" : "sphere") + " " + pass_name(v.pass) +
-         " pass, " + std::to_string(v.light_count) + " lights" + (v.shadows ? ", shadow maps" : "");
+         " pass, " + std::to_string(v.light_count) + " lights" +
+         (v.shadows ? ", shadow maps" : "") + (v.maps ? ", maps" : "");
 }
 
 }  // namespace
@@ -36,9 +37,11 @@ std::string RasterPrograms::source(const RasterVariant& v, GLenum stage) {
   text += std::string("#define GLOSS_SHADOWS ") + (v.shadows ? "1" : "0") + "\n";
   text +=
       std::string("#define GLOSS_PER_VERTEX ") + (v.pass == RasterPass::vertex ? "1" : "0") + "\n";
+  text += std::string("#define GLOSS_MAPS ") + (v.maps ? "1" : "0") + "\n";
   if (v.pass == RasterPass::shadow) text += "#define GLOSS_SHADOW_PASS 1\n";
   text += kRasterCommonGlsl;
   text += kPhongContractGlsl;
+  if (v.maps) text += kTextureLookupGlsl;
   const bool mesh = v.shape == RasterShape::mesh;
   if (stage == GL_VERTEX_SHADER) {
     text += mesh ? kRasterMeshVertexShader : kRasterSphereVertexShader;
@@ -90,6 +93,10 @@ void set_uniform_vec4s(GLuint program, const char* name, const float* xyzw, int 
 
 void set_uniform_ivec2s(GLuint program, const char* name, const int* xy, int count) {
   glUniform2iv(glGetUniformLocation(program, name), count, xy);
+}
+
+void set_uniform_ints(GLuint program, const char* name, const int* x, int count) {
+  glUniform1iv(glGetUniformLocation(program, name), count, x);
 }
 
 }  // namespace gloss

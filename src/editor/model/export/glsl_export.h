@@ -21,7 +21,9 @@ std::string export_glsl(const Scene& scene, int material);
 // RuntimeFailure when the file cannot be written.
 void write_glsl_export(const std::string& path, const Scene& scene, int material);
 
-// The contract source, shaders/phong_contract.glsl, embedded at build time.
+// The contract source, shaders/phong_contract.glsl, and its maps, shaders/texture_lookup.glsl,
+// embedded at build time.
 extern const char* const kPhongContractGlsl;
+extern const char* const kTextureLookupGlsl;
 
 }  // namespace gloss
