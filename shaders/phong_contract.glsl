@@ -25,6 +25,8 @@
 //                                      the cosines as 1 - cos so that a cone of 0.01 degrees
 //                                      (cos = 1 - 1.5e-8, 1 in float) keeps its size
 //   float gloss_visibility(int light, vec3 p, vec3 n_g)   vis: 1 lit, 0 shadowed
+//   GLOSS_ENVIRONMENT                  a #define, 1 with an environment light (environment.glsl
+//                                      included before this file and its inputs defined)
 
 #define GLOSS_PHONG 0
 #define GLOSS_BLINN_PHONG 1
@@ -179,6 +181,14 @@ GlossTerms gloss_shade_at(vec3 p, vec3 n_g, vec3 n, vec3 v, vec3 ka, vec3 kd, ve
     t.specular += ks * gloss_light_specular[i] * (f.spec_weight *
                                                   gloss_specular_power(c, alpha) * norm);
   }
+#endif
+#if GLOSS_ENVIRONMENT
+  // The environment's fast path (environment.glsl): kd E(n) / pi and ks times the lobe's mean
+  // about the mirror direction, at the intensity (no energy normalisation: the lobe is normalised).
+  vec3 mirror = normalize(2.0 * dot(n, v) * n - v);
+  float env_alpha = gloss_model == GLOSS_PHONG ? alpha : 0.25 * alpha;
+  t.diffuse += kd * (gloss_env_diffuse(n) * gloss_env_intensity);
+  t.specular += ks * (gloss_env_specular(env_alpha, mirror) * gloss_env_intensity);
 #endif
   t.ambient = ka * ambient_light;  // ambient = ka * (A_scene + sum_i La_i)
   // total = emissive + ambient + sum_i (diffuse_i + specular_i), in total.h's fixed order

@@ -18,6 +18,14 @@ uniform vec3 gloss_light_attenuation[GLOSS_LIGHT_COUNT];
 uniform vec3 gloss_light_direction[GLOSS_LIGHT_COUNT];
 uniform vec4 gloss_light_cone[GLOSS_LIGHT_COUNT];
 #endif
+#if GLOSS_ENVIRONMENT
+// environment.glsl's inputs: the levels' atlas (texture unit 1), their places in it (12 levels
+// and the map itself), the rotation's (cos, sin) and the intensity.
+uniform sampler2D gloss_env_atlas;
+uniform ivec4 gloss_env_level[13];
+uniform vec2 gloss_env_rotation;
+uniform float gloss_env_intensity;
+#endif
 
 #if GLOSS_MAPS
 // The object's maps (texture_lookup.glsl says what each is); the raster path binds an empty

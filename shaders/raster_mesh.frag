@@ -91,6 +91,9 @@ flat in vec3 gloss_face_normal;
 #if GLOSS_LIGHT_COUNT > 0
 in vec2 gloss_light_weights[GLOSS_LIGHT_COUNT];
 #endif
+#if GLOSS_ENVIRONMENT
+in vec3 gloss_env_diffuse_weight, gloss_env_specular_weight;
+#endif
 void main() {
   gloss_cut_out();
   // The terms of phong_contract.glsl's gloss_shade with the interpolated weights in place of the
@@ -124,6 +127,10 @@ void main() {
     diffuse += kd * gloss_light_diffuse[i] * (w.x * vis);
     specular += ks * gloss_light_specular[i] * (w.y * vis * norm);
   }
+#endif
+#if GLOSS_ENVIRONMENT
+  diffuse += kd * gloss_env_diffuse_weight;
+  specular += ks * gloss_env_specular_weight;
 #endif
   vec3 ambient = ka * ambient_light;
   gloss_out_total = vec4(((ke + ambient) + diffuse) + specular, 1.0);

@@ -70,6 +70,9 @@ flat out vec3 gloss_face_normal;
 #if GLOSS_LIGHT_COUNT > 0
 out vec2 gloss_light_weights[GLOSS_LIGHT_COUNT];  // (diffuse, specular) of each light
 #endif
+#if GLOSS_ENVIRONMENT
+out vec3 gloss_env_diffuse_weight, gloss_env_specular_weight;  // at the corner, before kd, ks
+#endif
 void main() {
   vec3 p = gloss_in_position;
   vec3 n_g = gloss_in_face_normal;
@@ -83,6 +86,13 @@ void main() {
     gloss_light_weights[i] =
         vec2(f.diffuse_weight, f.spec_weight * gloss_specular_power(c, gloss_alpha));
   }
+#endif
+#if GLOSS_ENVIRONMENT
+  // The environment's fast path at the corner, as gloss_shade takes it per pixel.
+  gloss_env_diffuse_weight = gloss_env_diffuse(n) * gloss_env_intensity;
+  float env_alpha = gloss_model == GLOSS_PHONG ? gloss_alpha : 0.25 * gloss_alpha;
+  gloss_env_specular_weight =
+      gloss_env_specular(env_alpha, normalize(2.0 * dot(n, v) * n - v)) * gloss_env_intensity;
 #endif
   gloss_position = p;
   gloss_face_normal = gloss_in_face_normal;

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/geometric.hpp>
+
+#include "physical/reference_brdf.h"
 #include "shading/shading.h"
 
 namespace gloss {
@@ -38,6 +41,11 @@ LobeSample lobe_sample(const Material& material, const LobeParams& params, doubl
                               : 1.0;
   s.phong = ks * (f.spec_weight * specular_power(f.cos_phong, params.phong_alpha) * phong_norm);
   s.blinn = ks * (f.spec_weight * specular_power(f.cos_blinn, params.blinn_alpha) * blinn_norm);
+  if (material.reference && f.diffuse_weight > 0.0) {
+    const glm::dvec3 l = glm::normalize(light);
+    s.reference = evaluate_brdf(make_reference_brdf(*material.reference), n, l, v).total() *
+                  (kPi * f.diffuse_weight);
+  }
   return s;
 }
 
@@ -45,6 +53,7 @@ BrdfLobe sample_brdf_lobe(const Material& material, const LobeParams& params) {
   BrdfLobe lobe;
   lobe.params = params;
   lobe.params.samples = std::max(params.samples, 2);
+  lobe.has_reference = material.reference.has_value();
   if (params.energy_normalize) {
     lobe.phong_norm = energy_normalization(ShadingModel::phong, params.phong_alpha);
     lobe.blinn_norm = energy_normalization(ShadingModel::blinn_phong, params.blinn_alpha);

@@ -3,7 +3,8 @@
 // the radiance a surface point reflects towards each outgoing angle under one point light of
 // unit colours (La = 0, Ld = Ls = 1, attenuation 1, visible), evaluated in double with the
 // contract's own functions (shading/shading.h: light_factors, specular_power,
-// energy_normalization), so the curves are what the renderer computes for those directions.
+// energy_normalization), so the curves are what the renderer computes for those directions; and,
+// for a material with a physical reference, what the reference path renders there.
 //
 // Frame: the surface normal is +y, the plane of incidence is x-y. The light comes from the
 // left (-x) at elevation e above the surface, l = (-cos e, sin e, 0). An outgoing angle theta is
@@ -34,10 +35,14 @@ struct LobeSample {
   glm::dvec3 blinn{0.0};    // ks * c^alpha (* normalisation), c = N . H
   double cos_phong = 0.0;   // R . V, 0 where the light adds nothing
   double cos_blinn = 0.0;   // N . H, 0 where the light adds nothing
+  // The material's physical reference under the same light, pi f(l, v) ndl
+  // (docs/spec/physical-reference.md; physical/reference_brdf.h); 0 without one.
+  glm::dvec3 reference{0.0};
 };
 
 struct BrdfLobe {
   LobeParams params;
+  bool has_reference = false;  // the material has a physical reference (samples' `reference`)
   double phong_norm = 1.0, blinn_norm = 1.0;  // the energy factors applied (1 when off)
   std::vector<LobeSample> samples;            // params.samples of them, theta ascending
 };

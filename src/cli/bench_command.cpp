@@ -35,9 +35,17 @@ double plain_render_peak_rss_mb(const std::string& scene, const BenchOptions& op
   char dir_template[] = "/tmp/gloss-bench-XXXXXX";
   if (::mkdtemp(dir_template) == nullptr) return 0;
   const std::string out = std::string(dir_template) + "/render.png";
-  std::vector<std::string> words = {"gloss-cli", "render", scene, "-o", out,
-                                    "--width", std::to_string(options.width), "--height",
-                                    std::to_string(options.height), "--spp", "1"};
+  std::vector<std::string> words = {"gloss-cli",
+                                    "render",
+                                    scene,
+                                    "-o",
+                                    out,
+                                    "--width",
+                                    std::to_string(options.width),
+                                    "--height",
+                                    std::to_string(options.height),
+                                    "--spp",
+                                    "1"};
   std::vector<char*> argv;
   for (std::string& w : words) argv.push_back(w.data());
   argv.push_back(nullptr);

@@ -10,5 +10,6 @@ void add_render_command(CLI::App& app);    // render_command.cpp
 void add_presets_command(CLI::App& app);   // presets_command.cpp
 void add_bench_command(CLI::App& app);     // bench_command.cpp
 void add_tradeoff_command(CLI::App& app);  // tradeoff_command.cpp
+void add_fit_command(CLI::App& app);       // fit_command.cpp
 
 }  // namespace gloss

@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
   gloss::add_presets_command(app);
   gloss::add_bench_command(app);
   gloss::add_tradeoff_command(app);
+  gloss::add_fit_command(app);
 
   // Run: the chosen subcommand's callback runs inside parse.
   try {

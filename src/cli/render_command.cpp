@@ -2,6 +2,7 @@
 // [--height N]
 //                  [--spp N] [--model phong|blinn-phong] [--shadows on|off] [--srgb]
 //                  [--sampling adaptive|uniform] [--aa-threshold T] [--precision float|double]
+//                  [--physical]
 // Options override the scene's render block; the result is validated again before rendering.
 #include <chrono>
 #include <cstdio>
@@ -40,6 +41,8 @@ struct RenderArgs {
   double aa_threshold = 0;
   std::string precision = "float";  // float: the fast renderer; double: the reference path
   bool srgb = false;
+  bool physical = false;  // materials with a `reference` shaded by it (double path)
+  CLI::Option* precision_option = nullptr;
   CLI::Option *png_option = nullptr, *pfm_option = nullptr, *terms_option = nullptr;
   CLI::Option *width_option = nullptr, *height_option = nullptr, *spp_option = nullptr;
   CLI::Option *model_option = nullptr, *shadows_option = nullptr;
@@ -79,8 +82,8 @@ void apply_overrides(const RenderArgs& args, Scene& scene) {
     render.shadows = args.shadows == "on";
   }
   if (*args.sampling_option && !parse_sampling(args.sampling, render.sampling)) {
-    throw InputError(args.scene, "expected 'adaptive' or 'uniform', got '" + args.sampling + "'",
-                     0, 0, "--sampling");
+    throw InputError(args.scene, "expected 'adaptive' or 'uniform', got '" + args.sampling + "'", 0,
+                     0, "--sampling");
   }
   if (*args.aa_threshold_option) {
     if (!(args.aa_threshold >= 0.0 && args.aa_threshold <= 1.0)) {
@@ -91,6 +94,10 @@ void apply_overrides(const RenderArgs& args, Scene& scene) {
   if (args.srgb) render.srgb = true;
   if (args.precision != "float" && args.precision != "double") {
     throw InputError(args.scene, "expected 'float' or 'double', got '" + args.precision + "'", 0, 0,
+                     "--precision");
+  }
+  if (args.physical && *args.precision_option && args.precision != "double") {
+    throw InputError(args.scene, "--physical renders on the double-precision path", 0, 0,
                      "--precision");
   }
   validate_scene(scene);
@@ -159,6 +166,7 @@ void run_render(RenderArgs args) {
   std::vector<std::string> warnings;
   Scene scene = load_scene(args.scene, &warnings);
   apply_overrides(args, scene);
+  if (args.physical) args.precision = "double";
 
   if (!*args.png_option && !*args.pfm_option && !*args.terms_option) {
     // In the current folder; a PNG given as the scene is not overwritten by its own re-render.
@@ -184,6 +192,7 @@ void run_render(RenderArgs args) {
     // Adaptive sampling: the fast renderer's placement, then every sample in double.
     std::vector<std::uint8_t> mask;
     ReferenceOptions reference;
+    reference.physical = args.physical;
     if (adaptive) {
       options.terms = false;
       options.refined = &refined;
@@ -200,7 +209,8 @@ void run_render(RenderArgs args) {
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
-  OutputWriter writer(scene, args.precision);
+  const std::string precision = args.physical ? "double, physical reference" : args.precision;
+  OutputWriter writer(scene, precision);
   if (!args.png.empty()) writer.png(args.png, images.total);
   if (!args.pfm.empty()) writer.pfm(args.pfm, images.total);
   if (!args.terms_dir.empty()) {
@@ -213,7 +223,7 @@ void run_render(RenderArgs args) {
 
   char time_text[64];
   std::snprintf(time_text, sizeof time_text, "%.1f ms", ms);
-  std::cout << "rendered " << args.scene << " (" << settings_summary(scene.render, args.precision)
+  std::cout << "rendered " << args.scene << " (" << settings_summary(scene.render, precision)
             << ") in " << time_text;
   if (adaptive) {
     char share[64];
@@ -257,9 +267,12 @@ void add_render_command(CLI::App& app) {
       "--aa-threshold", args->aa_threshold,
       "adaptive: refine where neighbouring centres differ by more (0..1, default 1/64)");
   sub->add_flag("--srgb", args->srgb, "sRGB-encode the PNGs (default: clamp only)");
-  sub->add_option(
+  args->precision_option = sub->add_option(
       "--precision", args->precision,
       "float (default: the fast renderer) or double (the reference path, docs/accuracy.md)");
+  sub->add_flag("--physical", args->physical,
+                "Shade materials that have a physical `reference` by it (GGX, "
+                "docs/spec/physical-reference.md) on the double path; others stay Phong");
   sub->callback([args] { run_render(*args); });
 }
 

@@ -13,6 +13,7 @@
 #include "engine/parallel_loops.h"
 #include "engine/trace/embree_scene.h"
 #include "engine/trace/self_shadow.h"
+#include "physical/reference_brdf.h"
 #include "reference/reference_sample.h"
 #include "scene/camera.h"
 #include "scene/fields/validation.h"
@@ -62,6 +63,13 @@ TermImages render_reference(const Scene& scene, const ReferenceOptions& options)
   job.gouraud = options.gouraud;
   const ReferenceEnvironment environment(scene, options.environment);
   job.environment = &environment;
+  if (options.physical) {
+    for (const Material& m : scene.materials) {
+      job.physical.push_back(m.reference
+                                 ? std::optional<ReferenceBrdf>(make_reference_brdf(*m.reference))
+                                 : std::nullopt);
+    }
+  }
 
   const int w = job.width, h = job.height;
   const std::size_t pixels = static_cast<std::size_t>(w) * h;

@@ -40,6 +40,12 @@ struct ReferenceOptions {
   // The environment light's integrals: their error bound with shadows off, directions per hit
   // with shadows on (reference_environment.h).
   ReferenceEnvironmentOptions environment;
+  // Materials that carry a physical reference (Material::reference) are shaded by it instead of
+  // by Phong (docs/spec/physical-reference.md): each light adds pi f(l, v) Ld ndl att vis, in
+  // double whatever T is, the microfacet lobe to the specular image and a dielectric's base to
+  // the diffuse one; Ls, the energy switch and the Gouraud knob do not apply to them. Ambient
+  // and emission stay ka (A_scene + sum La) and ke. Other materials are shaded as always.
+  bool physical = false;
 };
 
 // Renders scene.render's size, model, shadows, energy normalisation and seed, with the fast

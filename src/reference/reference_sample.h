@@ -6,11 +6,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <embree3/rtcore.h>
 
 #include "engine/trace/embree_scene.h"
 #include "engine/trace/self_shadow.h"
+#include "physical/microfacet.h"
+#include "physical/reference_brdf.h"
 #include "reference/pixel_inspection.h"
 #include "reference/reference_environment.h"
 #include "reference/reference_hit.h"
@@ -71,6 +74,8 @@ struct Job {
   Vec3<T> ambient_light{0};             // A_scene + sum_i La_i
   std::vector<LightSource<T>> sources;  // per scene light, resolved in T (light_source.h)
   const ReferenceEnvironment* environment = nullptr;  // the scene's, when it has one
+  // Per material, its physical reference's BRDF when ReferenceOptions::physical asks for it.
+  std::vector<std::optional<ReferenceBrdf>> physical;
 };
 
 // Where a missed sample's total comes from: the environment when it is the background.
@@ -170,6 +175,28 @@ LightFactors<T> light_weights(const Job<T>& job, const Vec3<T>& p, const Vec3<T>
   dw = f.diffuse_weight;
   sw = f.spec_weight * specular_power<T>(model_cosine(f, job.scene->render.model), alpha, job.pow);
   return f;
+}
+
+// A light's physical-reference terms at a hit (ReferenceOptions::physical), unshadowed:
+// pi f(l, v) Ld ndl att spot, split into the dielectric base (diffuse) and the microfacet lobe
+// (specular). ndl att spot comes from the contract's factors (light_source.h), so ndl <= 0, d = 0
+// and a point outside a spot's cone add nothing as for Phong; f is 0 where n.v <= 0 (a shading
+// normal turned away from the eye).
+template <class T>
+void physical_terms(const ReferenceBrdf& brdf, const Vec3<T>& p, const Vec3<T>& n,
+                    const Vec3<T>& v, const LightSource<T>& light, const Light& colours,
+                    glm::dvec3& diffuse, glm::dvec3& specular) {
+  const LightFactors<T> f = source_factors<T>(p, n, v, light, spot_at<T>(p, light), T(1));
+  diffuse = specular = glm::dvec3(0.0);
+  if (!(f.diffuse_weight > T(0))) return;
+  const glm::dvec3 l = light.type == LightType::directional
+                           ? -glm::normalize(glm::dvec3(light.direction))
+                           : glm::normalize(glm::dvec3(light.position) - glm::dvec3(p));
+  const BrdfValue value =
+      evaluate_brdf(brdf, glm::normalize(glm::dvec3(n)), l, glm::normalize(glm::dvec3(v)));
+  const glm::dvec3 scale = glm::dvec3(colours.diffuse) * (kPi * double(f.diffuse_weight));
+  diffuse = value.diffuse * scale;
+  specular = value.specular * scale;
 }
 
 // Gouraud weights at a mesh hit: the corners' unshadowed weights interpolated with the
@@ -307,9 +334,24 @@ void shade_sample(const Job<T>& job, int x, int y, int s, int count, PixelSums<T
     record->alpha = double(alpha);
     record->energy_factor = double(norm);
   }
+  const std::optional<ReferenceBrdf>& physical =
+      job.physical.empty() ? std::optional<ReferenceBrdf>()
+                           : job.physical[static_cast<std::size_t>(object.material)];
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& colours = scene.lights[i];
     const LightSource<T>& light = job.sources[i];
+    if (physical) {
+      if (!faces_light(h, light)) continue;
+      if (scene.render.shadows && occluded(job, key.object, h, light)) {
+        key.shadowed |= std::uint64_t(1) << (i % 64);
+        continue;
+      }
+      glm::dvec3 diffuse, specular;
+      physical_terms(*physical, h.p, h.n, h.v, light, colours, diffuse, specular);
+      sum.diffuse += Vec3<T>(diffuse);
+      sum.specular += Vec3<T>(specular);
+      continue;
+    }
     if (light.type == LightType::spot && !light.smooth_edge && !(spot_at<T>(h.p, light) > T(0))) {
       key.outside_cone |= std::uint64_t(1) << (i % 64);
     }

@@ -1,13 +1,15 @@
 #pragma once
 // A Phong material: the constants of docs/spec/shading.md. Colours are linear RGB, unclamped, >= 0.
 // Its maps (docs/spec/shading.md, "Textures") multiply the constants; a preset sets only the
-// constants, so choosing one or resetting to it keeps the maps.
+// constants (and its physical reference), so choosing one or resetting to it keeps the maps.
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <glm/vec3.hpp>
 
+#include "scene/physical_reference.h"
 #include "scene/texture_map.h"
 
 namespace gloss {
@@ -24,6 +26,10 @@ struct Material {
   // The maps by MapSlot, shared between copies until one is changed (the undo history holds a
   // copy of the document per step); null: no map at all. Read and write through map(slot).
   std::shared_ptr<const std::array<TextureMap, kMapSlots>> map_storage;
+  // The physical reference this material is compared with and fitted to (the `reference` block
+  // of a material; docs/spec/physical-reference.md); none by default. The Phong renderer
+  // ignores it.
+  std::optional<PhysicalReference> reference;
 
   const TextureMap& map(MapSlot slot) const;
   // The slot to change: the maps are copied first when another Material shares them.
@@ -33,11 +39,12 @@ struct Material {
   bool textured() const;
 };
 
-// The constants of `from` (ka, kd, ks, ke, shininess and the preset name) on `onto`, whose maps
-// and map scales stay: what choosing a preset or resetting to it does.
+// The constants of `from` (ka, kd, ks, ke, shininess, the preset name and the physical
+// reference) on `onto`, whose maps and map scales stay: what choosing a preset or resetting to
+// it does.
 Material with_constants(const Material& onto, const Material& from);
 
-// Equal in every field of its table (scene/fields/fields.h) and in preset.
+// Equal in every field of its table (scene/fields/fields.h), in preset and in reference.
 bool operator==(const Material& a, const Material& b);
 inline bool operator!=(const Material& a, const Material& b) {
   return !(a == b);

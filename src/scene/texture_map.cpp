@@ -69,6 +69,7 @@ Material with_constants(const Material& onto, const Material& from) {
   out.emission = from.emission;
   out.shininess = from.shininess;
   out.preset = from.preset;
+  out.reference = from.reference;
   return out;
 }
 

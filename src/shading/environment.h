@@ -42,10 +42,12 @@ glm::tvec3<T> from_map_frame(const glm::tvec3<T>& m, const EnvironmentRotation<T
 }
 
 // (u, t) of a unit map-frame direction: u in [0, 1] left to right, t in [0, 1] top to bottom.
+// At the poles (x = z = 0) phi is taken as 0 (u = 0.5): atan2(0, -0) is pi in C and undefined in
+// GLSL, and every path must read the same texels there (a floor's normal is the pole).
 template <class T>
 glm::tvec2<T> map_uv(const glm::tvec3<T>& m) {
   const T pi = T(3.14159265358979323846);
-  const T phi = std::atan2(m.x, -m.z);
+  const T phi = m.x == T(0) && m.z == T(0) ? T(0) : std::atan2(m.x, -m.z);
   const T theta = std::acos(std::clamp(m.y, T(-1), T(1)));
   return {T(0.5) + phi / (T(2) * pi), theta / pi};
 }

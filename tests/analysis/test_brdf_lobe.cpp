@@ -92,5 +92,24 @@ TEST(BrdfLobe, LuminanceWeights) {
   EXPECT_NEAR(luminance({0, 1, 0}), 0.7152, 1e-12);
 }
 
+// The reference curve is the reference path's pi f(l, v) ndl. Head-on light (e = 90) seen along
+// the normal: h = n, n.l = n.v = v.h = 1, G2 = 1, F = F0, D = 1 / (pi a^2), so
+// pi f ndl = pi F0 / (4 pi a^2) = F0 / (4 a^2); gold at roughness 0.5 (a = 0.25): 4 F0.
+TEST(BrdfLobe, ReferenceCurveHeadOn) {
+  Material m = grey(0.0f, 1.0f, 10.0f);
+  PhysicalReference gold;
+  gold.roughness = 0.5f;
+  m.reference = gold;
+  const BrdfLobe lobe = sample_brdf_lobe(m, params(90, 10, 40, false));
+  EXPECT_TRUE(lobe.has_reference);
+  const LobeSample s = lobe_sample(m, params(90, 10, 40, false), 0.0);
+  EXPECT_NEAR(s.reference.x, 4.0 * 1.0, 1e-9);
+  EXPECT_NEAR(s.reference.y, 4.0 * 0.782, 1e-9);
+  EXPECT_NEAR(s.reference.z, 4.0 * 0.344, 1e-9);
+  // Nothing below the horizon, and no curve without a reference.
+  EXPECT_EQ(lobe_sample(m, params(0, 10, 40, false), 30.0).reference, glm::dvec3(0.0));
+  EXPECT_FALSE(sample_brdf_lobe(grey(0.5f, 0.5f, 10.0f), params(45, 10, 40, false)).has_reference);
+}
+
 }  // namespace
 }  // namespace gloss

@@ -17,43 +17,11 @@
 #include "io/image/image_io.h"
 #include "io/material/preset_table.h"
 #include "io/scene/scene_loader.h"
+#include "support/cli_run.h"
 #include "support/scratch_folder.h"
 
 namespace gloss {
 namespace {
-
-struct CliRun {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string read_all(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
-// Runs "cd cwd && gloss-cli args"; stdout and stderr go to files in logs (never in cwd, whose
-// contents the tests inspect).
-CliRun run_cli(const std::string& args, const ScratchFolder& logs, const std::string& cwd) {
-  const std::string out = logs.file("stdout.txt"), err = logs.file("stderr.txt");
-  const std::string command =
-      "cd '" + cwd + "' && '" + GLOSS_CLI_PATH + "' " + args + " >'" + out + "' 2>'" + err + "'";
-  const int raw = std::system(command.c_str());
-  CliRun run;
-  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  run.out = read_all(out);
-  run.err = read_all(err);
-  return run;
-}
 
 // A small scene that renders in milliseconds.
 const char* const kTinyScene = R"({

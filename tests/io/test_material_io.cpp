@@ -119,6 +119,48 @@ TEST(MaterialIo, MissingExplicitFieldsTakeMaterialDefaults) {
   EXPECT_TRUE(m.preset.empty());
 }
 
+// The physical reference block (docs/scene-format.md): read, written only when present, exact.
+TEST(MaterialIo, ReferenceBlockRoundTrips) {
+  const Material m = material_from_json(
+      json::parse(R"({"preset": "gold", "reference": {"kind": "gold", "roughness": 0.2}})"), "f",
+      "m");
+  ASSERT_TRUE(m.reference.has_value());
+  EXPECT_EQ(m.reference->kind, ReferenceKind::gold);
+  EXPECT_EQ(m.reference->roughness, 0.2f);
+  EXPECT_EQ(m.reference->base, PhysicalReference{}.base);  // the default, unused by a metal
+  EXPECT_EQ(m.preset, "gold");
+  const json written = material_to_json(m);
+  EXPECT_EQ(written["reference"]["kind"], "gold");
+  EXPECT_FALSE(written["reference"].contains("base"));  // a metal's unused default
+  EXPECT_EQ(material_from_json(json::parse(written.dump()), "f", "m"), m);
+
+  Material plastic;
+  PhysicalReference red;
+  red.kind = ReferenceKind::dielectric;
+  red.base = glm::vec3(0.6f, 0.05f, 0.05f);
+  red.roughness = 1.0f / 3.0f;
+  plastic.reference = red;
+  EXPECT_EQ(material_from_json(json::parse(material_to_json(plastic).dump()), "f", "m"), plastic);
+  EXPECT_NE(plastic, Material{});  // the reference is part of a material's identity
+}
+
+TEST(MaterialIo, ReferenceBlockErrorsNameTheField) {
+  EXPECT_EQ(json_error(json::parse(R"({"reference": {"roughness": 0.2}})")).field(),
+            "materials.m.reference.kind");
+  const InputError kind = json_error(json::parse(R"({"reference": {"kind": "gld"}})"));
+  EXPECT_EQ(kind.field(), "materials.m.reference.kind");
+  const InputError zero =
+      json_error(json::parse(R"({"reference": {"kind": "silver", "roughness": 0}})"));
+  EXPECT_EQ(zero.field(), "materials.m.reference.roughness");
+  const InputError base =
+      json_error(json::parse(R"({"reference": {"kind": "dielectric", "base": [1.5, 0, 0]}})"));
+  EXPECT_EQ(base.field(), "materials.m.reference.base[0]");
+  const InputError key =
+      json_error(json::parse(R"({"reference": {"kind": "gold", "rougness": 0.5}})"));
+  EXPECT_EQ(key.message(), "unknown key 'rougness' (did you mean 'roughness'?)");
+  EXPECT_EQ(json_error(json::parse(R"({"reference": "gold"})")).field(), "materials.m.reference");
+}
+
 TEST(MaterialIo, LoadsALibraryFileInFileOrder) {
   const std::vector<NamedMaterial> materials = load_materials_json(data_file("library.json"));
   ASSERT_EQ(materials.size(), 3u);

@@ -16,7 +16,8 @@
 namespace gloss {
 namespace {
 
-const char* const kShippedScenes[] = {"spheres", "cornell", "cornell-teapot", "teapot", "presets"};
+const char* const kShippedScenes[] = {"spheres", "cornell",  "cornell-teapot",
+                                      "teapot",  "presets", "studio-metals"};
 
 std::string shipped_scene(const std::string& name) {
   return std::string(GLOSS_ASSETS_DIR) + "/scenes/" + name + ".json";

@@ -12,18 +12,14 @@
 #include "analysis/image_metrics.h"
 #include "engine/renderer.h"
 #include "io/scene/scene_loader.h"
+#include "support/image_compare.h"
 #include "support/scene_fixtures.h"
 
 namespace gloss {
 namespace {
 
+using test::expect_rgb;
 using test::head_on_sphere_scene;
-
-void expect_rgb(const glm::vec3& got, double r, double g, double b, double tol) {
-  EXPECT_NEAR(got.x, r, tol);
-  EXPECT_NEAR(got.y, g, tol);
-  EXPECT_NEAR(got.z, b, tol);
-}
 
 // Centre pixel of the head-on sphere, by hand: p = n = v = (0,0,1); light (0,3,5): d = 5,
 // l = (0,0.6,0.8), ndl = 0.8, att = 1/(1 + 0.1*5 + 0.01*25) = 1/1.75. Phong: R = (0,-0.6,0.8),

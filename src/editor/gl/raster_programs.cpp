@@ -24,9 +24,12 @@ const char* pass_name(RasterPass pass) {
 }
 
 std::string describe(const RasterVariant& v) {
-  return std::string(v.shape == RasterShape::mesh ? "mesh" : "sphere") + " " + pass_name(v.pass) +
-         " pass, " + std::to_string(v.light_count) + " lights" +
-         (v.shadows ? ", shadow maps" : "") + (v.maps ? ", maps" : "");
+  const char* shape = v.shape == RasterShape::mesh     ? "mesh"
+                      : v.shape == RasterShape::sphere ? "sphere"
+                                                       : "sky";
+  return std::string(shape) + " " + pass_name(v.pass) + " pass, " + std::to_string(v.light_count) +
+         " lights" + (v.shadows ? ", shadow maps" : "") + (v.environment ? ", environment" : "") +
+         (v.maps ? ", maps" : "");
 }
 
 }  // namespace
@@ -37,16 +40,24 @@ std::string RasterPrograms::source(const RasterVariant& v, GLenum stage) {
   text += std::string("#define GLOSS_SHADOWS ") + (v.shadows ? "1" : "0") + "\n";
   text +=
       std::string("#define GLOSS_PER_VERTEX ") + (v.pass == RasterPass::vertex ? "1" : "0") + "\n";
+  text += std::string("#define GLOSS_ENVIRONMENT ") + (v.environment ? "1" : "0") + "\n";
   text += std::string("#define GLOSS_MAPS ") + (v.maps ? "1" : "0") + "\n";
   if (v.pass == RasterPass::shadow) text += "#define GLOSS_SHADOW_PASS 1\n";
   text += kRasterCommonGlsl;
+  text += kEnvironmentGlsl;
   text += kPhongContractGlsl;
   if (v.maps) text += kTextureLookupGlsl;
-  const bool mesh = v.shape == RasterShape::mesh;
-  if (stage == GL_VERTEX_SHADER) {
-    text += mesh ? kRasterMeshVertexShader : kRasterSphereVertexShader;
-  } else {
-    text += mesh ? kRasterMeshFragmentShader : kRasterSphereFragmentShader;
+  const bool vertex = stage == GL_VERTEX_SHADER;
+  switch (v.shape) {
+    case RasterShape::mesh:
+      text += vertex ? kRasterMeshVertexShader : kRasterMeshFragmentShader;
+      break;
+    case RasterShape::sphere:
+      text += vertex ? kRasterSphereVertexShader : kRasterSphereFragmentShader;
+      break;
+    case RasterShape::sky:
+      text += vertex ? kRasterSkyVertexShader : kRasterSkyFragmentShader;
+      break;
   }
   return text;
 }
@@ -89,6 +100,10 @@ void set_uniform_vec2s(GLuint program, const char* name, const float* xy, int co
 
 void set_uniform_vec4s(GLuint program, const char* name, const float* xyzw, int count) {
   glUniform4fv(glGetUniformLocation(program, name), count, xyzw);
+}
+
+void set_uniform_ivec4s(GLuint program, const char* name, const int* xyzw, int count) {
+  glUniform4iv(glGetUniformLocation(program, name), count, xyzw);
 }
 
 void set_uniform_ivec2s(GLuint program, const char* name, const int* xy, int count) {

@@ -12,7 +12,8 @@
 
 namespace gloss {
 
-enum class RasterShape { mesh, sphere };
+// sky: the environment where primary rays miss, one triangle over the image.
+enum class RasterShape { mesh, sphere, sky };
 // shadow: distances to a light for its shadow maps; pixel / vertex: the five term outputs with
 // the contract per pixel or per mesh vertex (spheres are per pixel in both).
 enum class RasterPass { shadow, pixel, vertex };
@@ -20,12 +21,13 @@ enum class RasterPass { shadow, pixel, vertex };
 struct RasterVariant {
   RasterShape shape = RasterShape::mesh;
   RasterPass pass = RasterPass::pixel;
-  int light_count = 0;   // GLOSS_LIGHT_COUNT
-  bool shadows = false;  // GLOSS_SHADOWS: the shading passes look up the shadow maps
-  bool maps = false;     // GLOSS_MAPS: the material has maps (shaders/texture_lookup.glsl)
+  int light_count = 0;       // GLOSS_LIGHT_COUNT
+  bool shadows = false;      // GLOSS_SHADOWS: the shading passes look up the shadow maps
+  bool environment = false;  // GLOSS_ENVIRONMENT: the environment's fast path (environment.glsl)
+  bool maps = false;         // GLOSS_MAPS: the material has maps (shaders/texture_lookup.glsl)
   bool operator<(const RasterVariant& o) const {
-    return std::tie(shape, pass, light_count, shadows, maps) <
-           std::tie(o.shape, o.pass, o.light_count, o.shadows, o.maps);
+    return std::tie(shape, pass, light_count, shadows, environment, maps) <
+           std::tie(o.shape, o.pass, o.light_count, o.shadows, o.environment, o.maps);
   }
 };
 
@@ -68,5 +70,6 @@ void set_uniform_vec2s(GLuint program, const char* name, const float* xy, int co
 void set_uniform_vec4s(GLuint program, const char* name, const float* xyzw, int count);
 void set_uniform_ivec2s(GLuint program, const char* name, const int* xy, int count);
 void set_uniform_ints(GLuint program, const char* name, const int* x, int count);
+void set_uniform_ivec4s(GLuint program, const char* name, const int* xyzw, int count);
 
 }  // namespace gloss

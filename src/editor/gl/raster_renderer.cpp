@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "editor/gl/environment_texture.h"
 #include "editor/gl/map_textures.h"
 #include "editor/gl/raster_geometry.h"
 #include "editor/gl/raster_programs.h"
@@ -41,6 +42,7 @@ struct SavedState {
   GLint draw_framebuffer = 0, read_framebuffer = 0, program = 0, vertex_array = 0;
   GLint array_buffer = 0, renderbuffer = 0, viewport[4] = {};
   GLint active_texture = GL_TEXTURE0, texture_2d = 0, texture_array = 0;  // on unit 0
+  GLint texture_2d_unit1 = 0;                                             // the environment's unit
   GLint front_face = GL_CCW, cull_face = GL_BACK, depth_func = GL_LESS;
   GLint blend_rgb = GL_FUNC_ADD, blend_alpha = GL_FUNC_ADD, pack_alignment = 4;
   GLboolean depth_test = GL_FALSE, blend = GL_FALSE, cull = GL_FALSE;
@@ -53,6 +55,8 @@ struct SavedState {
     glGetIntegerv(GL_RENDERBUFFER_BINDING, &renderbuffer);
     glGetIntegerv(GL_VIEWPORT, viewport);
     glGetIntegerv(GL_ACTIVE_TEXTURE, &active_texture);
+    glActiveTexture(GL_TEXTURE1);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture_2d_unit1);
     glActiveTexture(GL_TEXTURE0);
     glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture_2d);
     glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &texture_array);
@@ -74,6 +78,9 @@ struct SavedState {
     glBindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(array_buffer));
     glBindRenderbuffer(GL_RENDERBUFFER, static_cast<GLuint>(renderbuffer));
     glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    glActiveTexture(GL_TEXTURE0);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture_2d_unit1));
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture_2d));
     glBindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(texture_array));
@@ -181,6 +188,8 @@ struct RasterRenderer::Impl {
   RasterGeometry geometry;
   MapTextures maps;
   ShadowMaps shadows;
+  EnvironmentTexture environment;  // the environment's levels (texture unit 1)
+  bool with_environment = false;   // of the frame being drawn
   RasterTiming timing;
 
   // The five float targets and their depth buffer, resized with the image.
@@ -242,7 +251,8 @@ struct RasterRenderer::Impl {
       // Shadow passes need maps only to cut out.
       const bool with_maps =
           pass == RasterPass::shadow ? material.has_map(MapSlot::opacity) : material.textured();
-      RasterVariant variant{sphere ? RasterShape::sphere : RasterShape::mesh, own, lights, shadows};
+      RasterVariant variant{sphere ? RasterShape::sphere : RasterShape::mesh, own, lights, shadows,
+                            with_environment && pass != RasterPass::shadow};
       variant.maps = with_maps;
       const GLuint program = programs.get(variant);
       if (program != current) {
@@ -252,6 +262,7 @@ struct RasterRenderer::Impl {
         if (pass != RasterPass::shadow) {
           set_scene_uniforms(program, scene);
           set_uniform(program, "gloss_image_size", float(width), float(height));
+          if (with_environment) environment.use(program, scene, 1);
           if (shadows) {
             set_uniform(program, "gloss_shadow_maps", 0);
             set_uniform(program, "gloss_shadow_size", float(this->shadows.size()));
@@ -261,8 +272,8 @@ struct RasterRenderer::Impl {
         }
       }
       if (pass != RasterPass::shadow) set_material_uniforms(program, material);
-      // Units 1..8 (0 holds the shadow maps).
-      if (with_maps) set_map_uniforms(program, maps, material, scene.render.map_filter, spread, 1);
+      // Units 2..9 (0 holds the shadow maps, 1 the environment's levels).
+      if (with_maps) set_map_uniforms(program, maps, material, scene.render.map_filter, spread, 2);
       if (sphere) {
         set_uniform(program, "gloss_sphere_centre", &o.center.x);
         set_uniform(program, "gloss_sphere_radius", o.radius);
@@ -280,6 +291,20 @@ struct RasterRenderer::Impl {
         glDrawArrays(GL_TRIANGLES, 0, b.vertices);
       }
     }
+  }
+
+  // The environment where primary rays miss: one triangle over the image, before the objects,
+  // without depth.
+  void draw_sky(const Scene& scene, const RasterView& view) {
+    const GLuint program = programs.get({RasterShape::sky, RasterPass::pixel, 0, false, true});
+    glUseProgram(program);
+    set_view_uniforms(program, view);
+    set_uniform(program, "gloss_image_size", float(width), float(height));
+    environment.use(program, scene, 1);
+    glDisable(GL_DEPTH_TEST);
+    glBindVertexArray(geometry.cube());  // core GL needs one bound; the sky reads no attribute
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glEnable(GL_DEPTH_TEST);
   }
 
   float shadow_bias = 0.0f;
@@ -348,6 +373,9 @@ std::shared_ptr<RenderedFrame> RasterRenderer::render(const Scene& scene,
     t.shadow_ms = finish_ms(since);
   }
 
+  m.with_environment = scene.environment.present();
+  if (m.with_environment) m.environment.update(scene);
+
   m.size_targets(w, h);
   glBindFramebuffer(GL_FRAMEBUFFER, m.framebuffer);
   glViewport(0, 0, w, h);
@@ -372,6 +400,7 @@ std::shared_ptr<RenderedFrame> RasterRenderer::render(const Scene& scene,
     glBindTexture(GL_TEXTURE_2D_ARRAY, m.shadows.texture());
   }
   m.shadow_bias = settings.shadow_bias;
+  if (m.with_environment && scene.environment.as_background) m.draw_sky(scene, view);
   m.draw_objects(
       scene, view,
       settings.shading == ShadingFrequency::vertex ? RasterPass::vertex : RasterPass::pixel,

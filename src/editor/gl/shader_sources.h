@@ -11,5 +11,7 @@ extern const char* const kRasterMeshVertexShader;
 extern const char* const kRasterMeshFragmentShader;
 extern const char* const kRasterSphereVertexShader;
 extern const char* const kRasterSphereFragmentShader;
+extern const char* const kRasterSkyVertexShader;
+extern const char* const kRasterSkyFragmentShader;
 
 }  // namespace gloss

@@ -77,6 +77,11 @@ std::string lower_extension(const std::filesystem::path& path) {
 
 }  // namespace
 
+std::filesystem::path scene_folder(const std::string& scene_path, const std::string& fallback) {
+  return scene_path.empty() ? std::filesystem::path(fallback)
+                            : std::filesystem::path(scene_path).parent_path();
+}
+
 void FileBrowser::show(BrowsePurpose what, const std::filesystem::path& start_folder,
                        const std::string& suggested_name) {
   open = true;

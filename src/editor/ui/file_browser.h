@@ -24,6 +24,9 @@ const char* title(BrowsePurpose purpose);
 bool is_save(BrowsePurpose purpose);
 // Extensions listed (lowercase, with the dot); the first is added to a typed save name without one.
 std::vector<std::string> extensions(BrowsePurpose purpose);
+// The folder the panel opens in: the scene file's, or fallback (the screenshot folder) for a scene
+// without a file.
+std::filesystem::path scene_folder(const std::string& scene_path, const std::string& fallback);
 
 struct FileBrowser {
   struct Entry {

@@ -2,7 +2,9 @@
 #include <imgui.h>
 
 #include "base/assets.h"
-#include "editor/ui/app.h"
+#include "editor/ui/panels/panels.h"
+#include "editor/ui/parts/open_windows.h"
+#include "editor/ui/parts/session.h"
 
 namespace gloss {
 
@@ -18,12 +20,12 @@ void row(const char* keys, const char* what) {
 
 }  // namespace
 
-void draw_help_window(App& app) {
-  if (!app.show_help) return;
+void draw_help_window(OpenWindows& windows, const Session& session) {
+  if (!windows.help) return;
   ImGui::SetNextWindowSize(ImVec2(560, 520), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_FirstUseEver,
                           ImVec2(0.5f, 0.5f));
-  if (!ImGui::Begin("Help", &app.show_help)) {
+  if (!ImGui::Begin("Help", &windows.help)) {
     ImGui::End();
     return;
   }
@@ -68,9 +70,9 @@ void draw_help_window(App& app) {
       "Scripts: renderer cpu|gl|auto, shading pixel|vertex, shadow-map SIZE (16..4096), "
       "shadow-bias TEXELS (>= 0), tessellation N (1..64), view ab cpu-gl|pixel-vertex");
   ImGui::Spacing();
-  ImGui::TextDisabled("Layout and recent files: %s", app.config_folder.string().c_str());
-  if (app.autosaver) {
-    ImGui::TextDisabled("Crash recovery file: %s", app.autosaver->file().string().c_str());
+  ImGui::TextDisabled("Layout and recent files: %s", session.config_folder.string().c_str());
+  if (session.autosaver) {
+    ImGui::TextDisabled("Crash recovery file: %s", session.autosaver->file().string().c_str());
   }
   ImGui::End();
 }

@@ -21,6 +21,7 @@
 #include "editor/model/session/config_paths.h"
 #include "editor/ui/app.h"
 #include "editor/ui/script_player.h"
+#include "editor/ui/shortcuts.h"
 #include "io/scene/scene_loader.h"
 
 namespace {
@@ -131,25 +132,25 @@ int main(int argc, char** argv) {
   try {
     App app(window, std::move(*scene));
     if (script) {
-      app.script = std::make_unique<ScriptPlayer>(std::move(*script));
+      app.run.script = std::make_unique<ScriptPlayer>(std::move(*script));
       if (!options.recovery_path.empty()) {
-        app.autosaver.emplace(options.recovery_path, app.commands.revision());
+        app.session.autosaver.emplace(options.recovery_path, app.document.revision());
       }
     } else if (!options.no_recovery) {
       const std::filesystem::path recovery_file =
           options.recovery_path.empty() ? default_recovery_file()
                                         : std::filesystem::path(options.recovery_path);
       try {
-        app.offered_recovery = read_recovery(recovery_file);
+        app.session.offered_recovery = read_recovery(recovery_file);
       } catch (const std::exception& e) {
         app.notices.error(std::string("ignored a damaged recovery file: ") + e.what(), 0.0);
       }
-      app.autosaver.emplace(recovery_file, app.commands.revision());
+      app.session.autosaver.emplace(recovery_file, app.document.revision());
     }
 
     // ---- Main loop ----------------------------------------------------------------------------
     int settle = 2;  // frames drawn after an event so ImGui's hover and popups catch up
-    while (!app.quit) {
+    while (!app.run.quit) {
       const double timeout = idle_timeout(app);
       if (settle > 0 || timeout <= 0.0) {
         glfwPollEvents();
@@ -162,17 +163,10 @@ int main(int argc, char** argv) {
     }
 
     // ---- Cleanup ------------------------------------------------------------------------------
-    for (PendingExport& job : app.exports) {
-      try {
-        std::printf("saved %s\n", job.path.get().string().c_str());
-      } catch (const std::exception& e) {
-        std::fprintf(stderr, "error: %s\n", e.what());
-        app.exit_code = 1;
-      }
-    }
+    if (!app.exports.finish()) app.run.exit_code = 1;
     // A clean exit needs no recovery (unsaved changes were saved or declined in the quit dialog).
-    if (app.autosaver) app.autosaver->discard();
-    status = app.exit_code;
+    if (app.session.autosaver) app.session.autosaver->discard();
+    status = app.run.exit_code;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     status = 1;

@@ -1,97 +1,92 @@
 // The main menu bar: File, Edit, View, Help. Items call the same actions as the shortcuts.
 #include <imgui.h>
 
-#include "editor/ui/app.h"
+#include "editor/ui/panels/panels.h"
+#include "editor/ui/parts/commands.h"
+#include "editor/ui/parts/exports.h"
+#include "editor/ui/parts/file_actions.h"
+#include "editor/ui/parts/open_windows.h"
+#include "editor/ui/parts/session.h"
 
 namespace gloss {
 
 namespace {
 
-std::filesystem::path scene_folder(const App& app) {
-  const std::string& path = app.commands.scene().path;
-  return path.empty() ? std::filesystem::path(app.view.screenshot_dir)
-                      : std::filesystem::path(path).parent_path();
-}
-
-void file_menu(App& app) {
+void file_menu(Commands& commands, const ViewSettings& view, Session& session, FileActions& files,
+               Exports& exports) {
   if (!ImGui::BeginMenu("File")) return;
+  // A reference: it follows the document when Open recent replaces it.
+  const std::string& path = commands.scene().path;
+  FileBrowser& browser = session.browser;
   if (ImGui::MenuItem("Open scene...", "Ctrl+O")) {
-    app.browser.show(BrowsePurpose::open_scene, scene_folder(app), "");
+    browser.show(BrowsePurpose::open_scene, scene_folder(path, view.screenshot_dir), "");
   }
-  if (ImGui::BeginMenu("Open recent", !app.recent.scenes.paths.empty())) {
+  if (ImGui::BeginMenu("Open recent", !session.recent.scenes.paths.empty())) {
     std::string chosen;  // opening reorders the list: act after the loop
-    for (const std::string& path : app.recent.scenes.paths) {
-      if (ImGui::MenuItem(path.c_str())) chosen = path;
+    for (const std::string& recent : session.recent.scenes.paths) {
+      if (ImGui::MenuItem(recent.c_str())) chosen = recent;
     }
     if (!chosen.empty()) {
       try {
-        request_open_scene(app, chosen);
+        files.request_open_scene(chosen);
       } catch (const std::exception& e) {
-        app.notices.error(e.what(), app.now_s());
+        commands.error(e.what());
       }
     }
     ImGui::EndMenu();
   }
   if (ImGui::MenuItem("Add model...")) {
-    app.browser.show(BrowsePurpose::add_model, scene_folder(app), "");
+    browser.show(BrowsePurpose::add_model, scene_folder(path, view.screenshot_dir), "");
   }
   ImGui::Separator();
-  const std::string& path = app.commands.scene().path;
   if (ImGui::MenuItem("Save scene", "Ctrl+Shift+S", false, !path.empty())) {
     try {
-      save_scene_as(app, path);
+      files.save_scene_as(path);
     } catch (const std::exception& e) {
-      app.notices.error(e.what(), app.now_s());
+      commands.error(e.what());
     }
   }
   if (ImGui::MenuItem("Save scene as...")) {
-    app.browser.show(BrowsePurpose::save_scene, scene_folder(app),
-                     path.empty() ? "scene.json" : std::filesystem::path(path).filename().string());
+    browser.show(BrowsePurpose::save_scene, scene_folder(path, view.screenshot_dir),
+                 path.empty() ? "scene.json" : std::filesystem::path(path).filename().string());
   }
   ImGui::Separator();
   if (ImGui::MenuItem("Load materials (JSON, MTL)...")) {
-    app.browser.show(BrowsePurpose::load_materials, scene_folder(app), "");
+    browser.show(BrowsePurpose::load_materials, scene_folder(path, view.screenshot_dir), "");
   }
   if (ImGui::MenuItem("Save materials (JSON, MTL)...")) {
-    app.browser.show(BrowsePurpose::save_materials, scene_folder(app), "materials.mtl");
+    browser.show(BrowsePurpose::save_materials, scene_folder(path, view.screenshot_dir),
+                 "materials.mtl");
   }
   if (ImGui::MenuItem("Export GLSL...")) {
-    app.browser.show(BrowsePurpose::export_glsl, scene_folder(app), "gloss.frag");
+    browser.show(BrowsePurpose::export_glsl, scene_folder(path, view.screenshot_dir), "gloss.frag");
   }
   ImGui::Separator();
-  if (ImGui::MenuItem("Screenshot", "Ctrl+S")) {
-    start_screenshot(app, app.view.screenshot_kind, "", false);
-  }
-  if (ImGui::MenuItem("Screenshot: viewport render")) {
-    start_screenshot(app, ScreenshotKind::viewport, "", false);
-  }
-  if (ImGui::MenuItem("Screenshot: term sheet")) {
-    start_screenshot(app, ScreenshotKind::terms, "", false);
-  }
-  if (ImGui::MenuItem("Screenshot: whole window")) {
-    start_screenshot(app, ScreenshotKind::window, "", false);
-  }
+  if (ImGui::MenuItem("Screenshot", "Ctrl+S")) exports.start(view.screenshot_kind);
+  if (ImGui::MenuItem("Screenshot: viewport render")) exports.start(ScreenshotKind::viewport);
+  if (ImGui::MenuItem("Screenshot: term sheet")) exports.start(ScreenshotKind::terms);
+  if (ImGui::MenuItem("Screenshot: whole window")) exports.start(ScreenshotKind::window);
   ImGui::Separator();
-  if (ImGui::MenuItem("Quit", "Ctrl+Q")) request_quit(app);
+  if (ImGui::MenuItem("Quit", "Ctrl+Q")) files.request_quit();
   ImGui::EndMenu();
 }
 
-void edit_menu(App& app) {
+void edit_menu(Commands& commands) {
   if (!ImGui::BeginMenu("Edit")) return;
-  const std::string undo_text = "Undo " + app.commands.undo_label();
-  const std::string redo_text = "Redo " + app.commands.redo_label();
-  if (ImGui::MenuItem(undo_text.c_str(), "Ctrl+Z", false, app.commands.can_undo())) undo(app);
-  if (ImGui::MenuItem(redo_text.c_str(), "Ctrl+Shift+Z", false, app.commands.can_redo())) {
-    redo(app);
+  const CommandLayer& history = commands.document();
+  const std::string undo_text = "Undo " + history.undo_label();
+  const std::string redo_text = "Redo " + history.redo_label();
+  if (ImGui::MenuItem(undo_text.c_str(), "Ctrl+Z", false, history.can_undo())) commands.undo();
+  if (ImGui::MenuItem(redo_text.c_str(), "Ctrl+Shift+Z", false, history.can_redo())) {
+    commands.redo();
   }
-  ImGui::TextDisabled("%zu undo / %zu redo steps", app.commands.undo_count(),
-                      app.commands.redo_count());
+  ImGui::TextDisabled("%zu undo / %zu redo steps", history.undo_count(), history.redo_count());
   ImGui::EndMenu();
 }
 
-void view_menu(App& app) {
+void view_menu(Commands& commands, ViewSettings& view, std::optional<Snapshot>& snapshot,
+               OpenWindows& windows) {
   if (!ImGui::BeginMenu("View")) return;
-  ViewSettings& view = app.view;
   if (ImGui::MenuItem("Render", "1", view.mode == ViewMode::render)) view.mode = ViewMode::render;
   if (ImGui::MenuItem("Terms 2x2", "2", view.mode == ViewMode::terms)) view.mode = ViewMode::terms;
   if (ImGui::BeginMenu("One term")) {
@@ -114,10 +109,12 @@ void view_menu(App& app) {
     view.mode = ViewMode::lobe;
   }
   ImGui::MenuItem("Pixel inspector", "I", &view.show_inspector);
-  if (ImGui::MenuItem("Snapshot, then A/B snapshot vs live", "Ctrl+B")) snapshot_and_compare(app);
+  if (ImGui::MenuItem("Snapshot, then A/B snapshot vs live", "Ctrl+B")) {
+    snapshot_and_compare(commands, snapshot, view);
+  }
   if (ImGui::MenuItem("A/B snapshot vs live", nullptr,
                       view.mode == ViewMode::ab && view.ab_source == AbSource::snapshot,
-                      app.snapshot.has_value())) {
+                      snapshot.has_value())) {
     view.mode = ViewMode::ab;
     view.ab_source = AbSource::snapshot;
   }
@@ -132,27 +129,34 @@ void view_menu(App& app) {
     view.mode = ViewMode::ab;
     view.ab_source = AbSource::pixel_vertex;
   }
+  // Issue 23: the material beside its physical reference.
+  if (ImGui::MenuItem("A/B material vs physical reference", nullptr,
+                      view.mode == ViewMode::ab && view.ab_source == AbSource::reference)) {
+    view.mode = ViewMode::ab;
+    view.ab_source = AbSource::reference;
+  }
   ImGui::MenuItem("Show clipped pixels", nullptr, &view.show_clipped);
   ImGui::Separator();
-  const bool srgb = app.commands.scene().render.srgb;
+  const bool srgb = commands.scene().render.srgb;
   if (ImGui::MenuItem("sRGB display encoding", nullptr, srgb)) {
-    execute(app, SetField{FieldPart::render, 0, "srgb", number_value(!srgb)});
+    commands.execute(SetField{FieldPart::render, 0, "srgb", number_value(!srgb)});
   }
   if (ImGui::MenuItem("Reset exposure")) view.exposure = 0.0f;
   ImGui::MenuItem("Orbit light", nullptr, &view.orbit_light);
-  ImGui::MenuItem("Quality: speed / accuracy", nullptr, &app.show_quality);
+  ImGui::MenuItem("Quality: speed / accuracy", nullptr, &windows.quality);
   ImGui::EndMenu();
 }
 
 }  // namespace
 
-void draw_menu_bar(App& app) {
+void draw_menu_bar(Commands& commands, ViewSettings& view, std::optional<Snapshot>& snapshot,
+                   Session& session, FileActions& files, Exports& exports, OpenWindows& windows) {
   if (!ImGui::BeginMainMenuBar()) return;
-  file_menu(app);
-  edit_menu(app);
-  view_menu(app);
+  file_menu(commands, view, session, files, exports);
+  edit_menu(commands);
+  view_menu(commands, view, snapshot, windows);
   if (ImGui::BeginMenu("Help")) {
-    if (ImGui::MenuItem("Help and shortcuts", "F1")) app.show_help = true;
+    if (ImGui::MenuItem("Help and shortcuts", "F1")) windows.help = true;
     ImGui::EndMenu();
   }
   ImGui::EndMainMenuBar();

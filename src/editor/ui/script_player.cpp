@@ -18,7 +18,7 @@ namespace gloss {
 std::string stats_text(App& app) {
   // Every pixel of the live image as shown (exposure_histogram.h: any channel above 1).
   const double clipped_share =
-      app.viewport.histogram(app.view, app.commands.scene().render.srgb, true).clipped_share();
+      app.viewport.histogram(app.view, app.document.scene().render.srgb, true).clipped_share();
   char text[512];
   const LatencyProbe& latency = app.viewport.latency();
   const RenderedFrame* frame = app.viewport.shown_frame();
@@ -29,8 +29,8 @@ std::string stats_text(App& app) {
                 "ui_frame_ms avg=%.2f median=%.2f max=%.2f frames=%d | edit_to_first_image_ms=%.1f "
                 "edit_to_full_image_ms=%.1f | pass=%d spp=%d/%d size=%dx%d pass_ms=%.1f "
                 "since_change_ms=%.1f rays_per_s=%.3g clipped=%.2f%%",
-                app.frame_times.average(), app.frame_times.median(), app.frame_times.largest(),
-                app.frame_times.size, latency.first_image_ms, latency.full_image_ms, info.pass,
+                app.frame.times.average(), app.frame.times.median(), app.frame.times.largest(),
+                app.frame.times.size, latency.first_image_ms, latency.full_image_ms, info.pass,
                 info.spp, info.target_spp, info.width, info.height, info.pass_ms,
                 info.since_change_ms, rays_per_s, 100.0 * clipped_share);
   // Which renderer drew the shown frame (issue 12); in the A/B view both sides and the largest
@@ -55,15 +55,15 @@ std::string stats_text(App& app) {
 
 void ScriptPlayer::fail(App& app, const std::string& message, int status) {
   std::fprintf(stderr, "error: %s\n", message.c_str());
-  app.exit_code = status;
-  app.quit = true;
+  app.run.exit_code = status;
+  app.run.quit = true;
   m_next = m_script.lines.size();
 }
 
 bool ScriptPlayer::wait_done(App& app, double now_s) {
   switch (m_waiting) {
     case Waiting::converge:
-      if (app.viewport.converged_and_shown(app.commands.revision(), app.view)) {
+      if (app.viewport.converged_and_shown(app.document.revision(), app.view)) {
         m_waiting = Waiting::shown;  // one more frame, so a window capture shows it
         return false;
       }
@@ -78,20 +78,21 @@ bool ScriptPlayer::wait_done(App& app, double now_s) {
     case Waiting::shown:
       return true;
     case Waiting::files:
-      return app.exports.empty() && !app.capture.requested;
+      return !app.exports.running() && !app.exports.capture_requested();
     case Waiting::sleep:
       return now_s >= m_deadline_s;
     case Waiting::quality: {
-      if (app.quality.running()) return false;
+      const QualityMeasurement& quality = app.quality.cpu;
+      if (quality.running()) return false;
       const ScriptLine& line = m_script.lines[m_next];
       const std::string where = m_script.file + ":" + std::to_string(line.line) + ": ";
-      if (app.quality.state() == QualityMeasurement::State::failed) {
-        fail(app, where + "quality measurement failed: " + app.quality.error(), 1);
+      if (quality.state() == QualityMeasurement::State::failed) {
+        fail(app, where + "quality measurement failed: " + quality.error(), 1);
         return false;
       }
-      std::printf("quality: %zu rows, %d of %zu knobs, %dx%d, %.2f s\n", app.quality.rows().size(),
-                  app.quality.knobs_done(), app.quality.knobs().size(), app.quality.width(),
-                  app.quality.height(), app.quality.elapsed_s());
+      std::printf("quality: %zu rows, %d of %zu knobs, %dx%d, %.2f s\n", quality.rows().size(),
+                  quality.knobs_done(), quality.knobs().size(), quality.width(), quality.height(),
+                  quality.elapsed_s());
       std::fflush(stdout);
       return true;
     }
@@ -106,34 +107,34 @@ class ScriptPlayer::Host : public ScriptHost {
  public:
   Host(ScriptPlayer& player, App& app, double now_s) : m_player(player), m_app(app), m_now(now_s) {}
 
-  CommandLayer& layer() override { return m_app.commands; }
+  CommandLayer& layer() override { return m_app.document; }
   ViewSettings& view() override { return m_app.view; }
-  void select(int object) override { m_app.selected_object = object; }
-  int selected_object() const override { return m_app.selected_object; }
+  void select(int object) override { m_app.selection.object = object; }
+  int selected_object() const override { return m_app.selection.object; }
   std::optional<Snapshot>& snapshot() override { return m_app.snapshot; }
 
   LineResult wait(const WaitAction& a, const std::string&) override {
     return hold(Waiting::converge, m_now + a.timeout_s);
   }
   LineResult screenshot(const ScreenshotAction& a, const std::string&) override {
-    start_screenshot(m_app, a.kind, a.path, true);
+    m_app.exports.start(a.kind, a.path, true);
     return hold(Waiting::files, 0.0);
   }
   LineResult stats() override {
     std::printf("stats: %s\n", stats_text(m_app).c_str());
     std::fflush(stdout);
-    m_app.frame_times = FrameTimes{};
+    m_app.frame.times = FrameTimes{};
     return LineResult::go_on();
   }
   LineResult memory() override {
     const ViewMemory view{m_app.viewport.frame_bytes(), m_app.viewport.texture_bytes(),
-                          m_app.swatches.texture_bytes()};
-    std::printf("memory: %s\n", memory_text(m_app.commands, view).c_str());
+                          m_app.library.swatches.texture_bytes()};
+    std::printf("memory: %s\n", memory_text(m_app.document, view).c_str());
     std::fflush(stdout);
     return LineResult::go_on();
   }
   LineResult mouse(const MouseAction& a) override {
-    App::ScriptMouse& m = m_app.script_mouse;
+    ScriptMouse& m = m_app.input.script_mouse;
     m.active = true;
     if (a.verb == MouseAction::Verb::release) {
       m.down = false;
@@ -154,18 +155,18 @@ class ScriptPlayer::Host : public ScriptHost {
     switch (action.verb) {
       case QualityAction::Verb::measure:
       case QualityAction::Verb::start:
-        m_app.quality.start(m_app.commands.scene());
-        m_app.show_quality = true;
+        m_app.quality.cpu.start(m_app.document.scene());
+        m_app.windows.quality = true;
         if (action.verb == QualityAction::Verb::measure) return hold(Waiting::quality, 0.0);
         return LineResult::go_on();
       case QualityAction::Verb::cancel:
-        m_app.quality.cancel();
+        m_app.quality.cpu.cancel();
         return LineResult::go_on();
       case QualityAction::Verb::raster:
         return quality_raster(action, where);
       case QualityAction::Verb::csv:
         try {
-          write_quality_csv(action.path, m_app.quality.rows());
+          write_quality_csv(action.path, m_app.quality.cpu.rows());
           std::printf("saved %s\n",
                       std::filesystem::absolute(action.path).lexically_normal().string().c_str());
           std::fflush(stdout);
@@ -183,8 +184,9 @@ class ScriptPlayer::Host : public ScriptHost {
   // meanwhile; the rows stay in the Quality window.
   LineResult quality_raster(const QualityAction& action, const std::string& where) {
     try {
-      start_raster_quality(m_app, action.width, action.height, action.reference_spp);
-      RasterTradeoff& r = m_app.raster_quality;
+      start_raster_quality(m_app.quality, m_app.windows, m_app.document.scene(), action.width,
+                           action.height, action.reference_spp);
+      RasterTradeoff& r = m_app.quality.raster;
       while (r.running()) {
         if (!r.step(1e12)) std::this_thread::sleep_for(std::chrono::milliseconds(5));
       }
@@ -218,7 +220,7 @@ class ScriptPlayer::Host : public ScriptHost {
 
 void ScriptPlayer::step(App& app) {
   const double now = app.now_s();
-  while (m_next < m_script.lines.size() && !app.quit) {
+  while (m_next < m_script.lines.size() && !app.run.quit) {
     if (m_waiting != Waiting::none) {
       if (!wait_done(app, now)) return;
       m_waiting = Waiting::none;
@@ -229,8 +231,8 @@ void ScriptPlayer::step(App& app) {
     const LineResult result = run_script_line(m_script, m_script.lines[m_next], host);
     if (result.next == LineResult::Next::hold) return;
     if (result.next == LineResult::Next::stop) {
-      app.exit_code = result.status;
-      app.quit = true;
+      app.run.exit_code = result.status;
+      app.run.quit = true;
       m_next = result.status != 0 ? m_script.lines.size() : m_next + 1;
       return;
     }

@@ -4,11 +4,16 @@
 
 #include <imgui.h>
 
-#include "editor/ui/app.h"
+#include "editor/ui/notices.h"
+#include "editor/ui/panels/panels.h"
+#include "editor/ui/parts/frame_loop.h"
+#include "editor/ui/parts/session.h"
+#include "editor/ui/viewport/viewport.h"
 
 namespace gloss {
 
-void draw_status_bar(App& app, ImVec2 pos, ImVec2 size) {
+void draw_status_bar(const Viewport& viewport, const ViewSettings& view, const FrameTimes& times,
+                     const Notices& notices, const Session& session, ImVec2 pos, ImVec2 size) {
   ImGui::SetNextWindowPos(pos);
   ImGui::SetNextWindowSize(size);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
@@ -21,14 +26,14 @@ void draw_status_bar(App& app, ImVec2 pos, ImVec2 size) {
     ImGui::End();
     return;
   }
-  if (app.autosaver && !app.autosaver->failure().empty()) {
+  if (session.autosaver && !session.autosaver->failure().empty()) {
     // First, so no window width cuts it off; stays until a write succeeds.
     ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s |",
-                       autosave_notice(*app.autosaver).c_str());
+                       autosave_notice(*session.autosaver).c_str());
     ImGui::SameLine();
   }
-  const RenderedFrame* frame = app.viewport.shown_frame();
-  if (frame != nullptr && app.viewport.shown_raster_a()) {
+  const RenderedFrame* frame = viewport.shown_frame();
+  if (frame != nullptr && viewport.shown_raster_a()) {
     // One pass at one sample per pixel: its time is the whole frame's (raster_renderer.h).
     const FrameInfo& info = frame->info;
     ImGui::Text("raster (GLSL) | %dx%d | %.1f ms/frame", info.width, info.height, info.pass_ms);
@@ -49,19 +54,19 @@ void draw_status_bar(App& app, ImVec2 pos, ImVec2 size) {
     ImGui::TextUnformatted("waiting for the first frame");
   }
   // In the A/B view the B side may come from the other renderer (ab_compare.h).
-  const RenderedFrame* b = app.viewport.shown_frame_b();
-  if (app.view.mode == ViewMode::ab && b != nullptr &&
-      app.viewport.shown_raster_b() != app.viewport.shown_raster_a()) {
+  const RenderedFrame* b = viewport.shown_frame_b();
+  if (view.mode == ViewMode::ab && b != nullptr &&
+      viewport.shown_raster_b() != viewport.shown_raster_a()) {
     ImGui::SameLine();
-    if (app.viewport.shown_raster_b()) {
+    if (viewport.shown_raster_b()) {
       ImGui::Text("| B: raster (GLSL) %.1f ms/frame", b->info.pass_ms);
     } else {
       ImGui::Text("| B: ray traced %d/%d spp", b->info.spp, b->info.target_spp);
     }
   }
-  if (app.view.renderer == RendererChoice::automatic) {
+  if (view.renderer == RendererChoice::automatic) {
     // Which renderer draws the next drag, and the measured frame times behind the choice.
-    const Viewport::AutomaticReport r = app.viewport.automatic_report();
+    const Viewport::AutomaticReport r = viewport.automatic_report();
     ImGui::SameLine();
     const char* who = r.raster ? "raster" : "ray traced";
     if (r.raster_ms < 0.0) {
@@ -77,13 +82,13 @@ void draw_status_bar(App& app, ImVec2 pos, ImVec2 size) {
     }
   }
   ImGui::SameLine();
-  const LatencyProbe& latency = app.viewport.latency();
+  const LatencyProbe& latency = viewport.latency();
   ImGui::TextDisabled("| UI %.1f ms (max %.1f) | edit->image %.0f ms, full res %.0f ms",
-                      app.frame_times.average(), app.frame_times.largest(), latency.first_image_ms,
+                      times.average(), times.largest(), latency.first_image_ms,
                       latency.full_image_ms);
-  if (!app.notices.last.empty()) {
+  if (!notices.last.empty()) {
     ImGui::SameLine();
-    ImGui::TextDisabled("| %s", app.notices.last.c_str());
+    ImGui::TextDisabled("| %s", notices.last.c_str());
   }
   ImGui::End();
 }

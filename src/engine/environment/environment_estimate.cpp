@@ -10,6 +10,7 @@
 #include "engine/trace/ray_packet.h"
 #include "engine/trace/refined_samples.h"
 #include "engine/trace/sample_packet.h"
+#include "engine/simd/lane_mask.h"
 #include "engine/trace/self_shadow.h"
 #include "engine/trace/texture_lanes.h"
 #include "shading/sampling.h"
@@ -30,11 +31,21 @@ void uniforms(std::uint32_t key, int step, double (&u)[6]) {
   }
 }
 
-// `steps` steps for the packet's lanes, added to sums (lane i: sums + kFloats * i), then the
-// lanes' estimates stored in the environment's slots of plane (width: the plane's row).
-void packet_steps(const SamplePacket& packet, const SampleCache& cache, const RenderContext& ctx,
-                  std::uint32_t plane_key, int first_step, int steps, float* sums, int width,
-                  SamplePlane& plane) {
+// The key of a sample's draws: its image pixel and which of the pixel's samples it is, so a
+// band of gloss-cli's renderer and the editor's whole image draw the same directions.
+std::uint32_t sample_key(std::uint32_t seed, int x, int y, int sample) {
+  return mix_bits(seed ^ mix_bits(static_cast<std::uint32_t>(x) ^
+                                  mix_bits(static_cast<std::uint32_t>(y) ^
+                                           mix_bits(static_cast<std::uint32_t>(sample)))));
+}
+
+// `steps` steps for the packet's lanes (keys: each lane's sample_key), added to sums (lane i:
+// sums + kFloats * i), then the lanes' estimates stored in the environment's slots of plane
+// (width: the plane's row). Returns the shadow rays traced.
+long long packet_steps(const SamplePacket& packet, const SampleCache& cache,
+                       const RenderContext& ctx, const std::uint32_t (&keys)[kLanes],
+                       int first_step, int steps, float* sums, int width, SamplePlane& plane) {
+  long long rays = 0;
   const Scene& scene = *ctx.scene;
   const EnvironmentContext& env = ctx.environment;
   LightLanes out[3];
@@ -75,9 +86,7 @@ void packet_steps(const SamplePacket& packet, const SampleCache& cache, const Re
       for (int i = 0; i < kLanes; ++i) {
         if (!active[i]) continue;
         double u[6];
-        uniforms(mix_bits(plane_key ^ static_cast<std::uint32_t>(packet.x0 + i)) ^
-                     static_cast<std::uint32_t>(packet.y0 + cache.row0) * 0x27d4eb2dU,
-                 k, u);
+        uniforms(keys[i], k, u);
         draws[i] = environment_draws(hits[i], scene.environment, env.rotation_d, *env.sampler, u);
       }
       bool visible[kLanes][EnvironmentDraws::kCount];
@@ -95,6 +104,7 @@ void packet_steps(const SamplePacket& packet, const SampleCache& cache, const Re
         }
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);  // incoherent: every lane its own way
+        rays += count_set_lanes(lanes);
         rtcOccluded16(lanes, ctx.embree->handle(), &context, &ray);
         for (int i = 0; i < kLanes; ++i) {
           visible[i][d] = lanes[i] != 0 && ray.tfar[i] != -std::numeric_limits<float>::infinity();
@@ -127,6 +137,7 @@ void packet_steps(const SamplePacket& packet, const SampleCache& cache, const Re
   for (int c = 0; c < 3; ++c) {
     store_light(packet, width, out[c], plane.lights[ctx.plan.environment_slot(c)]);
   }
+  return rays;
 }
 
 }  // namespace
@@ -156,24 +167,33 @@ bool add_environment_steps(SampleCache& cache, const RenderContext& ctx,
   }
   const int first = estimates.steps;
   const std::uint32_t seed = mix_bits(ctx.scene->render.seed ^ 0x5bd1e995U);
-  const bool planes =
-      visit_cached_samples(cache, ctx, [&](SamplePacket& packet, SamplePlane& plane) {
-        const auto s = static_cast<std::size_t>(&plane - cache.planes.data());
-        float* sums = estimates.planes[s].data() +
-                      (static_cast<std::size_t>(packet.y0) * cache.width + packet.x0) *
-                          EnvironmentEstimates::kFloats;
-        packet_steps(packet, cache, ctx, mix_bits(seed + static_cast<std::uint32_t>(s)), first,
-                     steps, sums, cache.width, plane);
-        return 0LL;
-      });
+  const bool planes = visit_cached_samples(cache, ctx, [&](SamplePacket& packet, SamplePlane& plane) {
+    const auto s = static_cast<std::size_t>(&plane - cache.planes.data());
+    float* sums = estimates.planes[s].data() +
+                  (static_cast<std::size_t>(packet.y0) * cache.width + packet.x0) *
+                      EnvironmentEstimates::kFloats;
+    std::uint32_t keys[kLanes];
+    for (int i = 0; i < kLanes; ++i) {
+      keys[i] = sample_key(seed, packet.x0 + i, packet.y0 + cache.row0, static_cast<int>(s));
+    }
+    return packet_steps(packet, cache, ctx, keys, first, steps, sums, cache.width, plane);
+  });
   if (!planes) return false;
   const int width = static_cast<int>(cache.refined.entries());
   const bool refined = visit_refined_samples(cache, ctx, [&](SamplePacket& packet) {
     float* sums = estimates.refined.data() +
                   static_cast<std::size_t>(packet.x0) * EnvironmentEstimates::kFloats;
-    packet_steps(packet, cache, ctx, mix_bits(seed ^ 0xc2b2ae35U), first, steps, sums, width,
-                 cache.refined.plane);
-    return 0LL;
+    // Entry e is sample e mod spp of refined pixel e / spp (after the centres' plane 0).
+    const RefinedSamples& refined = cache.refined;
+    std::uint32_t keys[kLanes];
+    for (int i = 0; i < kLanes; ++i) {
+      const std::size_t e = std::min(static_cast<std::size_t>(packet.x0 + i), refined.entries() - 1);
+      const std::uint32_t pixel = refined.pixels[e / static_cast<std::size_t>(refined.spp)];
+      const int x = static_cast<int>(pixel % static_cast<std::uint32_t>(cache.width));
+      const int y = static_cast<int>(pixel / static_cast<std::uint32_t>(cache.width)) + cache.row0;
+      keys[i] = sample_key(seed, x, y, 1 + static_cast<int>(e % static_cast<std::size_t>(refined.spp)));
+    }
+    return packet_steps(packet, cache, ctx, keys, first, steps, sums, width, cache.refined.plane);
   });
   if (!refined) return false;
   estimates.steps += steps;

@@ -23,8 +23,10 @@ namespace gloss {
 
 namespace {
 
-// The key of a material besides its fields (scene/fields/fields.h).
+// The keys of a material besides its fields (scene/fields/fields.h): the preset it started from,
+// and its physical reference, an object of reference_fields() (docs/scene-format.md).
 const char* const kPresetKey = "preset";
+const char* const kReferenceKey = "reference";
 
 std::string join(const std::vector<std::string>& words) {
   std::string out;
@@ -131,12 +133,24 @@ nlohmann::ordered_json material_to_json(const Material& material) {
   nlohmann::ordered_json value = nlohmann::ordered_json::object();
   if (!material.preset.empty()) value[kPresetKey] = material.preset;
   write_fields(material_fields(), material, value);
+  if (material.reference) {
+    nlohmann::ordered_json reference = nlohmann::ordered_json::object();
+    write_fields(reference_fields(), *material.reference, reference);
+    // A metal's base colour is kept but unused: a file shows it only when it is not the
+    // default, so a metal's block reads {"kind", "roughness"}.
+    if (is_metal(material.reference->kind) &&
+        material.reference->base == PhysicalReference{}.base) {
+      reference.erase("base");
+    }
+    value[kReferenceKey] = reference;
+  }
   return value;
 }
 
 Material material_from_json(const nlohmann::json& value, const std::string& file,
                             const std::string& field) {
-  const JsonObjectReader reader(value, file, field, allowed_keys(material_fields(), {kPresetKey}));
+  const JsonObjectReader reader(value, file, field,
+                                allowed_keys(material_fields(), {kPresetKey, kReferenceKey}));
   Material material;
   if (reader.has(kPresetKey)) {
     const std::string name = reader.string(kPresetKey);
@@ -149,6 +163,13 @@ Material material_from_json(const nlohmann::json& value, const std::string& file
     material = preset->material;
   }
   read_fields(reader, material_fields(), material);
+  if (reader.has(kReferenceKey)) {
+    const JsonObjectReader inner(reader.required(kReferenceKey), file, reader.path(kReferenceKey),
+                                 allowed_keys(reference_fields()));
+    PhysicalReference reference;
+    read_fields(inner, reference_fields(), reference);
+    material.reference = reference;
+  }
   validate_material(file, field, material);
   return material;
 }

@@ -80,6 +80,35 @@ const FieldTable<Material>& material_fields() {
   return table;
 }
 
+const FieldTable<PhysicalReference>& reference_fields() {
+  static const FieldTable<PhysicalReference> table = [] {
+    std::vector<const char*> kinds;
+    for (int i = 0; i < kReferenceKinds; ++i) kinds.push_back(to_string(ReferenceKind(i)));
+    // The Phong renderer never reads a reference: an edit invalidates none of its work (the
+    // editor's reference view compares documents itself).
+    FieldTable<PhysicalReference> t;
+    t.push_back(choice_field<&PhysicalReference::kind>("kind", "reference", kinds)
+                    .invalidates(ChangeClass::none)
+                    .needed()
+                    .explain("a measured metal (F0 from Real-Time Rendering, 4th ed., Table 9.2) "
+                             "or a dielectric (F0 0.04 plus a base colour)"));
+    t.push_back(vec3_field<&PhysicalReference::base>(FieldKind::colour, "base", "base colour")
+                    .range(0.0, 1.0)
+                    .invalidates(ChangeClass::none)
+                    .explain("dielectric: the diffuse albedo under the 4% Fresnel coat, linear "
+                             "RGB 0..1 (kept, unused, for metals)"));
+    t.push_back(
+        scalar_field<&PhysicalReference::roughness>(FieldKind::number, "roughness", "roughness")
+            .range(0.0, 1.0)
+            .open(true, false)
+            .ui(0.01, 1.0)
+            .invalidates(ChangeClass::none)
+            .explain("perceptual roughness; GGX width a = roughness^2 (0 < r <= 1)"));
+    return t;
+  }();
+  return table;
+}
+
 namespace {
 bool positioned(const Light& l) {
   return has_position(l.type);
@@ -307,8 +336,12 @@ const FieldTable<Scene>& scene_fields() {
   return table;
 }
 
+bool operator==(const PhysicalReference& a, const PhysicalReference& b) {
+  return same_fields(reference_fields(), a, b);
+}
+
 bool operator==(const Material& a, const Material& b) {
-  return same_fields(material_fields(), a, b) && a.preset == b.preset;
+  return same_fields(material_fields(), a, b) && a.preset == b.preset && a.reference == b.reference;
 }
 
 bool operator==(const Light& a, const Light& b) {

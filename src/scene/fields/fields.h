@@ -6,12 +6,15 @@
 #include "scene/fields/field.h"
 #include "scene/light.h"
 #include "scene/material.h"
+#include "scene/physical_reference.h"
 #include "scene/render_settings.h"
 #include "scene/scene.h"
 
 namespace gloss {
 
 const FieldTable<Material>& material_fields();
+// A material's physical reference (its optional `reference` block).
+const FieldTable<PhysicalReference>& reference_fields();
 const FieldTable<Light>& light_fields();
 const FieldTable<RenderSettings>& render_fields();
 const FieldTable<Camera>& camera_fields();

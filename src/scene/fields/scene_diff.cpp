@@ -88,7 +88,9 @@ SceneDiff diff_scenes(const Scene& before, const Scene& after) {
   } else {
     for (std::size_t m = 0; m < before.materials.size(); ++m) {
       diff_fields(material_fields(), before.materials[m], after.materials[m], diff);
-      diff.any = diff.any || before.materials[m].preset != after.materials[m].preset;
+      // The reference changes no Phong pixel (ChangeClass::none) but is part of the document.
+      diff.any = diff.any || before.materials[m].preset != after.materials[m].preset ||
+                 before.materials[m].reference != after.materials[m].reference;
       // An opacity map cuts the geometry: what rays hit changes (engine/trace/cut_outs.h).
       if (before.materials[m].map(MapSlot::opacity) != after.materials[m].map(MapSlot::opacity)) {
         diff.change = ChangeClass::full;

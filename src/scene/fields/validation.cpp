@@ -200,6 +200,9 @@ void validate_scene(const Scene& scene, SampleMemory samples) {
 void validate_material(const std::string& file, const std::string& field,
                        const Material& material) {
   check_fields(file, field, material_fields(), material);
+  if (material.reference) {
+    check_fields(file, child_path(field, "reference"), reference_fields(), *material.reference);
+  }
 }
 
 }  // namespace gloss

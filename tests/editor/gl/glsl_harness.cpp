@@ -138,7 +138,8 @@ namespace {
 std::vector<std::vector<float>> render_hits(const Scene& scene,
                                             const std::vector<std::vector<float>>& hits,
                                             const std::function<std::string(int)>& fragment,
-                                            std::string& log) {
+                                            std::string& log,
+                                            const std::function<void(GLuint)>& setup = {}) {
   const int w = scene.render.width, h = scene.render.height;
 
   // One program per material in use.
@@ -202,6 +203,7 @@ std::vector<std::vector<float>> render_hits(const Scene& scene,
     const GLuint program = programs.at(scene.objects[i].material);
     glUseProgram(program);
     glUniform3f(glGetUniformLocation(program, "gloss_eye"), eye.x, eye.y, eye.z);
+    if (setup) setup(program);
     glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(hits[i].size() / 8));
   }
 
@@ -231,8 +233,9 @@ std::vector<std::vector<float>> render_hits(const Scene& scene,
 
 std::vector<std::vector<float>> render_exported(const Scene& scene,
                                                 const std::function<std::string(int)>& fragment,
-                                                std::string& log) {
-  return render_hits(scene, host_hits(scene), fragment, log);
+                                                std::string& log,
+                                                const std::function<void(GLuint)>& setup) {
+  return render_hits(scene, host_hits(scene), fragment, log, setup);
 }
 
 Agreement compare_with_reference(const Scene& scene,

@@ -31,9 +31,11 @@ std::vector<std::vector<float>> host_hits(const Scene& scene);
 // Draws each object's hits with the program made of fragment(material of the object); returns
 // the five images as RGBA floats, rows top to bottom, misses at the background (total) and 0.
 // Empty, with the compiler's messages in log, when a program does not build.
+// setup(program), when given, runs with each program in use before it draws (samplers).
 std::vector<std::vector<float>> render_exported(const Scene& scene,
                                                 const std::function<std::string(int)>& fragment,
-                                                std::string& log);
+                                                std::string& log,
+                                                const std::function<void(GLuint)>& setup = {});
 
 // How the five GL images agree with render_reference<double>(scene) at 1 spp.
 struct Agreement {

@@ -32,6 +32,12 @@ std::vector<Case> all_cases() {
   Material loaded;
   loaded.diffuse = {0.3f, 0.3f, 0.3f};
   loaded.shininess = 7.0f;
+  PhysicalReference gold;
+  gold.roughness = 0.2f;
+  Material fitted = test::two_sphere_scene().materials[0];
+  fitted.specular = {200.0f, 150.0f, 70.0f};
+  fitted.shininess = 700.0f;
+  fitted.reference = gold;
   return {
       {"material colour", test::set_material(1, "diffuse", {0.9f, 0.8f, 0.7f}),
        [](const Scene& s) { EXPECT_EQ(s.materials[1].diffuse, glm::vec3(0.9f, 0.8f, 0.7f)); }},
@@ -88,6 +94,20 @@ std::vector<Case> all_cases() {
        }},
       {"target spp", test::set_render("spp", 16),
        [](const Scene& s) { EXPECT_EQ(s.render.spp, 16); }},
+      {"physical reference", SetReference{1, gold},
+       [](const Scene& s) {
+         ASSERT_TRUE(s.materials[1].reference.has_value());
+         EXPECT_EQ(s.materials[1].reference->roughness, 0.2f);
+         EXPECT_FALSE(s.materials[0].reference.has_value());
+       }},
+      {"a fit and the model switch in one step",
+       ApplyFit{0, fitted, ShadingModel::blinn_phong, "fit Blinn-Phong to gold r 0.2"},
+       [](const Scene& s) {
+         EXPECT_EQ(s.materials[0].shininess, 700.0f);
+         EXPECT_EQ(s.materials[0].specular, glm::vec3(200.0f, 150.0f, 70.0f));
+         EXPECT_EQ(s.render.model, ShadingModel::blinn_phong);
+         EXPECT_EQ(s.materials[1].shininess, 10.0f);  // other materials untouched
+       }},
       {"open scene", ReplaceScene{opened, "open"},
        [](const Scene& s) { EXPECT_EQ(s.objects.size(), 1u); }},
   };
@@ -109,6 +129,31 @@ TEST(CommandsUndo, EveryCommandUndoesExactlyAndRedoes) {
     ASSERT_TRUE(layer.redo());
     EXPECT_EQ(scene_to_json_text(layer.scene()), after);
   }
+}
+
+// A reference's fields are set through the field table like any other part, once it has one.
+TEST(CommandsUndo, ReferenceFieldsNeedAReference) {
+  CommandLayer layer(test::two_sphere_scene());
+  FieldValue rough;
+  rough.x = 0.5;
+  try {
+    layer.execute(SetField{FieldPart::reference, 0, "roughness", rough});
+    FAIL() << "no error";
+  } catch (const CommandError& e) {
+    EXPECT_NE(std::string(e.what()).find("has no physical reference"), std::string::npos)
+        << e.what();
+  }
+  ASSERT_TRUE(layer.execute(SetReference{0, PhysicalReference{}}));
+  layer.seal();
+  ASSERT_TRUE(layer.execute(SetField{FieldPart::reference, 0, "roughness", rough}));
+  layer.seal();
+  EXPECT_EQ(layer.scene().materials[0].reference->roughness, 0.5f);
+  EXPECT_THROW(layer.execute(SetField{FieldPart::reference, 0, "roughness", FieldValue{}}),
+               CommandError);  // roughness 0 is outside (0, 1]
+  ASSERT_TRUE(layer.undo());
+  EXPECT_EQ(layer.scene().materials[0].reference->roughness, 0.3f);
+  ASSERT_TRUE(layer.execute(SetReference{0, std::nullopt}));
+  EXPECT_FALSE(layer.scene().materials[0].reference.has_value());
 }
 
 TEST(CommandsUndo, AllCommandsInSequenceUndoBackToTheStart) {

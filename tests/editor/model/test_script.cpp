@@ -256,7 +256,7 @@ TEST(Script, BadRendererAndRasterValuesNameTheLine) {
   expect_error_on_line("shadow-bias -0.5\n", 1, "shadow-bias must be a finite number");
   expect_error_on_line("shadow-bias inf\n", 1, "shadow-bias must be a finite number");
   expect_error_on_line("shadow-bias nan\n", 1, "shadow-bias must be a finite number");
-  expect_error_on_line("view ab gl\n", 1, "'snapshot', 'cpu-gl' or 'pixel-vertex'");
+  expect_error_on_line("view ab gl\n", 1, "'snapshot', 'cpu-gl', 'pixel-vertex' or 'reference'");
 }
 
 TEST(Script, ParsesMouseGestures) {

@@ -1,6 +1,7 @@
 #include "editor/model/document/command.h"
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include "base/error.h"
@@ -25,6 +26,15 @@ Material& object_material(Scene& scene, int object) {
     throw CommandError("object " + std::to_string(object) + " has no valid material");
   }
   return scene.materials[material];
+}
+
+PhysicalReference& object_reference(Scene& scene, int object) {
+  Material& m = object_material(scene, object);
+  if (!m.reference) {
+    throw CommandError("object " + std::to_string(object) +
+                       "'s material has no physical reference (give it one first)");
+  }
+  return *m.reference;
 }
 
 PointLight& scene_light(Scene& scene, int light) {
@@ -88,6 +98,8 @@ void set_field(const SetField& c, Scene& scene) {
       return set_in(camera_fields(), c.part, scene.camera, c);
     case FieldPart::scene:
       return set_in(scene_fields(), c.part, scene, c);
+    case FieldPart::reference:
+      return set_in(reference_fields(), c.part, object_reference(scene, c.index), c);
   }
 }
 
@@ -111,6 +123,9 @@ std::string describe(const SetField& c) {
       return "camera " + describe(camera_fields(), c);
     case FieldPart::scene:
       return describe(scene_fields(), c);
+    case FieldPart::reference:
+      return "reference " + describe(reference_fields(), c) + " (object " +
+             std::to_string(c.index) + ")";
   }
   return c.key;
 }
@@ -134,6 +149,8 @@ bool continuous(const SetField& c) {
       return of(camera_fields());
     case FieldPart::scene:
       return of(scene_fields());
+    case FieldPart::reference:
+      return of(reference_fields());
   }
   return false;
 }
@@ -157,6 +174,17 @@ void set_tessellation(int level, Scene& scene) {
 
 }  // namespace
 
+std::string reference_text(const PhysicalReference& r) {
+  char text[96];
+  if (is_metal(r.kind)) {
+    std::snprintf(text, sizeof text, "%s r %g", to_string(r.kind), r.roughness);
+  } else {
+    std::snprintf(text, sizeof text, "dielectric %g %g %g r %g", r.base.x, r.base.y, r.base.z,
+                  r.roughness);
+  }
+  return text;
+}
+
 const char* to_string(FieldPart part) {
   switch (part) {
     case FieldPart::material:
@@ -169,6 +197,8 @@ const char* to_string(FieldPart part) {
       return "camera";
     case FieldPart::scene:
       return "scene";
+    case FieldPart::reference:
+      return "reference";
   }
   return "?";
 }
@@ -176,46 +206,52 @@ const char* to_string(FieldPart part) {
 void apply_command(const Command& command, Scene& scene) {
   // Work on a copy so a throw leaves the document as it was.
   Scene next = scene;
-  std::visit(Overloaded{
-                 [&](const SetField& c) { set_field(c, next); },
-                 [&](const ApplyPreset& c) {
-                   const Preset* preset = find_preset(c.name);
-                   if (preset == nullptr) {
-                     throw CommandError("unknown preset '" + c.name + "'" +
-                                        did_you_mean(nearest_preset_names(c.name, 1)));
-                   }
-                   // The preset's constants; the maps stay (docs/spec/shading.md, "Textures").
-                   Material& material = object_material(next, c.object);
-                   material = with_constants(material, preset->material);
-                 },
-                 [&](const SetMaterial& c) { object_material(next, c.object) = c.material; },
-                 [&](const SetModel& c) {
-                   if (c.keep_highlight_size) {
-                     for (Material& m : next.materials) {
-                       m.shininess = exponent_for_model(m.shininess, next.render.model, c.model);
-                     }
-                   }
-                   next.render.model = c.model;
-                 },
-                 [&](const AddLight& c) { next.lights.push_back(c.light); },
-                 [&](const RemoveLight& c) {
-                   scene_light(next, c.light);
-                   next.lights.erase(next.lights.begin() + c.light);
-                 },
-                 [&](const SetCamera& c) { next.camera = c.camera; },
-                 [&](const OrbitCamera& c) {
-                   if (!std::isfinite(c.yaw_deg) || !std::isfinite(c.pitch_deg)) {
-                     throw CommandError("orbit angles must be finite");
-                   }
-                   next.camera = orbit_camera(next.camera, c.yaw_deg, c.pitch_deg);
-                 },
-                 [&](const SetTessellation& c) { set_tessellation(c.level, next); },
-                 [&](const ReplaceScene& c) {
-                   if (!c.scene) throw CommandError("no scene to open");
-                   next = *c.scene;
-                 },
-             },
-             command);
+  std::visit(
+      Overloaded{
+          [&](const SetField& c) { set_field(c, next); },
+          [&](const ApplyPreset& c) {
+            const Preset* preset = find_preset(c.name);
+            if (preset == nullptr) {
+              throw CommandError("unknown preset '" + c.name + "'" +
+                                 did_you_mean(nearest_preset_names(c.name, 1)));
+            }
+            // The preset's constants; the maps stay (docs/spec/shading.md, "Textures").
+            Material& material = object_material(next, c.object);
+            material = with_constants(material, preset->material);
+          },
+          [&](const SetMaterial& c) { object_material(next, c.object) = c.material; },
+          [&](const SetModel& c) {
+            if (c.keep_highlight_size) {
+              for (Material& m : next.materials) {
+                m.shininess = exponent_for_model(m.shininess, next.render.model, c.model);
+              }
+            }
+            next.render.model = c.model;
+          },
+          [&](const AddLight& c) { next.lights.push_back(c.light); },
+          [&](const RemoveLight& c) {
+            scene_light(next, c.light);
+            next.lights.erase(next.lights.begin() + c.light);
+          },
+          [&](const SetCamera& c) { next.camera = c.camera; },
+          [&](const OrbitCamera& c) {
+            if (!std::isfinite(c.yaw_deg) || !std::isfinite(c.pitch_deg)) {
+              throw CommandError("orbit angles must be finite");
+            }
+            next.camera = orbit_camera(next.camera, c.yaw_deg, c.pitch_deg);
+          },
+          [&](const SetTessellation& c) { set_tessellation(c.level, next); },
+          [&](const ReplaceScene& c) {
+            if (!c.scene) throw CommandError("no scene to open");
+            next = *c.scene;
+          },
+          [&](const SetReference& c) { object_material(next, c.object).reference = c.reference; },
+          [&](const ApplyFit& c) {
+            object_material(next, c.object) = c.material;
+            if (c.model) next.render.model = *c.model;
+          },
+      },
+      command);
   try {
     validate_scene(next, SampleMemory::whole_image);  // the progressive renderer holds it all
   } catch (const InputError& e) {
@@ -251,23 +287,33 @@ std::string command_label(const Command& command) {
             return "set teapot tessellation to " + std::to_string(c.level);
           },
           [](const ReplaceScene& c) { return c.label; },
+          [](const SetReference& c) {
+            if (!c.reference) return "remove the reference of object " + std::to_string(c.object);
+            return "set the reference of object " + std::to_string(c.object) + " to " +
+                   reference_text(*c.reference);
+          },
+          [](const ApplyFit& c) { return c.label + " (object " + std::to_string(c.object) + ")"; },
       },
       command);
 }
 
 std::string merge_key(const Command& command) {
-  return std::visit(Overloaded{
-                        [](const SetField& c) {
-                          if (!continuous(c)) return std::string();
-                          return std::string(to_string(c.part)) + " " + std::to_string(c.index) +
-                                 " " + c.key;
-                        },
-                        [](const SetCamera&) { return std::string("camera"); },
-                        // A slider drag through the levels is one undo step.
-                        [](const SetTessellation&) { return std::string("tessellation"); },
-                        [](const auto&) { return std::string(); },
-                    },
-                    command);
+  return std::visit(
+      Overloaded{
+          [](const SetField& c) {
+            if (!continuous(c)) return std::string();
+            return std::string(to_string(c.part)) + " " + std::to_string(c.index) + " " + c.key;
+          },
+          [](const SetCamera&) { return std::string("camera"); },
+          // Dragging the panel's roughness or base colour is one undo step.
+          [](const SetReference& c) {
+            return c.reference ? "reference " + std::to_string(c.object) : std::string();
+          },
+          // A slider drag through the levels is one undo step.
+          [](const SetTessellation&) { return std::string("tessellation"); },
+          [](const auto&) { return std::string(); },
+      },
+      command);
 }
 
 }  // namespace gloss

@@ -20,11 +20,12 @@ class CommandError : public std::runtime_error {
 
 // The struct a field edit targets, and how SetField::index names it.
 enum class FieldPart {
-  material,  // the material object `index` uses (shared materials change on every user)
-  light,     // light `index`
-  render,    // the render settings
-  camera,    // the camera
-  scene,     // the scene's own fields: background, ambient
+  material,   // the material object `index` uses (shared materials change on every user)
+  light,      // light `index`
+  render,     // the render settings
+  camera,     // the camera
+  scene,      // the scene's own fields: background, ambient
+  reference,  // the physical reference of the material object `index` uses (it must have one)
 };
 const char* to_string(FieldPart part);
 
@@ -46,6 +47,21 @@ struct SetMaterial {
   int object = 0;
   Material material;
   std::string source;  // shown in the undo label, e.g. the material's name
+};
+// Gives the material object `object` uses a physical reference (docs/spec/physical-reference.md),
+// replaces it, or with none removes it.
+struct SetReference {
+  int object = 0;
+  std::optional<PhysicalReference> reference;
+};
+// A fit's result (editor/model/document/reference_fit.h) in one undo step: the material of
+// `object` replaced (its kd, ks and alpha fitted, the rest kept) and, when set, the scene's
+// shading model switched to the model the constants were fitted for (no exponent rescaled).
+struct ApplyFit {
+  int object = 0;
+  Material material;
+  std::optional<ShadingModel> model;
+  std::string label;  // "fit Phong to gold r 0.2"
 };
 // The model switch of the whole scene, optionally rescaling every exponent (document.h's rule).
 struct SetModel {
@@ -77,8 +93,9 @@ struct ReplaceScene {
   std::string label;
 };
 
-using Command = std::variant<SetField, ApplyPreset, SetMaterial, SetModel, AddLight, RemoveLight,
-                             SetCamera, OrbitCamera, SetTessellation, ReplaceScene>;
+using Command =
+    std::variant<SetField, ApplyPreset, SetMaterial, SetModel, AddLight, RemoveLight, SetCamera,
+                 OrbitCamera, SetTessellation, ReplaceScene, SetReference, ApplyFit>;
 
 // Applies command to scene and validates the result (scene/fields/validation.h, the document's one
 // validator). Throws CommandError naming the bad argument or field; scene is then unchanged.
@@ -95,6 +112,9 @@ std::optional<Command> field_command(FieldPart part, int index, const FieldTable
   }
   return std::nullopt;
 }
+
+// A reference as labels and scripts write it: "gold r 0.2", "dielectric 0.6 0.1 0.1 r 0.5".
+std::string reference_text(const PhysicalReference& reference);
 
 // What the Edit menu says: "Undo set diffuse of object 0".
 std::string command_label(const Command& command);

@@ -2,7 +2,7 @@
 // Screenshot and export files: what goes into them and names that never replace a file. The
 // viewport and term-sheet exports are rendered at the document's full resolution (scene.render),
 // so they do not depend on the window's size or preview quality: by the CPU renderer here, by
-// the raster path in the editor when it draws the viewport (editor/ui/app_actions.cpp).
+// the raster path in the editor when it draws the viewport (editor/ui/parts/exports.cpp).
 #include <ctime>
 #include <filesystem>
 #include <string>

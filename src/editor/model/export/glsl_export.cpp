@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <stdexcept>
 
 #include "base/atomic_file.h"
 #include "base/printable_text.h"
+#include "editor/model/export/environment_atlas.h"
+#include "io/image/image_io.h"
 #include "shading/light_source.h"
 
 namespace gloss {
@@ -54,9 +57,56 @@ float one_minus_cos(double degrees) {
   return static_cast<float>(2.0 * half * half);
 }
 
+// The environment's part of the shader: its constants and environment.glsl, or a line saying
+// there is none. atlas: the file the levels are written to, as the shader should name it.
+std::string environment_part(const Scene& scene, const std::string& atlas) {
+  if (!scene.environment.present()) {
+    return "// The scene has no environment light.\n#define GLOSS_ENVIRONMENT 0\n\n";
+  }
+  PrefilterSettings settings;
+  settings.texels_per_lobe = scene.render.env_resolution;
+  const EnvironmentAtlas packed =
+      make_environment_atlas(*prefiltered_environment(scene.environment.map, settings));
+  const double a = scene.environment.rotation * (3.14159265358979323846 / 180.0);
+  std::string s;
+  s += "// The scene's environment light (" + printable_text(scene.environment.file) +
+       "), its fast path: the map\n";
+  s += "// prefiltered for Phong lobes of alpha 0, 1, 2 ... 1024 and the map itself, packed in\n";
+  s += "// " + printable_text(atlas) + " beside this file (" + std::to_string(packed.image.width) +
+       " x " + std::to_string(packed.image.height) +
+       ", RGB float; PFM stores rows bottom to top: upload it with row 0\n";
+  s += "// the image's top row, GL_RGB32F, and bind it to gloss_env_atlas). No horizon, no\n";
+  s += "// shadows and, for Blinn-Phong, the Phong level of alpha / 4: docs/accuracy.md.\n";
+  s += "#define GLOSS_ENVIRONMENT 1\n";
+  s += "uniform sampler2D gloss_env_atlas;  // " + printable_text(atlas) + "\n";
+  s += "const ivec4 gloss_env_level[13] = ivec4[13](\n";
+  for (std::size_t k = 0; k < packed.levels.size(); ++k) {
+    const glm::ivec4& l = packed.levels[k];
+    s += "    ivec4(" + std::to_string(l.x) + ", " + std::to_string(l.y) + ", " +
+         std::to_string(l.z) + ", " + std::to_string(l.w) + ")" +
+         (k + 1 < packed.levels.size() ? "," : " ") +
+         (k + 1 < packed.levels.size() ? "  // level " + std::to_string(k) : "  // the map") + "\n";
+  }
+  s += ");\n";
+  s += "const vec2 gloss_env_rotation = vec2(" + literal(static_cast<float>(std::cos(a))) + ", " +
+       literal(static_cast<float>(std::sin(a))) + ");  // environment.rotation " +
+       literal(scene.environment.rotation) + " degrees\n";
+  s += "const float gloss_env_intensity = " + literal(scene.environment.intensity) +
+       ";  // environment.intensity\n";
+  s += "// ---- shaders/environment.glsl ----\n";
+  s += kEnvironmentGlsl;
+  s += "// ---- end of shaders/environment.glsl ----\n\n";
+  return s;
+}
+
 }  // namespace
 
-std::string export_glsl(const Scene& scene, int material) {
+std::string environment_atlas_name(const std::string& shader_path) {
+  const std::filesystem::path p(shader_path);
+  return p.stem().string() + "-environment.pfm";
+}
+
+std::string export_glsl(const Scene& scene, int material, const std::string& atlas) {
   if (material < 0 || material >= static_cast<int>(scene.materials.size())) {
     throw std::out_of_range("no material " + std::to_string(material));
   }
@@ -142,6 +192,7 @@ std::string export_glsl(const Scene& scene, int material) {
              "// test: replace the body with your shadow-map lookup.\n"
            : "// The scene has shadows off (render.shadows).\n";
   s += "float gloss_visibility(int light, vec3 p, vec3 n_g) {\n  return 1.0;\n}\n\n";
+  s += environment_part(scene, atlas);
   s += "// ---- shaders/phong_contract.glsl ----\n";
   s += kPhongContractGlsl;
   s += "// ---- end of shaders/phong_contract.glsl ----\n\n";
@@ -158,7 +209,15 @@ std::string export_glsl(const Scene& scene, int material) {
 }
 
 void write_glsl_export(const std::string& path, const Scene& scene, int material) {
-  write_text_atomically(path, export_glsl(scene, material));
+  const std::string atlas = environment_atlas_name(path);
+  if (scene.environment.present()) {
+    PrefilterSettings settings;
+    settings.texels_per_lobe = scene.render.env_resolution;
+    write_pfm(
+        (std::filesystem::path(path).parent_path() / atlas).string(),
+        make_environment_atlas(*prefiltered_environment(scene.environment.map, settings)).image);
+  }
+  write_text_atomically(path, export_glsl(scene, material, atlas));
 }
 
 }  // namespace gloss

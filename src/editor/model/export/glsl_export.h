@@ -15,15 +15,23 @@ namespace gloss {
 
 // The fragment shader text for scene.materials[material] (GLSL 3.30 core; the header says the
 // one line to change for GLSL ES 3.00 / WebGL 2). Throws std::out_of_range for a bad index.
-std::string export_glsl(const Scene& scene, int material);
+// With an environment, the shader carries its fast path (shaders/environment.glsl) and reads
+// the prefiltered levels from a sampler the host fills from the file `atlas`.
+std::string export_glsl(const Scene& scene, int material,
+                        const std::string& atlas = "environment.pfm");
 
-// Writes export_glsl(scene, material) to path atomically (base/atomic_file.h); throws
-// RuntimeFailure when the file cannot be written.
+// The atlas file written beside a shader exported to shader_path: STEM-environment.pfm.
+std::string environment_atlas_name(const std::string& shader_path);
+
+// Writes export_glsl(scene, material) to path atomically (base/atomic_file.h) and, with an
+// environment, its levels to environment_atlas_name(path) beside it (PFM, linear float); throws
+// RuntimeFailure when a file cannot be written.
 void write_glsl_export(const std::string& path, const Scene& scene, int material);
 
-// The contract source, shaders/phong_contract.glsl, and its maps, shaders/texture_lookup.glsl,
-// embedded at build time.
+// The contract source, shaders/phong_contract.glsl, the environment's fast path,
+// shaders/environment.glsl, and the maps, shaders/texture_lookup.glsl, embedded at build time.
 extern const char* const kPhongContractGlsl;
+extern const char* const kEnvironmentGlsl;
 extern const char* const kTextureLookupGlsl;
 
 }  // namespace gloss

@@ -40,6 +40,20 @@ std::string pixel_report(const PixelBreakdown& b) {
   add_rgb(out, "ambient", b.ambient);
   add_rgb(out, "diffuse", b.diffuse);
   add_rgb(out, "specular", b.specular);
+  if (b.environment.present) {
+    // Exact integrals with their error bounds (shadows off) or estimates with their standard
+    // errors (shadows on: then also the terms without shadows and the visible share).
+    const EnvironmentBreakdown& e = b.environment;
+    add_rgb(out, "environment.diffuse", e.diffuse);
+    add_rgb(out, "environment.diffuse_error", e.diffuse_error);
+    add_rgb(out, "environment.specular", e.specular);
+    add_rgb(out, "environment.specular_error", e.specular_error);
+    if (e.estimated) {
+      add_rgb(out, "environment.unshadowed_diffuse", e.unshadowed_diffuse);
+      add_rgb(out, "environment.unshadowed_specular", e.unshadowed_specular);
+    }
+    add_value(out, "environment.visibility", e.visibility);
+  }
   for (std::size_t i = 0; i < b.lights.size(); ++i) {
     const LightBreakdown& l = b.lights[i];
     const std::string prefix = "light" + std::to_string(i) + ".";

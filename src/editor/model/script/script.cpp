@@ -6,66 +6,11 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "editor/model/script/script_tokens.h"
 
 namespace gloss {
 
 namespace {
-
-// Tokens of one line and the parsing helpers that turn them into values, throwing plain
-// messages that parse_script turns into InputErrors with the line number.
-struct Tokens {
-  std::vector<std::string> words;
-  std::size_t next = 1;  // words[0] is the command
-
-  bool done() const { return next >= words.size(); }
-  const std::string& word(const char* what) {
-    if (done()) throw std::runtime_error(std::string("missing ") + what);
-    return words[next++];
-  }
-  float number(const char* what) {
-    const std::string& w = word(what);
-    char* end = nullptr;
-    const float value = std::strtof(w.c_str(), &end);
-    if (end == w.c_str() || *end != '\0') {
-      throw std::runtime_error(std::string("expected a number for ") + what + ", got '" + w + "'");
-    }
-    return value;
-  }
-  double whole(const char* what) {
-    const std::string& w = word(what);
-    char* end = nullptr;
-    const double value = std::strtod(w.c_str(), &end);
-    if (end == w.c_str() || *end != '\0' || value != std::floor(value)) {
-      throw std::runtime_error(std::string("expected a whole number for ") + what + ", got '" + w +
-                               "'");
-    }
-    return value;
-  }
-  int index(const char* what) {
-    const std::string& w = word(what);
-    char* end = nullptr;
-    const long value = std::strtol(w.c_str(), &end, 10);
-    if (end == w.c_str() || *end != '\0' || value < 0 || value > 1000000) {
-      throw std::runtime_error(std::string("expected an index for ") + what + ", got '" + w + "'");
-    }
-    return static_cast<int>(value);
-  }
-  glm::vec3 vec3(const char* what) {
-    const float x = number(what);
-    const float y = number(what);
-    const float z = number(what);
-    return {x, y, z};
-  }
-  bool on_off(const char* what) {
-    const std::string& w = word(what);
-    if (w == "on") return true;
-    if (w == "off") return false;
-    throw std::runtime_error(std::string(what) + " must be on or off, got '" + w + "'");
-  }
-  void end() {
-    if (!done()) throw std::runtime_error("unexpected '" + words[next] + "'");
-  }
-};
 
 // `quality raster PATH [WIDTH HEIGHT [REFERENCE_SPP]]` (issue 12: the raster path's rows).
 QualityAction parse_quality_raster(Tokens& t) {
@@ -237,9 +182,12 @@ bool parse_view_extra(Tokens& t, const std::string& mode, ScriptAction& out) {
         v.ab_source = AbSource::cpu_gl;
       } else if (source == "pixel-vertex") {
         v.ab_source = AbSource::pixel_vertex;
+      } else if (source == "reference") {
+        v.ab_source = AbSource::reference;
       } else {
         throw std::runtime_error(
-            "view ab takes nothing, 'snapshot', 'cpu-gl' or 'pixel-vertex', got '" + source + "'");
+            "view ab takes nothing, 'snapshot', 'cpu-gl', 'pixel-vertex' or 'reference', got '" +
+            source + "'");
       }
     }
     out = v;
@@ -248,13 +196,24 @@ bool parse_view_extra(Tokens& t, const std::string& mode, ScriptAction& out) {
   return false;
 }
 
-// `view lobe ELEVATION_DEG` and `inspect X Y` (the lobe view and the pixel inspector).
+// `view lobe [ELEVATION_DEG] [log|linear]` and `inspect X Y` (the lobe view and the pixel
+// inspector).
 ScriptAction parse_lobe_elevation(Tokens& t, ViewAction v) {
-  const float degrees = t.number("light elevation in degrees");
-  if (!(degrees >= 0.0f && degrees <= 90.0f)) {
-    throw std::runtime_error("the light elevation must be 0..90 degrees");
+  const std::string& first = t.words[t.next];
+  if (first != "log" && first != "linear") {
+    const float degrees = t.number("light elevation in degrees");
+    if (!(degrees >= 0.0f && degrees <= 90.0f)) {
+      throw std::runtime_error("the light elevation must be 0..90 degrees");
+    }
+    v.lobe_elevation_deg = degrees;
   }
-  v.lobe_elevation_deg = degrees;
+  if (!t.done()) {
+    const std::string& radius = t.word("radius scale");
+    if (radius != "log" && radius != "linear") {
+      throw std::runtime_error("the lobe's radius is log or linear, got '" + radius + "'");
+    }
+    v.lobe_log_radius = radius == "log" ? 1 : 0;
+  }
   return v;
 }
 
@@ -410,14 +369,16 @@ ScriptAction parse_line(Tokens& t) {
       if (!parse_term_view(term, v.term)) throw std::runtime_error("unknown term '" + term + "'");
     } else if (!parse_view_mode(mode, v.mode) || v.mode == ViewMode::single) {
       throw std::runtime_error(
-          "view must be render, terms, ab, lobe, 'term NAME', 'ab snapshot|cpu-gl|pixel-vertex' "
-          "or 'clipped on|off', got '" +
+          "view must be render, terms, ab, lobe, 'term NAME', "
+          "'ab snapshot|cpu-gl|pixel-vertex|reference' or 'clipped on|off', got '" +
           mode + "'");
     }
     if (v.mode == ViewMode::lobe && !t.done()) return parse_lobe_elevation(t, v);
     return v;
   }
   if (verb == "inspect") return parse_inspect(t);
+  if (verb == "reference") return parse_reference(t);
+  if (verb == "fit") return parse_fit(t);
   if (verb == "exposure") return ExposureAction{t.number("stops")};
   if (verb == "select") return SelectAction{t.index("object index")};
   if (verb == "stats") return StatsAction{};

@@ -3,12 +3,14 @@
 // through the command layer. '#' starts a comment; blank lines are skipped. The line grammar is in
 // docs/editor.md. Document lines become Commands; the rest (wait, screenshot, view, quit ...) are
 // actions the editor's frame loop or the headless runner carry out.
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
 #include "editor/model/document/command.h"
 #include "editor/model/view/view_settings.h"
+#include "physical/lobe_metrics.h"
 
 namespace gloss {
 
@@ -24,9 +26,11 @@ struct ScreenshotAction {
 struct ViewAction {
   ViewMode mode = ViewMode::render;
   TermView term = TermView::total;  // for ViewMode::single
-  // for ViewMode::ab: `view ab`, `view ab snapshot`, `view ab cpu-gl`, `view ab pixel-vertex`
+  // for ViewMode::ab: `view ab`, `view ab snapshot`, `view ab cpu-gl`, `view ab pixel-vertex`,
+  // `view ab reference`
   AbSource ab_source = AbSource::models;
   float lobe_elevation_deg = -1.0f;  // for ViewMode::lobe: 0..90, or -1 to keep the current one
+  int lobe_log_radius = -1;          // for ViewMode::lobe: 1 `log`, 0 `linear`, -1 keep
 };
 // ---- Exposure and snapshot comparison (issue 13, items 3 and 4) ----
 // `view clipped on|off`: the clipped-pixel overlay.
@@ -84,6 +88,19 @@ struct ExportGlslAction {
   int object = -1;  // -1: the host's selected object
 };
 
+// ---- The physical reference (issue 23) ----
+// `reference METAL ROUGHNESS`, `reference dielectric R G B ROUGHNESS`, `reference none`: gives
+// the selected object's material a physical reference (or removes it), one undo step.
+struct ReferenceAction {
+  std::optional<PhysicalReference> reference;
+};
+// `fit phong|blinn-phong [l2|lightness]`: the selected object's material fitted to its reference
+// (editor/model/document/reference_fit.h), one undo step; prints the constants and residuals.
+struct FitAction {
+  ShadingModel model = ShadingModel::phong;
+  LobeMetric metric = LobeMetric::l2;
+};
+
 // `renderer cpu|gl|auto`: which renderer draws the viewport (raster_settings.h).
 struct RendererAction {
   RendererChoice choice = RendererChoice::cpu;
@@ -118,7 +135,7 @@ using ScriptAction =
                  ExposureAction, SelectAction, StatsAction, SleepAction, AnimateAction, QuitAction,
                  QualityAction, InspectAction, ClippedOverlayAction, SnapshotAction, MemoryAction,
                  ExportGlslAction, RendererAction, ShadingAction, ShadowMapAction, ShadowBiasAction,
-                 MouseAction>;
+                 MouseAction, ReferenceAction, FitAction>;
 
 struct ScriptLine {
   int line = 0;  // 1-based line number in the file

@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "base/overloaded.h"
+#include "editor/model/document/reference_fit.h"
 #include "editor/model/export/glsl_export.h"
 #include "editor/model/measure/memory_report.h"
 #include "editor/model/measure/pixel_report.h"
@@ -56,6 +57,25 @@ LineResult export_glsl_line(ScriptHost& host, const ExportGlslAction& a, const s
   return LineResult::go_on();
 }
 
+// `reference ...` and `fit ...` (issue 23): commands on the selected object, the fit's report
+// printed on stdout.
+LineResult reference_line(ScriptHost& host, const ReferenceAction& a) {
+  host.layer().execute(SetReference{host.selected_object(), a.reference});
+  host.layer().seal();
+  return LineResult::go_on();
+}
+
+LineResult fit_line(ScriptHost& host, const FitAction& a) {
+  const ReferenceFit fit =
+      fit_to_reference(host.layer().scene(), host.selected_object(), a.model, a.metric);
+  host.layer().execute(fit.command);
+  host.layer().seal();
+  for (const std::string& line : fit_report_lines(fit.report))
+    std::printf("fit: %s\n", line.c_str());
+  std::fflush(stdout);
+  return LineResult::go_on();
+}
+
 }  // namespace
 
 Snapshot take_snapshot(const CommandLayer& layer, const std::optional<Snapshot>& previous) {
@@ -96,6 +116,7 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
               if (a.lobe_elevation_deg >= 0.0f) {
                 host.view().lobe_elevation_deg = a.lobe_elevation_deg;
               }
+              if (a.lobe_log_radius >= 0) host.view().lobe_log_radius = a.lobe_log_radius == 1;
               return LineResult::go_on();
             },
             [&](const ExposureAction& a) {
@@ -132,6 +153,8 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
             [&](const MemoryAction&) { return host.memory(); },
             [&](const MouseAction& a) { return host.mouse(a); },
             [&](const ExportGlslAction& a) { return export_glsl_line(host, a, where); },
+            [&](const ReferenceAction& a) { return reference_line(host, a); },
+            [&](const FitAction& a) { return fit_line(host, a); },
             [&](const RendererAction& a) {
               host.view().renderer = a.choice;
               return LineResult::go_on();

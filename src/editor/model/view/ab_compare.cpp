@@ -13,6 +13,8 @@ AbSides ab_sides(AbSource source, bool raster, ShadingFrequency shading) {
       return {{false, shading}, {true, shading}};
     case AbSource::pixel_vertex:
       return {{true, ShadingFrequency::pixel}, {true, ShadingFrequency::vertex}};
+    case AbSource::reference:
+      return {{false, shading, false}, {false, shading, true}};
   }
   return {};
 }
@@ -29,6 +31,11 @@ AbScenes ab_scenes(const Scene& document, AbSource source, const Snapshot* snaps
     }
     case AbSource::pixel_vertex:
       return {document, document};
+    case AbSource::reference: {
+      AbScenes pair{document, document};
+      pair.a.render.spp = pair.b.render.spp = 1;
+      return pair;
+    }
     case AbSource::models:
       break;
   }
@@ -44,6 +51,8 @@ std::string ab_label_a(AbSource source, const Snapshot* snapshot) {
       return "A: ray traced, 1 spp";
     case AbSource::pixel_vertex:
       return "A: raster, per pixel";
+    case AbSource::reference:
+      return "A: material, 1 spp";
     case AbSource::models:
       break;
   }
@@ -59,6 +68,8 @@ std::string ab_label_b(AbSource source, bool keep_highlight_size, ShadingFrequen
                                                 : "B: raster (GLSL), per vertex";
     case AbSource::pixel_vertex:
       return "B: raster, per vertex (Gouraud)";
+    case AbSource::reference:
+      return "B: physical reference (GGX), 1 spp";
     case AbSource::models:
       break;
   }

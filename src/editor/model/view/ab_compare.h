@@ -2,7 +2,9 @@
 // What the A/B view compares: the document as Phong against Blinn-Phong (the exponent rule of
 // document.h applied when keep_highlight_size), a snapshot of an earlier document against the
 // live one (before/after an edit, two presets), the ray tracer against the raster path on the
-// same document (cpu_gl), or the raster path per pixel against per vertex (pixel_vertex). Both
+// same document (cpu_gl), the raster path per pixel against per vertex (pixel_vertex), or the
+// material against its physical reference (reference: B renders the materials that carry one by
+// the reference path's physical option, docs/spec/physical-reference.md). Both
 // sides are rendered at the same size and shown with the same heat map (heat_map.h) and scale;
 // ab_sides says which renderer draws each.
 #include <cstdint>
@@ -26,12 +28,16 @@ struct AbScenes {
   Scene a, b;
 };
 
-// The renderer of one side: the ray tracer (progressive, the document's spp) or the raster path
-// at the given shading frequency (one sample per pixel).
+// The renderer of one side: the ray tracer (progressive, the document's spp), the raster path
+// at the given shading frequency (one sample per pixel), or the physical reference (the
+// reference path in double with ReferenceOptions::physical, one sample per pixel).
 struct AbSide {
   bool raster = false;
   ShadingFrequency shading = ShadingFrequency::pixel;
-  bool operator==(const AbSide& o) const { return raster == o.raster && shading == o.shading; }
+  bool physical = false;
+  bool operator==(const AbSide& o) const {
+    return raster == o.raster && shading == o.shading && physical == o.physical;
+  }
 };
 struct AbSides {
   AbSide a, b;
@@ -39,12 +45,14 @@ struct AbSides {
 
 // models and snapshot: both sides on the viewport's renderer (raster: whether the raster path
 // draws the viewport now, shading its frequency). cpu_gl: A the ray tracer, B the raster path at
-// shading. pixel_vertex: A raster per pixel, B raster per vertex.
+// shading. pixel_vertex: A raster per pixel, B raster per vertex. reference: A the ray tracer,
+// B the physical reference.
 AbSides ab_sides(AbSource source, bool raster, ShadingFrequency shading);
 
 // The two documents the A/B view renders for source. cpu_gl: A is the document at 1 spp (the
 // pixel centre, where the raster path samples too), B the document. pixel_vertex: the document
-// twice. A null snapshot with AbSource::snapshot compares the document with itself.
+// twice. reference: the document twice at 1 spp (the reference side renders pixel centres).
+// A null snapshot with AbSource::snapshot compares the document with itself.
 AbScenes ab_scenes(const Scene& document, AbSource source, const Snapshot* snapshot,
                    bool keep_highlight_size);
 

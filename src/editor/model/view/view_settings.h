@@ -25,7 +25,9 @@ bool parse_term_view(const std::string& name, TermView& term);
 // What the A/B view compares (ab_compare.h): the document as Phong | Blinn-Phong, the snapshot
 // taken with Snapshot | the live document, the ray tracer at 1 spp | the raster path (cpu_gl), or
 // the raster path per pixel | per vertex (pixel_vertex).
-enum class AbSource { models, snapshot, cpu_gl, pixel_vertex };
+// reference: the material (Phong or Blinn-Phong, as the scene) against its physical reference
+// (docs/spec/physical-reference.md), both at 1 spp.
+enum class AbSource { models, snapshot, cpu_gl, pixel_vertex, reference };
 
 enum class ScreenshotKind { viewport, terms, window };
 const char* to_string(ScreenshotKind kind);
@@ -58,6 +60,9 @@ struct ViewSettings {
   // The lobe view (ViewMode::lobe).
   float lobe_elevation_deg = 45.0f;  // light above the surface, degrees, 0..90
   LobeEnergy lobe_energy = LobeEnergy::scene;
+  // The plot's radius on a logarithmic scale (three decades below the largest value), so a
+  // physical reference's bright peak and a Phong lobe of ks <= 1 read in one plot.
+  bool lobe_log_radius = false;
 
   // The pixel inspector: a pixel of the document's render size, read at its centre.
   bool show_inspector = false;

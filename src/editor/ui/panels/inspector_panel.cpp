@@ -8,8 +8,11 @@
 
 #include <imgui.h>
 
+#include "editor/model/document/command_layer.h"
 #include "editor/model/document/document.h"
-#include "editor/ui/app.h"
+#include "editor/ui/panels/panel_state.h"
+#include "editor/ui/panels/panels.h"
+#include "editor/ui/viewport/viewport.h"
 
 namespace gloss {
 
@@ -18,25 +21,26 @@ namespace {
 // The inspectors for the document as the viewport shows it: rebuilt when the document, the A/B
 // split or its exponent rule changed (an Embree scene build each time, so only while the window
 // is open).
-void refresh(App& app) {
-  InspectorState& state = app.inspector;
-  const bool ab = app.view.mode == ViewMode::ab;
-  const bool keep = app.view.keep_highlight_size;
-  const AbSource source = app.view.ab_source;
-  const std::uint64_t snapshot = app.snapshot ? app.snapshot->revision + 1 : 0;
-  if (state.a && state.revision == app.commands.revision() && state.ab == ab &&
-      state.keep == keep && state.source == source && state.snapshot == snapshot) {
+void refresh(InspectorState& state, const ViewSettings& view, const CommandLayer& document,
+             const std::optional<Snapshot>& taken) {
+  const bool ab = view.mode == ViewMode::ab;
+  const bool keep = view.keep_highlight_size;
+  const AbSource source = view.ab_source;
+  const std::uint64_t snapshot = taken ? taken->revision + 1 : 0;
+  if (state.a && state.revision == document.revision() && state.ab == ab && state.keep == keep &&
+      state.source == source && state.snapshot == snapshot) {
     return;
   }
-  const Scene& scene = app.commands.scene();
+  const Scene& scene = document.scene();
   state.a.reset();
   state.b.reset();
   try {
     if (ab) {
       // The same two documents the viewport's A/B renders (ab_compare.h).
-      const AbScenes pair = ab_scenes(scene, source, app.snapshot ? &*app.snapshot : nullptr, keep);
+      const AbScenes pair = ab_scenes(scene, source, taken ? &*taken : nullptr, keep);
       state.a = std::make_unique<PixelInspector>(pair.a);
-      state.b = std::make_unique<PixelInspector>(pair.b);
+      // The material | reference view's B side is not the Phong contract: not inspected.
+      if (source != AbSource::reference) state.b = std::make_unique<PixelInspector>(pair.b);
     } else {
       state.a = std::make_unique<PixelInspector>(scene);
     }
@@ -44,7 +48,7 @@ void refresh(App& app) {
   } catch (const std::exception& e) {
     state.error = e.what();
   }
-  state.revision = app.commands.revision();
+  state.revision = document.revision();
   state.ab = ab;
   state.keep = keep;
   state.source = source;
@@ -147,8 +151,9 @@ void draw_table(const PixelBreakdown& a, const PixelBreakdown* b, const std::str
 
 }  // namespace
 
-void draw_inspector(App& app, ImVec2 viewport_pos, ImVec2 viewport_size) {
-  ViewSettings& view = app.view;
+void draw_inspector(InspectorState& state, ViewSettings& view, const CommandLayer& document,
+                    const std::optional<Snapshot>& snapshot, const Viewport& viewport,
+                    ImVec2 viewport_pos, ImVec2 viewport_size) {
   if (!view.show_inspector) return;
   // First shown in the viewport's lower right corner (over the floor of most scenes, the legend
   // of the A/B view); it can be moved.
@@ -166,12 +171,11 @@ void draw_inspector(App& app, ImVec2 viewport_pos, ImVec2 viewport_size) {
   if (at.x + extent.x > right && extent.x < viewport_size.x) {
     ImGui::SetWindowPos(ImVec2(right - extent.x, at.y));
   }
-  const Scene& scene = app.commands.scene();
-  const InspectorState& state = app.inspector;
+  const Scene& scene = document.scene();
   int x = view.inspect_x, y = view.inspect_y;
   if (!view.inspect_pinned) {
-    x = state.hover_x;
-    y = state.hover_y;
+    x = viewport.hover_x();
+    y = viewport.hover_y();
   }
   if (view.inspect_pinned) {
     ImGui::Text("pixel %d, %d of %d x %d  (pinned)", x, y, scene.render.width, scene.render.height);
@@ -187,7 +191,7 @@ void draw_inspector(App& app, ImVec2 viewport_pos, ImVec2 viewport_size) {
     ImGui::End();
     return;
   }
-  refresh(app);
+  refresh(state, view, document, snapshot);
   if (!state.error.empty() || !state.a) {
     ImGui::TextWrapped("cannot read this scene: %s", state.error.c_str());
     ImGui::End();
@@ -199,11 +203,13 @@ void draw_inspector(App& app, ImVec2 viewport_pos, ImVec2 viewport_size) {
     const PixelBreakdown b = state.b->inspect(x, y);
     const glm::dvec3 d = glm::abs(a.total - b.total);
     ImGui::Text("|A - B| of the total: %.5g (largest channel)", std::max({d.x, d.y, d.z}));
-    const std::string labels[2] = {
-        ab_label_a(app.view.ab_source, app.snapshot ? &*app.snapshot : nullptr),
-        ab_label_b(app.view.ab_source, app.view.keep_highlight_size)};
+    const std::string labels[2] = {ab_label_a(view.ab_source, snapshot ? &*snapshot : nullptr),
+                                   ab_label_b(view.ab_source, view.keep_highlight_size)};
     draw_table(a, &b, labels);
   } else {
+    if (view.mode == ViewMode::ab && view.ab_source == AbSource::reference) {
+      ImGui::TextDisabled("A, the material; B is the physical reference (not a Phong reading)");
+    }
     draw_table(a, nullptr, nullptr);
   }
   ImGui::End();

@@ -8,9 +8,13 @@
 #include <imgui.h>
 
 #include "editor/model/document/preset_status.h"
-#include "editor/ui/app.h"
 #include "editor/ui/panels/field_widgets.h"
+#include "editor/ui/panels/panel_state.h"
 #include "editor/ui/panels/panel_widgets.h"
+#include "editor/ui/panels/panels.h"
+#include "editor/ui/parts/commands.h"
+#include "editor/ui/parts/material_library.h"
+#include "editor/ui/parts/selection.h"
 #include "io/material/preset_table.h"
 
 namespace gloss {
@@ -20,7 +24,8 @@ namespace {
 // The preset swatches with their names: a table of small swatches, each with its name beside
 // it ("black plastic"), clipped to the column; the current preset is outlined, and a tweaked one
 // is named "(modified)" in the heading above.
-void draw_presets(App& app, int object, const Material& material) {
+void draw_presets(Commands& commands, const Swatches& swatches, int object,
+                  const Material& material) {
   const std::vector<Preset>& presets = preset_table();
   const float icon = ImGui::GetTextLineHeight() + 4.0f;
   const int columns = std::clamp(static_cast<int>(ImGui::GetContentRegionAvail().x / 118.0f), 1, 4);
@@ -36,7 +41,7 @@ void draw_presets(App& app, int object, const Material& material) {
     const bool clicked = ImGui::Selectable("##preset", current, 0, ImVec2(0.0f, icon));
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", presets[i].name.c_str());
     ImDrawList* list = ImGui::GetWindowDrawList();
-    if (GLuint texture = app.swatches.texture(i); texture != 0) {
+    if (GLuint texture = swatches.texture(i); texture != 0) {
       list->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(texture)), at,
                      ImVec2(at.x + icon, at.y + icon));
     } else {
@@ -48,25 +53,25 @@ void draw_presets(App& app, int object, const Material& material) {
     }
     list->AddText(ImVec2(at.x + icon + 4.0f, at.y + 2.0f), ImGui::GetColorU32(ImGuiCol_Text),
                   name.c_str());
-    if (clicked) execute(app, ApplyPreset{object, presets[i].name});
+    if (clicked) commands.execute(ApplyPreset{object, presets[i].name});
     ImGui::PopID();
   }
   ImGui::EndTable();
 }
 
-void draw_model_switch(App& app) {
-  const RenderSettings& render = app.commands.scene().render;
+void draw_model_switch(Commands& commands, ViewSettings& view) {
+  const RenderSettings& render = commands.scene().render;
   section_title("Shading model (whole scene)");
   int model = render.model == ShadingModel::phong ? 0 : 1;
   bool changed = ImGui::RadioButton("Phong (R.V)", &model, 0);
   ImGui::SameLine();
   changed |= ImGui::RadioButton("Blinn-Phong (N.H)", &model, 1);
   if (changed) {
-    execute(app, SetModel{model == 0 ? ShadingModel::phong : ShadingModel::blinn_phong,
-                          app.view.keep_highlight_size});
+    commands.execute(SetModel{model == 0 ? ShadingModel::phong : ShadingModel::blinn_phong,
+                              view.keep_highlight_size});
   }
   // One setting for both uses (view_settings.h): the switch above and the A/B view's B side.
-  ImGui::Checkbox("keep highlight size (x4 rule)", &app.view.keep_highlight_size);
+  ImGui::Checkbox("keep highlight size (x4 rule)", &view.keep_highlight_size);
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
         "Blinn-Phong exponent = 4 x Phong exponent: near the peak the half vector\n"
@@ -76,27 +81,30 @@ void draw_model_switch(App& app) {
   RenderSettings edited = render;
   field_widget(*find_field(render_fields(), "energy_normalize"), edited);
   if (auto command = field_command(FieldPart::render, 0, render_fields(), render, edited)) {
-    execute(app, *command);
+    commands.execute(*command);
   }
 }
 
-void draw_library(App& app, int object) {
-  if (app.library.empty()) return;
-  section_title(("Loaded from " + app.library_source).c_str());
-  for (std::size_t i = 0; i < app.library.size(); ++i) {
+void draw_library(Commands& commands, const MaterialLibrary& library, int object) {
+  const std::vector<NamedMaterial>& loaded = library.loaded;
+  if (loaded.empty()) return;
+  section_title(("Loaded from " + library.loaded_from).c_str());
+  for (std::size_t i = 0; i < loaded.size(); ++i) {
     ImGui::PushID(static_cast<int>(i));
     if (ImGui::Button("Apply")) {
-      execute(app, SetMaterial{object, app.library[i].second, app.library[i].first});
+      commands.execute(SetMaterial{object, loaded[i].second, loaded[i].first});
     }
     ImGui::SameLine();
-    ImGui::TextUnformatted(app.library[i].first.c_str());
+    ImGui::TextUnformatted(loaded[i].first.c_str());
     ImGui::PopID();
   }
 }
 
 }  // namespace
 
-void draw_material_panel(App& app, ImVec2 pos, ImVec2 size) {
+void draw_material_panel(Commands& commands, Selection& selection, ViewSettings& view,
+                         MaterialPanelState& state, const MaterialLibrary& library, ImVec2 pos,
+                         ImVec2 size) {
   ImGui::SetNextWindowPos(pos);
   ImGui::SetNextWindowSize(size);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
@@ -105,20 +113,19 @@ void draw_material_panel(App& app, ImVec2 pos, ImVec2 size) {
     ImGui::End();
     return;
   }
-  const Scene& scene = app.commands.scene();
+  const Scene& scene = commands.scene();
   if (scene.objects.empty()) {
     ImGui::TextWrapped("The scene has no objects. Open a scene or add a model (File menu).");
-    draw_model_switch(app);
+    draw_model_switch(commands, view);
     ImGui::End();
     return;
   }
-  app.selected_object =
-      std::clamp(app.selected_object, 0, static_cast<int>(scene.objects.size()) - 1);
-  const int object = app.selected_object;
+  selection.object = std::clamp(selection.object, 0, static_cast<int>(scene.objects.size()) - 1);
+  const int object = selection.object;
   const std::string current = object_label(scene, object);
   if (ImGui::BeginCombo("object", current.c_str())) {
     for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
-      if (ImGui::Selectable(object_label(scene, i).c_str(), i == object)) app.selected_object = i;
+      if (ImGui::Selectable(object_label(scene, i).c_str(), i == object)) selection.object = i;
     }
     ImGui::EndCombo();
   }
@@ -134,13 +141,13 @@ void draw_material_panel(App& app, ImVec2 pos, ImVec2 size) {
 
   Material edited = material;
   ImGui::PushItemWidth(-120.0f);  // room for the longest label, "Phong exponent"
-  ImGui::Checkbox("link RGB channels", &app.link_channels);
+  ImGui::Checkbox("link RGB channels", &state.link_channels);
   // The exponent's label names the model it is the exponent of.
   const bool blinn = scene.render.model == ShadingModel::blinn_phong;
   for (const Field<Material>& field : material_fields()) {
     const bool exponent = std::string(field.key) == "shininess";
     field_widget(
-        field, edited, app.link_channels,
+        field, edited, state.link_channels,
         exponent ? (blinn ? "Blinn exponent##shininess" : "Phong exponent##shininess") : nullptr);
     if (exponent && ImGui::IsItemHovered()) {
       ImGui::SetTooltip("%s", blinn ? "alpha of (N.H)^alpha, Blinn-Phong; drag: 1%% per pixel, "
@@ -152,7 +159,7 @@ void draw_material_panel(App& app, ImVec2 pos, ImVec2 size) {
   ImGui::PopItemWidth();
   if (auto command =
           field_command(FieldPart::material, object, material_fields(), material, edited)) {
-    execute(app, *command);
+    commands.execute(*command);
   }
 
   section_title("Presets");
@@ -160,19 +167,20 @@ void draw_material_panel(App& app, ImVec2 pos, ImVec2 size) {
     ImGui::Text("preset: %s", preset_status(material).c_str());
     if (preset_modified(material)) {
       ImGui::SameLine();
-      if (ImGui::SmallButton("Reset")) execute(app, ApplyPreset{object, material.preset});
+      if (ImGui::SmallButton("Reset")) commands.execute(ApplyPreset{object, material.preset});
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("reload '%s', undoing the tweaks", material.preset.c_str());
     }
   } else {
     ImGui::TextDisabled("custom material (no preset)");
   }
-  if (!app.swatches.error().empty()) {
-    ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "swatches: %s", app.swatches.error().c_str());
+  const Swatches& swatches = library.swatches;
+  if (!swatches.error().empty()) {
+    ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "swatches: %s", swatches.error().c_str());
   }
-  draw_presets(app, object, material);
-  draw_model_switch(app);
-  draw_library(app, object);
+  draw_presets(commands, swatches, object, material);
+  draw_model_switch(commands, view);
+  draw_library(commands, library, object);
   ImGui::End();
 }
 

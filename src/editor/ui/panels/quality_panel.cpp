@@ -11,9 +11,12 @@
 
 #include <imgui.h>
 
-#include "editor/ui/app.h"
+#include "editor/ui/panels/panel_state.h"
 #include "editor/ui/panels/panel_widgets.h"
+#include "editor/ui/panels/panels.h"
 #include "editor/ui/panels/quality_parts.h"
+#include "editor/ui/parts/commands.h"
+#include "editor/ui/parts/open_windows.h"
 
 namespace gloss {
 
@@ -35,15 +38,14 @@ const char* state_text(const QualityMeasurement& q) {
   return "";
 }
 
-void draw_controls(App& app) {
-  QualityMeasurement& q = app.quality;
+void draw_controls(QualityMeasurement& q, Commands& commands) {
   if (q.running()) {
     if (ImGui::Button("Cancel", ImVec2(90, 0))) q.cancel();
   } else if (ImGui::Button("Measure", ImVec2(90, 0))) {
     try {
-      q.start(app.commands.scene());
+      q.start(commands.scene());
     } catch (const std::exception& e) {
-      app.notices.error(std::string("quality: ") + e.what(), app.now_s());
+      commands.error(std::string("quality: ") + e.what());
     }
   }
   if (ImGui::IsItemHovered() && !q.running()) {
@@ -73,29 +75,30 @@ void draw_controls(App& app) {
   if (q.state() == QualityMeasurement::State::failed) {
     ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", q.error().c_str());
   }
-  if (q.stale(app.commands.scene())) {
+  if (q.stale(commands.scene())) {
     ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f),
                        "stale: the scene changed since it was measured; Measure again");
   }
 }
 
 // The Use cell of one row: "in use", a button, or nothing when the editor lacks the knob.
-void draw_use(App& app, const TradeoffRow& row) {
-  const Scene& scene = app.commands.scene();
-  if (row_in_use(row, scene, app.view.preview_scale)) {
+void draw_use(Commands& commands, ViewSettings& view, const TradeoffRow& row) {
+  const Scene& scene = commands.scene();
+  if (row_in_use(row, scene, view.preview_scale)) {
     ImGui::TextDisabled("in use");
     return;
   }
   if (std::optional<Command> command = command_for_row(row)) {
-    if (ImGui::SmallButton("Use")) execute(app, *command);
+    if (ImGui::SmallButton("Use")) commands.execute(*command);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", command_label(*command).c_str());
   } else if (std::optional<float> scale = preview_scale_for_row(row)) {
-    if (ImGui::SmallButton("Use")) app.view.preview_scale = *scale;
+    if (ImGui::SmallButton("Use")) view.preview_scale = *scale;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("set the preview scale to %.2f", *scale);
   }
 }
 
-void draw_knob_table(App& app, Knob knob, const std::vector<TradeoffRow>& rows) {
+void draw_knob_table(Commands& commands, ViewSettings& view, Knob knob,
+                     const std::vector<TradeoffRow>& rows) {
   const ImGuiTableFlags flags =
       ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV;
   if (!ImGui::BeginTable(to_string(knob), 7, flags)) return;
@@ -135,14 +138,13 @@ void draw_knob_table(App& app, Knob knob, const std::vector<TradeoffRow>& rows) 
                                                                  : "";
     ImGui::TextDisabled("%s", mark);
     ImGui::TableNextColumn();
-    draw_use(app, row);
+    draw_use(commands, view, row);
     ImGui::PopID();
   }
   ImGui::EndTable();
 }
 
-void draw_knobs(App& app) {
-  const QualityMeasurement& q = app.quality;
+void draw_knobs(const QualityMeasurement& q, Commands& commands, ViewSettings& view) {
   const std::optional<Knob> current = q.current_knob();
   for (const Knob knob : q.knobs()) {
     const std::vector<TradeoffRow> rows = rows_of_knob(q.rows(), knob);
@@ -156,14 +158,14 @@ void draw_knobs(App& app) {
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled("%s", quality_verdict(rows).c_str());
     ImGui::PopTextWrapPos();
-    draw_knob_table(app, knob, rows);
+    draw_knob_table(commands, view, knob, rows);
   }
 }
 
 // The ray tracer's knobs: Measure, the rows per knob with their verdicts, the notes.
-void draw_cpu_tab(App& app) {
-  draw_controls(app);
-  if (app.quality.state() == QualityMeasurement::State::idle) {
+void draw_cpu_tab(QualityMeasurement& q, Commands& commands, ViewSettings& view) {
+  draw_controls(q, commands);
+  if (q.state() == QualityMeasurement::State::idle) {
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled(
         "Measure renders the scene on screen under each setting of each accuracy knob and "
@@ -178,22 +180,23 @@ void draw_cpu_tab(App& app) {
         "ref and as good (+1 point off, 1.5x RMSE at most).");
     ImGui::PopTextWrapPos();
   }
-  draw_knobs(app);
-  if (!app.quality.notes().empty()) {
+  draw_knobs(q, commands, view);
+  if (!q.notes().empty()) {
     section_title("Notes");
     ImGui::PushTextWrapPos(0.0f);
-    for (const std::string& note : app.quality.notes()) ImGui::TextDisabled("%s", note.c_str());
+    for (const std::string& note : q.notes()) ImGui::TextDisabled("%s", note.c_str());
     ImGui::PopTextWrapPos();
   }
 }
 
 }  // namespace
 
-void draw_quality_panel(App& app, ImVec2 pos, ImVec2 size) {
-  if (!app.show_quality) return;
+void draw_quality_panel(QualityState& quality, OpenWindows& windows, ViewSettings& view,
+                        Commands& commands, ImVec2 pos, ImVec2 size) {
+  if (!windows.quality) return;
   ImGui::SetNextWindowPos(pos, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(size, ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Quality: what each knob costs and buys", &app.show_quality)) {
+  if (!ImGui::Begin("Quality: what each knob costs and buys", &windows.quality)) {
     ImGui::End();
     return;
   }
@@ -204,21 +207,21 @@ void draw_quality_panel(App& app, ImVec2 pos, ImVec2 size) {
     return;
   }
   if (ImGui::BeginTabItem("Ray tracer")) {
-    draw_cpu_tab(app);
+    draw_cpu_tab(quality.cpu, commands, view);
     ImGui::EndTabItem();
   }
   const ImGuiTabItemFlags raster_flags =
-      app.show_raster_rows ? ImGuiTabItemFlags_SetSelected : ImGuiTabItemFlags_None;
+      quality.show_raster_rows ? ImGuiTabItemFlags_SetSelected : ImGuiTabItemFlags_None;
   if (ImGui::BeginTabItem("Raster (GLSL)", nullptr, raster_flags)) {
-    app.show_raster_rows = false;  // shown (a new tab bar selects its first tab at first)
-    draw_raster_quality_section(app);
+    quality.show_raster_rows = false;  // shown (a new tab bar selects its first tab at first)
+    draw_raster_quality_section(quality, windows, commands);
     ImGui::EndTabItem();
   }
   if (ImGui::BeginTabItem("Plot")) {
-    if (app.quality.rows().empty() && app.raster_quality.rows().empty()) {
+    if (quality.cpu.rows().empty() && quality.raster.rows().empty()) {
       ImGui::TextDisabled("measure the ray tracer's knobs or the raster rows first");
     } else {
-      draw_quality_plot(app, std::max(160.0f, ImGui::GetContentRegionAvail().y - 60.0f));
+      draw_quality_plot(quality, std::max(160.0f, ImGui::GetContentRegionAvail().y - 60.0f));
     }
     ImGui::EndTabItem();
   }

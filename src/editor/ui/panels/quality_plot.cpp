@@ -10,7 +10,7 @@
 
 #include <imgui.h>
 
-#include "editor/ui/app.h"
+#include "editor/ui/panels/panel_state.h"
 #include "editor/ui/panels/quality_parts.h"
 
 namespace gloss {
@@ -35,13 +35,13 @@ struct Point {
   bool raster;
 };
 
-std::vector<Point> points_of(const App& app) {
+std::vector<Point> points_of(const QualityState& quality) {
   std::vector<Point> points;
-  for (const TradeoffRow& r : app.quality.rows()) {
+  for (const TradeoffRow& r : quality.cpu.rows()) {
     points.push_back({to_string(r.knob), std::string(to_string(r.knob)) + " " + r.setting,
                       r.time_ms, r.error.rmse, false});
   }
-  for (const RasterTradeoffRow& r : app.raster_quality.rows()) {
+  for (const RasterTradeoffRow& r : quality.raster.rows()) {
     points.push_back({r.knob, r.knob + " " + r.setting, r.time_ms, r.error.rmse, r.knob != "cpu"});
   }
   return points;
@@ -49,8 +49,8 @@ std::vector<Point> points_of(const App& app) {
 
 }  // namespace
 
-void draw_quality_plot(App& app, float height) {
-  const std::vector<Point> points = points_of(app);
+void draw_quality_plot(const QualityState& quality, float height) {
+  const std::vector<Point> points = points_of(quality);
   if (points.empty()) return;
   std::vector<std::string> knobs;  // legend order: first appearance
   double t0 = 1e300, t1 = 0, e0 = 1e300, e1 = 0;

@@ -9,9 +9,11 @@
 
 #include <imgui.h>
 
-#include "editor/ui/app.h"
+#include "editor/ui/panels/panel_state.h"
 #include "editor/ui/panels/panel_widgets.h"
 #include "editor/ui/panels/quality_parts.h"
+#include "editor/ui/parts/commands.h"
+#include "editor/ui/parts/open_windows.h"
 
 namespace gloss {
 
@@ -85,27 +87,28 @@ void draw_rows(const std::vector<RasterTradeoffRow>& rows) {
 
 }  // namespace
 
-void start_raster_quality(App& app, int width, int height, int reference_spp) {
+void start_raster_quality(QualityState& quality, OpenWindows& windows, const Scene& scene,
+                          int width, int height, int reference_spp) {
   RasterTradeoffOptions options = raster_options_like(quick_tradeoff_options());
   if (width > 0 && height > 0) {
     options.width = width;
     options.height = height;
   }
   if (reference_spp > 0) options.reference_spp = reference_spp;
-  app.raster_quality.start(app.commands.scene(), options);
-  app.show_quality = true;
-  app.show_raster_rows = true;
+  quality.raster.start(scene, options);
+  windows.quality = true;
+  quality.show_raster_rows = true;
 }
 
-void draw_raster_quality_section(App& app) {
-  RasterTradeoff& r = app.raster_quality;
+void draw_raster_quality_section(QualityState& quality, OpenWindows& windows, Commands& commands) {
+  RasterTradeoff& r = quality.raster;
   if (r.running()) {
     if (ImGui::Button("Cancel##raster", ImVec2(120, 0))) r.cancel();
   } else if (ImGui::Button("Measure raster", ImVec2(120, 0))) {
     try {
-      start_raster_quality(app);
+      start_raster_quality(quality, windows, commands.scene());
     } catch (const std::exception& e) {
-      app.notices.error(std::string("raster quality: ") + e.what(), app.now_s());
+      commands.error(std::string("raster quality: ") + e.what());
     }
   }
   if (ImGui::IsItemHovered() && !r.running()) {
@@ -138,7 +141,7 @@ void draw_raster_quality_section(App& app) {
     ImGui::PopTextWrapPos();
     draw_rows(r.rows());
     ImGui::Spacing();
-    draw_quality_plot(app, 200.0f);
+    draw_quality_plot(quality, 200.0f);
   }
   if (r.state() != RasterTradeoff::State::idle) {
     ImGui::PushTextWrapPos(0.0f);

@@ -10,9 +10,14 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
-#include "editor/ui/app.h"
+#include "editor/model/script/script_runner.h"
 #include "editor/ui/panels/field_widgets.h"
 #include "editor/ui/panels/panel_widgets.h"
+#include "editor/ui/panels/panels.h"
+#include "editor/ui/parts/commands.h"
+#include "editor/ui/parts/exports.h"
+#include "editor/ui/parts/open_windows.h"
+#include "editor/ui/viewport/viewport.h"
 
 namespace gloss {
 
@@ -21,9 +26,8 @@ namespace {
 // The histogram of the live image as displayed (exposure and encoding applied): R, G and B
 // counts over 64 bins, drawn as lines on a square-root scale so that the dark bins of a mostly
 // black background do not flatten the rest. Then the clipped share and the overlay switch.
-void draw_histogram(App& app) {
-  ViewSettings& view = app.view;
-  const ExposureHistogram h = app.viewport.histogram(view, app.commands.scene().render.srgb);
+void draw_histogram(Viewport& viewport, ViewSettings& view, bool srgb) {
+  const ExposureHistogram h = viewport.histogram(view, srgb);
   const float width = ImGui::GetContentRegionAvail().x;
   const float height = 56.0f;
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
@@ -60,8 +64,8 @@ void draw_histogram(App& app) {
   ImGui::Checkbox("show clipped pixels", &view.show_clipped);
 }
 
-void draw_view_mode(App& app) {
-  ViewSettings& view = app.view;
+void draw_view_mode(Commands& commands, ViewSettings& view, Viewport& viewport,
+                    std::optional<Snapshot>& snapshot) {
   int mode = static_cast<int>(view.mode);
   ImGui::RadioButton("render (1)", &mode, static_cast<int>(ViewMode::render));
   ImGui::SameLine();
@@ -86,9 +90,9 @@ void draw_view_mode(App& app) {
   if (view.mode == ViewMode::ab) {
     int source = static_cast<int>(view.ab_source);
     ImGui::RadioButton("Phong | Blinn-Phong", &source, static_cast<int>(AbSource::models));
-    if (!app.snapshot) ImGui::BeginDisabled();
+    if (!snapshot) ImGui::BeginDisabled();
     ImGui::RadioButton("snapshot | live", &source, static_cast<int>(AbSource::snapshot));
-    if (!app.snapshot) ImGui::EndDisabled();
+    if (!snapshot) ImGui::EndDisabled();
     ImGui::RadioButton("ray traced | raster", &source, static_cast<int>(AbSource::cpu_gl));
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip("A: the ray tracer at 1 spp (pixel centres), B: the raster path (GLSL)");
@@ -96,6 +100,13 @@ void draw_view_mode(App& app) {
     ImGui::RadioButton("per pixel | per vertex", &source, static_cast<int>(AbSource::pixel_vertex));
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip("the raster path with Phong shading (A) and Gouraud shading (B)");
+    }
+    ImGui::RadioButton("material | reference", &source, static_cast<int>(AbSource::reference));
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip(
+          "A: the materials as they are (1 spp), B: the materials that have a physical\n"
+          "reference rendered by it (GGX, the reference path in double, 1 spp); set one in\n"
+          "the Reference panel");
     }
     view.ab_source = static_cast<AbSource>(source);
     ImGui::Checkbox("automatic heat scale", &view.heat_auto_scale);
@@ -113,31 +124,31 @@ void draw_view_mode(App& app) {
       }
     }
   }
-  if (ImGui::Button("Snapshot (Ctrl+B)")) snapshot_and_compare(app);
+  if (ImGui::Button("Snapshot (Ctrl+B)")) snapshot_and_compare(commands, snapshot, view);
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("keep the current scene as A and compare it with the live scene as B");
   }
-  if (app.snapshot) {
+  if (snapshot) {
     ImGui::SameLine();
-    ImGui::TextDisabled("%s kept", app.snapshot->label.c_str());
+    ImGui::TextDisabled("%s kept", snapshot->label.c_str());
   }
   ImGui::SliderFloat("exposure", &view.exposure, -8.0f, 8.0f, "%+.2f stops");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("display value = linear x 2^exposure");
   ImGui::SameLine();
   if (ImGui::SmallButton("0")) view.exposure = 0.0f;
-  draw_histogram(app);
+  draw_histogram(viewport, view, commands.scene().render.srgb);
 }
 
 // The teapots' tessellation, the mesh resolution that per-vertex shading depends on (and the
 // ray tracer's silhouettes too); shown when the document has a teapot.
-void draw_tessellation(App& app) {
-  const Scene& scene = app.commands.scene();
+void draw_tessellation(Commands& commands) {
+  const Scene& scene = commands.scene();
   const auto teapot = std::find_if(scene.objects.begin(), scene.objects.end(),
                                    [](const Object& o) { return o.type == ObjectType::teapot; });
   if (teapot == scene.objects.end()) return;
   int level = teapot->params.tessellation;
   if (ImGui::SliderInt("teapot tessellation", &level, 1, 64)) {
-    execute(app, SetTessellation{level});
+    commands.execute(SetTessellation{level});
   }
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
@@ -147,8 +158,7 @@ void draw_tessellation(App& app) {
 }
 
 // The viewport's renderer and, where the raster path draws something, its knobs (issue 12).
-void draw_renderer(App& app) {
-  ViewSettings& view = app.view;
+void draw_renderer(Commands& commands, ViewSettings& view, const Viewport& viewport) {
   int renderer = static_cast<int>(view.renderer);
   ImGui::RadioButton("Ray traced", &renderer, static_cast<int>(RendererChoice::cpu));
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("exact, refined pass by pass to the scene's spp");
@@ -164,12 +174,12 @@ void draw_renderer(App& app) {
         "ray tracer (status bar: the two frame times); ray traced when still");
   }
   view.renderer = static_cast<RendererChoice>(renderer);
-  if (app.viewport.raster_unavailable()) {
+  if (viewport.raster_unavailable()) {
     ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.35f, 1.0f), "raster unavailable: ray traced");
   }
   const bool raster_ab = view.mode == ViewMode::ab && (view.ab_source == AbSource::cpu_gl ||
                                                        view.ab_source == AbSource::pixel_vertex);
-  draw_tessellation(app);
+  draw_tessellation(commands);
   if (view.renderer == RendererChoice::cpu && !raster_ab) return;
   RasterSettings& raster = view.raster;
   int shading = static_cast<int>(raster.shading);
@@ -204,8 +214,8 @@ void draw_renderer(App& app) {
   }
 }
 
-void draw_quality(App& app) {
-  const Scene& scene = app.commands.scene();
+void draw_quality(Commands& commands, ViewSettings& view, OpenWindows& windows) {
+  const Scene& scene = commands.scene();
   // Every render setting of the document, its encoding included (exports and the viewport
   // follow it), but the model: the Material panel's switch can rescale exponents with it.
   RenderSettings edited = scene.render;
@@ -213,37 +223,47 @@ void draw_quality(App& app) {
     if (std::string(field.key) != "model") field_widget(field, edited);
   }
   if (auto command = field_command(FieldPart::render, 0, render_fields(), scene.render, edited)) {
-    execute(app, *command);
+    commands.execute(*command);
   }
-  ImGui::SliderFloat("preview scale", &app.view.preview_scale, 0.25f, 1.0f, "%.2f");
+  ImGui::SliderFloat("preview scale", &view.preview_scale, 0.25f, 1.0f, "%.2f");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("render pixels per screen pixel in the viewport");
   ImGui::TextDisabled("exports render at %d x %d, %d spp", scene.render.width, scene.render.height,
                       scene.render.spp);
-  if (ImGui::Button(app.show_quality ? "Hide speed / accuracy" : "Speed / accuracy...")) {
-    app.show_quality = !app.show_quality;
+  if (ImGui::Button(windows.quality ? "Hide speed / accuracy" : "Speed / accuracy...")) {
+    windows.quality = !windows.quality;
   }
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("measure what each quality knob costs and buys for this scene");
   }
 }
 
-void draw_screenshot(App& app) {
-  int kind = static_cast<int>(app.view.screenshot_kind);
+void draw_screenshot(ViewSettings& view, Exports& exports) {
+  int kind = static_cast<int>(view.screenshot_kind);
   ImGui::RadioButton("viewport", &kind, static_cast<int>(ScreenshotKind::viewport));
   ImGui::SameLine();
   ImGui::RadioButton("term sheet", &kind, static_cast<int>(ScreenshotKind::terms));
   ImGui::SameLine();
   ImGui::RadioButton("window", &kind, static_cast<int>(ScreenshotKind::window));
-  app.view.screenshot_kind = static_cast<ScreenshotKind>(kind);
-  ImGui::InputText("folder", &app.view.screenshot_dir);
+  view.screenshot_kind = static_cast<ScreenshotKind>(kind);
+  ImGui::InputText("folder", &view.screenshot_dir);
   if (ImGui::Button("Save screenshot (Ctrl+S)")) {
-    start_screenshot(app, app.view.screenshot_kind, "", false);
+    exports.start(view.screenshot_kind);
   }
 }
 
 }  // namespace
 
-void draw_view_panel(App& app, ImVec2 pos, ImVec2 size) {
+void snapshot_and_compare(Commands& commands, std::optional<Snapshot>& snapshot,
+                          ViewSettings& view) {
+  snapshot = take_snapshot(commands.document(), snapshot);
+  view.mode = ViewMode::ab;
+  view.ab_source = AbSource::snapshot;
+  commands.info(snapshot->label + " taken: A shows it, B the live scene");
+}
+
+void draw_view_panel(Commands& commands, ViewSettings& view, Viewport& viewport,
+                     std::optional<Snapshot>& snapshot, OpenWindows& windows, Exports& exports,
+                     ImVec2 pos, ImVec2 size) {
   ImGui::SetNextWindowPos(pos);
   ImGui::SetNextWindowSize(size);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
@@ -254,13 +274,13 @@ void draw_view_panel(App& app, ImVec2 pos, ImVec2 size) {
   }
   ImGui::PushItemWidth(-130.0f);  // room for "samples per pixel"
   section_title("Renderer");
-  draw_renderer(app);
+  draw_renderer(commands, view, viewport);
   section_title("View");
-  draw_view_mode(app);
+  draw_view_mode(commands, view, viewport, snapshot);
   section_title("Quality");
-  draw_quality(app);
+  draw_quality(commands, view, windows);
   section_title("Screenshot");
-  draw_screenshot(app);
+  draw_screenshot(view, exports);
   ImGui::PopItemWidth();
   ImGui::End();
 }

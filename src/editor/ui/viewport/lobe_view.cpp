@@ -1,6 +1,7 @@
 // The lobe view (ViewMode::lobe): the selected material's reflected radiance against the outgoing
 // angle in the plane of incidence, as a polar plot, Phong and Blinn-Phong overlaid on the diffuse
-// floor, for a light elevation the user drags. The values come from analysis/brdf_lobe.h, which
+// floor, and the material's physical reference when it has one, for a light elevation the user
+// drags. The values come from analysis/brdf_lobe.h, which
 // evaluates the contract's own functions (shading/shading.h). Drawn with ImDrawList: ImPlot, the
 // usual Dear ImGui plotting add-on, is not packaged in Debian 12 (`apt-cache search implot` finds
 // nothing), and a half-disc of lines, rings and labels needs none of it.
@@ -14,7 +15,8 @@
 
 #include "analysis/brdf_lobe.h"
 #include "editor/model/document/document.h"
-#include "editor/ui/app.h"
+#include "editor/ui/parts/selection.h"
+#include "editor/ui/viewport/viewport.h"
 
 namespace gloss {
 
@@ -34,6 +36,10 @@ const ImU32 kPhongLine = IM_COL32(255, 150, 40, 255);
 const ImU32 kBlinnLine = IM_COL32(80, 190, 255, 255);
 const ImU32 kLightLine = IM_COL32(255, 225, 80, 255);
 const ImU32 kMirrorLine = IM_COL32(170, 170, 170, 255);
+const ImU32 kReferenceLine = IM_COL32(235, 95, 225, 255);
+
+// A log radius spans this many decades below the scale (values under it sit at the origin).
+constexpr double kLogDecades = 3.0;
 
 // The polar frame on screen: theta from the normal (up), positive to the right; value 0 at the
 // origin, scale at radius_px.
@@ -41,10 +47,16 @@ struct PolarFrame {
   ImVec2 origin{0, 0};
   float radius_px = 1.0f;
   double scale = 1.0;
+  bool log = false;  // radius log10(value / scale) + kLogDecades, in decades
 
+  // The radius of value as a share of radius_px.
+  double share(double value) const {
+    if (!log) return value / scale;
+    return value > 0.0 ? std::max(std::log10(value / scale) / kLogDecades + 1.0, 0.0) : 0.0;
+  }
   ImVec2 at(double theta_deg, double value) const {
     const double t = theta_deg * kPi / 180.0;
-    const double r = value / scale * radius_px;
+    const double r = share(value) * radius_px;
     return ImVec2(origin.x + static_cast<float>(r * std::sin(t)),
                   origin.y - static_cast<float>(r * std::cos(t)));
   }
@@ -90,8 +102,16 @@ void curve(ImDrawList* list, const PolarFrame& frame, const BrdfLobe& lobe,
 // Rings with their values, spokes every 15 degrees with labels every 30, the surface line.
 void draw_axes(ImDrawList* list, const PolarFrame& frame, double step) {
   char label[32];
-  for (double v = step; v <= frame.scale * 1.0001; v += step) {
-    const float r = static_cast<float>(v / frame.scale * frame.radius_px);
+  std::vector<double> rings;
+  for (double v = step; v <= frame.scale * 1.0001; v += step) rings.push_back(v);
+  if (frame.log) {
+    rings.clear();  // one per decade
+    for (int d = static_cast<int>(kLogDecades) - 1; d >= 0; --d) {
+      rings.push_back(frame.scale * std::pow(10.0, -d));
+    }
+  }
+  for (const double v : rings) {
+    const float r = static_cast<float>(frame.share(v) * frame.radius_px);
     list->PathArcTo(frame.origin, r, static_cast<float>(kPi), static_cast<float>(2.0 * kPi), 64);
     list->PathStroke(kGrid, 0, 1.0f);
     std::snprintf(label, sizeof label, "%.3g", v);
@@ -152,9 +172,7 @@ const char* energy_label(LobeEnergy energy, bool document) {
   return "?";
 }
 
-void draw_controls(App& app) {
-  ViewSettings& view = app.view;
-  const bool document_energy = app.commands.scene().render.energy_normalize;
+void draw_controls(ViewSettings& view, bool document_energy) {
   ImGui::PushItemWidth(200.0f);
   ImGui::SliderFloat("light elevation", &view.lobe_elevation_deg, 0.0f, 90.0f,
                      "%.1f\xC2\xB0 above the surface");
@@ -170,6 +188,13 @@ void draw_controls(App& app) {
   }
   ImGui::PopItemWidth();
   ImGui::SameLine();
+  ImGui::Checkbox("log radius", &view.lobe_log_radius);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "three decades of luminance, one ring each: a physical reference's\n"
+        "bright peak and a classic lobe of ks <= 1 in one plot");
+  }
+  ImGui::SameLine();
   ImGui::Checkbox("4x rule", &view.keep_highlight_size);
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
@@ -182,8 +207,9 @@ void draw_controls(App& app) {
 
 struct Curves {
   std::vector<double> floor, phong, blinn;  // luminance of diffuse, diffuse + specular
+  std::vector<double> reference;            // the physical reference's, when there is one
   double top = 0.0;
-  std::size_t phong_peak = 0, blinn_peak = 0;
+  std::size_t phong_peak = 0, blinn_peak = 0, reference_peak = 0;
 };
 
 Curves luminance_curves(const BrdfLobe& lobe) {
@@ -196,6 +222,10 @@ Curves luminance_curves(const BrdfLobe& lobe) {
     if (c.phong[i] > c.phong[c.phong_peak]) c.phong_peak = i;
     if (c.blinn[i] > c.blinn[c.blinn_peak]) c.blinn_peak = i;
     c.top = std::max({c.top, c.phong[i], c.blinn[i]});
+    if (!lobe.has_reference) continue;
+    c.reference.push_back(luminance(s.reference));
+    if (c.reference[i] > c.reference[c.reference_peak]) c.reference_peak = i;
+    c.top = std::max(c.top, c.reference[i]);
   }
   return c;
 }
@@ -211,15 +241,15 @@ void legend_swatch(ImDrawList* list, ImVec2 at, ImU32 colour, bool filled) {
 
 }  // namespace
 
-void draw_lobe_view(App& app, ImVec2 pos, ImVec2 size) {
-  const Scene& scene = app.commands.scene();
+void draw_lobe_view(const Scene& scene, const Selection& selection, ViewSettings& view, ImVec2 pos,
+                    ImVec2 size) {
   ImDrawList* list = ImGui::GetWindowDrawList();
   list->AddRectFilled(pos, ImVec2(pos.x + size.x, pos.y + size.y), kBackground);
   if (scene.objects.empty()) {
     list->AddText(ImVec2(pos.x + 16.0f, pos.y + 16.0f), kText, "no object to show");
     return;
   }
-  const int index = std::clamp(app.selected_object, 0, static_cast<int>(scene.objects.size()) - 1);
+  const int index = std::clamp(selection.object, 0, static_cast<int>(scene.objects.size()) - 1);
   const Object& object = scene.objects[static_cast<std::size_t>(index)];
   const Material& material = scene.materials[static_cast<std::size_t>(object.material)];
   const std::string material_name =
@@ -232,9 +262,8 @@ void draw_lobe_view(App& app, ImVec2 pos, ImVec2 size) {
   ImGui::Text("Lobe of material '%s' (object '%s'): reflected radiance in the plane of incidence",
               material_name.c_str(), object.name.c_str());
   ImGui::SetCursorScreenPos(ImVec2(pos.x + pad, ImGui::GetCursorScreenPos().y));
-  draw_controls(app);
+  draw_controls(view, scene.render.energy_normalize);
   const float top_y = ImGui::GetCursorScreenPos().y;
-  const ViewSettings& view = app.view;
 
   // The scene's model keeps the material's exponent; the other one gets the rescaled exponent
   // when the highlight size is kept (document.h).
@@ -253,7 +282,7 @@ void draw_lobe_view(App& app, ImVec2 pos, ImVec2 size) {
   const Curves curves = luminance_curves(lobe);
 
   // Layout: the half disc above the surface line, the legend under it.
-  const float legend_h = 11.0f * (ImGui::GetTextLineHeightWithSpacing() + 2.0f) + 20.0f;
+  const float legend_h = 13.0f * (ImGui::GetTextLineHeightWithSpacing() + 2.0f) + 20.0f;
   const float plot_h = std::max(size.y - (top_y - pos.y) - legend_h - 60.0f, 40.0f);
   PolarFrame frame;
   frame.radius_px = std::max(std::min(size.x * 0.5f - 70.0f, plot_h), 20.0f);
@@ -261,10 +290,11 @@ void draw_lobe_view(App& app, ImVec2 pos, ImVec2 size) {
       ImVec2(std::floor(pos.x + size.x * 0.5f), std::floor(top_y + 44.0f + frame.radius_px));
   const double step = ring_step(std::max(curves.top, 1e-6) * 1.05);
   frame.scale = step * std::ceil(std::max(curves.top, 1e-6) * 1.05 / step);
+  frame.log = view.lobe_log_radius;
 
   // The floor: a filled half disc of radius kd ndl (the same in every direction).
   const double floor_value = curves.floor.empty() ? 0.0 : curves.floor.front();
-  const float floor_r = static_cast<float>(floor_value / frame.scale * frame.radius_px);
+  const float floor_r = static_cast<float>(frame.share(floor_value) * frame.radius_px);
   if (floor_r > 0.5f) {
     list->PathArcTo(frame.origin, floor_r, static_cast<float>(kPi), static_cast<float>(2.0 * kPi),
                     64);
@@ -279,6 +309,7 @@ void draw_lobe_view(App& app, ImVec2 pos, ImVec2 size) {
         phong_scene ? kPhongLine : kBlinnLine, 4.5f);
   curve(list, frame, lobe, phong_scene ? curves.blinn : curves.phong,
         phong_scene ? kBlinnLine : kPhongLine, 1.5f);
+  if (lobe.has_reference) curve(list, frame, lobe, curves.reference, kReferenceLine, 2.5f);
   draw_directions(list, frame, params.elevation_deg);
 
   // Dragging in the plot moves the light; hovering reads the values at that angle.
@@ -288,7 +319,7 @@ void draw_lobe_view(App& app, ImVec2 pos, ImVec2 size) {
   ImGui::InvisibleButton("##lobe-plot",
                          ImVec2(2.0f * frame.radius_px + 80.0f, frame.radius_px + 44.0f));
   const ImVec2 mouse = ImGui::GetIO().MousePos;
-  if (ImGui::IsItemActive()) app.view.lobe_elevation_deg = elevation_at(frame, mouse);
+  if (ImGui::IsItemActive()) view.lobe_elevation_deg = elevation_at(frame, mouse);
   // The readout: at the hovered angle, else at the mirror direction.
   const bool hovered = ImGui::IsItemHovered() && !ImGui::IsItemActive();
   const double theta =
@@ -327,6 +358,17 @@ void draw_lobe_view(App& app, ImVec2 pos, ImVec2 size) {
                 curves.blinn[curves.blinn_peak], bp.theta_deg);
   list->AddText(ImVec2(x + 30.0f, y), kText, text);
   y += line_h;
+  if (lobe.has_reference) {
+    const PhysicalReference& r = *material.reference;
+    legend_swatch(list, ImVec2(x, y + 2.0f), kReferenceLine, false);
+    std::snprintf(text, sizeof text,
+                  "physical reference: %s, roughness %.3g (GGX; Reference panel)   peak %.4g at "
+                  "%.1f\xC2\xB0",
+                  to_string(r.kind), r.roughness, curves.reference[curves.reference_peak],
+                  lobe.samples[curves.reference_peak].theta_deg);
+    list->AddText(ImVec2(x + 30.0f, y), kText, text);
+    y += line_h;
+  }
   legend_swatch(list, ImVec2(x, y + 2.0f), kLightLine, false);
   std::snprintf(text, sizeof text,
                 "light: %.1f\xC2\xB0 above the surface (incidence %.1f\xC2\xB0);"
@@ -360,6 +402,12 @@ void draw_lobe_view(App& app, ImVec2 pos, ImVec2 size) {
   std::snprintf(text, sizeof text, "  Blinn-Phong specular  RGB %.4g %.4g %.4g   c = N.H = %.5f",
                 s.blinn.x, s.blinn.y, s.blinn.z, s.cos_blinn);
   list->AddText(ImVec2(x, y), kBlinnLine, text);
+  if (lobe.has_reference) {
+    y += line_h;
+    std::snprintf(text, sizeof text, "  reference  RGB %.4g %.4g %.4g  (pi f ndl)", s.reference.x,
+                  s.reference.y, s.reference.z);
+    list->AddText(ImVec2(x, y), kReferenceLine, text);
+  }
 }
 
 }  // namespace gloss

@@ -10,7 +10,6 @@
 
 #include "editor/model/document/document.h"
 #include "editor/model/view/heat_map.h"
-#include "editor/ui/app.h"
 
 namespace gloss {
 
@@ -29,6 +28,13 @@ std::unique_ptr<ProgressiveRenderer> make_cpu_renderer(bool terms) {
   // Runs on a render worker: wakes the event loop, which uploads the frame.
   renderer->set_on_publish([] { glfwPostEmptyEvent(); });
   return renderer;
+}
+
+// The material | reference view's B side; like the ray tracer, it wakes the event loop.
+std::unique_ptr<ReferencePreview> make_reference_preview() {
+  auto preview = std::make_unique<ReferencePreview>();
+  preview->set_on_publish([] { glfwPostEmptyEvent(); });
+  return preview;
 }
 
 }  // namespace
@@ -86,8 +92,9 @@ void Viewport::upload_frames(double now_s) {
       new_a = true;
     }
   }
-  if (m_b && !m_sides.b.raster) {
-    if (std::shared_ptr<const RenderedFrame> b = m_b->latest();
+  if ((m_b || m_reference) && !m_sides.b.raster) {
+    if (std::shared_ptr<const RenderedFrame> b =
+            m_reference ? m_reference->latest() : m_b->latest();
         b && b != m_frame_b && takes(*b, m_shown_raster_b)) {
       upload(*b, true);
       m_frame_b = std::move(b);
@@ -215,11 +222,17 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
       if (m_shown_raster_a) m_handover_generation = pushed_generation;
       m_traced_setup = m_setup;
     }
-    if (ab && !sides.b.raster) {
+    if (ab && sides.b.physical) {
+      m_b.reset();
+      if (!m_reference) m_reference = make_reference_preview();
+      m_reference->set_scene(pair.b);
+    } else if (ab && !sides.b.raster) {
+      m_reference.reset();
       if (!m_b) m_b = make_cpu_renderer(false);
       m_b->set_scene(pair.b);
     } else {
       m_b.reset();
+      m_reference.reset();
     }
     if (!ab) {
       m_frame_b.reset();
@@ -232,6 +245,11 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
       if (!sides.b.raster &&
           (view.ab_source == AbSource::cpu_gl || view.ab_source == AbSource::pixel_vertex)) {
         m_label_b += " - raster unavailable, ray traced";
+      }
+      const auto has_reference = [](const Material& m) { return m.reference.has_value(); };
+      if (view.ab_source == AbSource::reference &&
+          std::none_of(document.materials.begin(), document.materials.end(), has_reference)) {
+        m_label_b += " - none set";
       }
     }
     m_pushed_any = true;
@@ -287,6 +305,10 @@ bool Viewport::converged_and_shown(std::uint64_t revision, const ViewSettings& v
                        const std::shared_ptr<const RenderedFrame>& frame, bool shown_raster) {
     if (frame == nullptr) return false;
     if (side.raster) return m_raster_shown && shown_raster;
+    if (side.physical) {
+      return m_reference != nullptr && m_reference->wait_converged(0.0) &&
+             m_reference->latest() == frame;
+    }
     return renderer != nullptr && renderer->wait_converged(0.0) && renderer->latest() == frame;
   };
   if (!side_done(m_sides.a, m_a.get(), m_frame_a, m_shown_raster_a)) return false;

@@ -17,12 +17,15 @@
 #include "editor/model/measure/exposure_histogram.h"
 #include "editor/model/view/ab_compare.h"
 #include "editor/model/view/automatic_choice.h"
+#include "editor/model/view/reference_preview.h"
 #include "editor/model/view/view_settings.h"
 #include "engine/progressive_renderer.h"
 
 namespace gloss {
 
-struct App;
+class Commands;
+struct InputState;
+struct Selection;
 
 // Timing of the path edit -> renderer -> pixels on screen, for the status bar and `stats`.
 struct LatencyProbe {
@@ -54,8 +57,11 @@ class Viewport {
   // snapshot: the A side of the snapshot comparison (AbSource::snapshot), may be null.
   void sync(const Scene& document, std::uint64_t revision, const ViewSettings& view,
             const Snapshot* snapshot, double now_s);
-  // Draws the viewport window at pos/size (screen coordinates) with its gestures.
-  void draw(App& app, ImVec2 pos, ImVec2 size);
+  // Draws the viewport window at pos/size (screen coordinates) with its gestures: a drag edits the
+  // camera or a light through commands, a click selects, with the inspector open it pins a pixel
+  // (view). input: where the buttons went down; now_s: the frame clock.
+  void draw(Commands& commands, ViewSettings& view, Selection& selection, const InputState& input,
+            double now_s, ImVec2 pos, ImVec2 size);
   // Copies the viewport's image into the window's back buffer (framebuffer_height: the window's
   // in framebuffer pixels); call after clearing it and before ImGui draws on top.
   void blit(int framebuffer_height) const;
@@ -101,6 +107,10 @@ class Viewport {
   };
   AutomaticReport automatic_report() const;
   const LatencyProbe& latency() const { return m_latency; }
+  // The pixel of the document's render size under the cursor as of the last draw (the pixel
+  // inspector's), -1 when the cursor is over no image pane.
+  int hover_x() const { return m_hover_x; }
+  int hover_y() const { return m_hover_y; }
   float max_difference() const { return m_max_difference; }
   // Counts texture uploads: a new value means a new image reached the screen.
   std::uint64_t uploads() const { return m_uploads; }
@@ -117,14 +127,17 @@ class Viewport {
 
  private:
   // viewport_input.cpp: gestures, light markers, picking.
-  void handle_input(App& app);
-  void draw_light_markers(App& app, ImDrawList* list) const;
+  void handle_input(Commands& commands, ViewSettings& view, Selection& selection,
+                    const InputState& input, double now_s);
+  void draw_light_markers(const Scene& scene, const ViewSettings& view, const Selection& selection,
+                          ImDrawList* list) const;
   int pane_at(ImVec2 screen) const;
   // The pixel of the document's render size (width x height) under screen point p in an image
   // pane (not the A/B legend); false outside them.
   bool render_pixel_at(ImVec2 p, ViewMode mode, int width, int height, int& x, int& y) const;
-  void draw_inspected_pixel(const App& app, ImDrawList* list) const;
-  void pin_inspected_pixel(App& app, ImVec2 p) const;
+  void draw_inspected_pixel(const ViewSettings& view, const RenderSettings& render,
+                            ImDrawList* list) const;
+  void pin_inspected_pixel(ViewSettings& view, const RenderSettings& render, ImVec2 p) const;
 
   void draw_panes(const ViewSettings& view, bool srgb);  // srgb: the document's encoding
   void draw_labels(const ViewSettings& view, ImDrawList* list) const;
@@ -146,6 +159,8 @@ class Viewport {
   // Null while the raster path draws the A side, but paused during an Automatic drag.
   std::unique_ptr<ProgressiveRenderer> m_a;
   std::unique_ptr<ProgressiveRenderer> m_b;  // B side of the A/B view when the ray tracer draws it
+  // B side of the material | reference A/B view: the physical reference (AbSide::physical).
+  std::unique_ptr<ReferencePreview> m_reference;
   std::shared_ptr<const RenderedFrame> m_frame_a, m_frame_b;
   std::shared_ptr<const RenderedFrame> m_image_a, m_image_b;  // the newest with a total image
 
@@ -250,6 +265,12 @@ class Viewport {
   ImVec2 m_drag_press{0, 0};     // where the drag's button went down (screen)
   ImVec2 m_drag_last{0, 0};      // cursor position the drag has consumed up to
   double m_last_wheel_s = -1.0;
+  int m_hover_x = -1, m_hover_y = -1;  // render pixel under the cursor (hover_x)
 };
+
+// lobe_view.cpp: the lobe view of the selected object's material, drawn by the viewport in its
+// place when view.mode is ViewMode::lobe; dragging in the plot moves the view's light.
+void draw_lobe_view(const Scene& scene, const Selection& selection, ViewSettings& view, ImVec2 pos,
+                    ImVec2 size);
 
 }  // namespace gloss

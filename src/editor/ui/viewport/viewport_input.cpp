@@ -1,5 +1,7 @@
 // The viewport window: its layout, the mouse gestures (orbit, pan, zoom, click to select, drag a
-// light marker) and the light markers. Gestures become commands through execute().
+// light marker) and the light markers. Gestures become commands through the command door.
+#include "editor/ui/viewport/viewport.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -8,7 +10,9 @@
 #include <imgui.h>
 
 #include "editor/model/view/camera_controller.h"
-#include "editor/ui/app.h"
+#include "editor/ui/parts/commands.h"
+#include "editor/ui/parts/input_state.h"
+#include "editor/ui/parts/selection.h"
 #include "engine/pick.h"
 
 namespace gloss {
@@ -58,9 +62,8 @@ ImVec2 pixel_centre(const Pane& pane, int x, int y, int width, int height) {
 
 // A click with the inspector open pins the pixel under it; a click on the pinned pixel's marker
 // unpins it.
-void Viewport::pin_inspected_pixel(App& app, ImVec2 p) const {
-  ViewSettings& view = app.view;
-  const RenderSettings& render = app.commands.scene().render;
+void Viewport::pin_inspected_pixel(ViewSettings& view, const RenderSettings& render,
+                                   ImVec2 p) const {
   int x = 0, y = 0;
   if (!view.show_inspector || !render_pixel_at(p, view.mode, render.width, render.height, x, y)) {
     return;
@@ -81,10 +84,9 @@ void Viewport::pin_inspected_pixel(App& app, ImVec2 p) const {
 }
 
 // The pinned pixel's place in every image pane: a small square around it.
-void Viewport::draw_inspected_pixel(const App& app, ImDrawList* list) const {
-  const ViewSettings& view = app.view;
+void Viewport::draw_inspected_pixel(const ViewSettings& view, const RenderSettings& render,
+                                    ImDrawList* list) const {
   if (!view.show_inspector || !view.inspect_pinned) return;
-  const RenderSettings& render = app.commands.scene().render;
   for (int i = 0; i < m_pane_count; ++i) {
     if (view.mode == ViewMode::ab && i == 3) continue;
     const Pane& pane = m_panes[i];
@@ -103,15 +105,16 @@ bool Viewport::moving_gesture(double now_s) const {
   return m_drag_light >= 0 || (m_drag_distance > kClickSlop && !m_marker_pressed);
 }
 
-void Viewport::draw(App& app, ImVec2 pos, ImVec2 size) {
+void Viewport::draw(Commands& commands, ViewSettings& view, Selection& selection,
+                    const InputState& input, double now_s, ImVec2 pos, ImVec2 size) {
   m_pos = pos;
   m_size = size;
   m_framebuffer_scale = ImGui::GetIO().DisplayFramebufferScale.x;
-  const bool grid = app.view.mode == ViewMode::terms || app.view.mode == ViewMode::ab;
+  const bool grid = view.mode == ViewMode::terms || view.mode == ViewMode::ab;
   m_pane_count = grid ? 4 : 1;
   // Each cell holds one pane with the document's aspect (what the exports render), centred.
   const ImVec2 cell = grid ? ImVec2(std::floor(size.x * 0.5f), std::floor(size.y * 0.5f)) : size;
-  const RenderSettings& render = app.commands.scene().render;
+  const RenderSettings& render = commands.scene().render;
   const float aspect = static_cast<float>(render.width) / static_cast<float>(render.height);
   const float pane_w = std::floor(std::min(cell.x, cell.y * aspect));
   const ImVec2 pane_size(pane_w, std::floor(pane_w / aspect));
@@ -138,26 +141,26 @@ void Viewport::draw(App& app, ImVec2 pos, ImVec2 size) {
   const bool open = ImGui::Begin("Viewport", nullptr, flags);
   ImGui::PopStyleVar(2);
   m_visible = false;
-  app.inspector.hover_x = app.inspector.hover_y = -1;
+  m_hover_x = m_hover_y = -1;
   if (!open) {
     ImGui::End();
     return;
   }
-  if (app.view.mode == ViewMode::lobe) {  // the renderer keeps the render pane's size meanwhile
-    draw_lobe_view(app, pos, size);
+  if (view.mode == ViewMode::lobe) {  // the renderer keeps the render pane's size meanwhile
+    draw_lobe_view(commands.scene(), selection, view, pos, size);
     ImGui::End();
     return;
   }
-  draw_panes(app.view, app.commands.scene().render.srgb);
+  draw_panes(view, commands.scene().render.srgb);
   // The target is copied into the back buffer under ImGui's draw lists (blit(), from
   // run_frame): the window has no background, so it shows through.
   m_visible = true;
-  handle_input(app);
+  handle_input(commands, view, selection, input, now_s);
   ImDrawList* list = ImGui::GetWindowDrawList();
-  draw_labels(app.view, list);
-  if (app.view.mode == ViewMode::ab) draw_legend(app.view, list, m_panes[3]);
-  draw_light_markers(app, list);
-  draw_inspected_pixel(app, list);
+  draw_labels(view, list);
+  if (view.mode == ViewMode::ab) draw_legend(view, list, m_panes[3]);
+  draw_light_markers(commands.scene(), view, selection, list);
+  draw_inspected_pixel(view, commands.scene().render, list);
   if (!m_frame_a) {
     const char* text = "rendering the first frame ...";
     const ImVec2 t = ImGui::CalcTextSize(text);
@@ -167,15 +170,15 @@ void Viewport::draw(App& app, ImVec2 pos, ImVec2 size) {
   ImGui::End();
 }
 
-void Viewport::draw_light_markers(App& app, ImDrawList* list) const {
-  const Scene& scene = app.commands.scene();
+void Viewport::draw_light_markers(const Scene& scene, const ViewSettings& view,
+                                  const Selection& selection, ImDrawList* list) const {
   for (int p = 0; p < m_pane_count; ++p) {
-    if (app.view.mode == ViewMode::ab && p == 3) continue;  // the legend
+    if (view.mode == ViewMode::ab && p == 3) continue;  // the legend
     const Pane& pane = m_panes[p];
     const int w = static_cast<int>(pane.size.x), h = static_cast<int>(pane.size.y);
     list->PushClipRect(pane.min, ImVec2(pane.min.x + pane.size.x, pane.min.y + pane.size.y), true);
     // The selected object: corner brackets around its projected bounds, and its name.
-    const int object = app.selected_object;
+    const int object = selection.object;
     glm::vec2 lo, hi;
     if (object >= 0 && object < static_cast<int>(scene.objects.size()) &&
         screen_bounds(scene.camera, w, h, scene.objects[object], lo, hi)) {
@@ -204,7 +207,7 @@ void Viewport::draw_light_markers(App& app, ImDrawList* list) const {
       const ImVec2 centre(pane.min.x + m.position.x, pane.min.y + y);
       const glm::vec3 c = glm::clamp(scene.lights[i].diffuse, glm::vec3(0.0f), glm::vec3(1.0f));
       const ImU32 fill = ImGui::ColorConvertFloat4ToU32(ImVec4(c.x, c.y, c.z, 1.0f));
-      const bool selected = i == app.selected_light;
+      const bool selected = i == selection.light;
       const ImU32 ring = selected ? IM_COL32(255, 200, 40, 255) : IM_COL32(20, 20, 20, 255);
       const float r = selected ? kMarkerRadius + 2.0f : kMarkerRadius;
       if (m.on_screen) {
@@ -236,14 +239,14 @@ void Viewport::draw_light_markers(App& app, ImDrawList* list) const {
   }
 }
 
-void Viewport::handle_input(App& app) {
+void Viewport::handle_input(Commands& commands, ViewSettings& view, Selection& selection,
+                            const InputState& input, double now_s) {
   ImGuiIO& io = ImGui::GetIO();
   ImGui::SetCursorScreenPos(m_pos);
   ImGui::InvisibleButton("##viewport-input", m_size,
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                              ImGuiButtonFlags_MouseButtonMiddle);
-  const Scene& scene = app.commands.scene();
-  const double now = app.now_s();
+  const Scene& scene = commands.scene();
 
   if (ImGui::IsItemActivated()) {
     m_drag_button = ImGui::IsMouseClicked(ImGuiMouseButton_Left)    ? ImGuiMouseButton_Left
@@ -251,7 +254,7 @@ void Viewport::handle_input(App& app) {
                                                                     : ImGuiMouseButton_Middle;
     // Motion before the press (in the same batch of events) is not part of the drag; motion
     // after it is, even when ImGui sees both in one frame.
-    const ImVec2 press = app.press_position[m_drag_button];
+    const ImVec2 press = input.press_position[m_drag_button];
     m_drag_press = press;
     m_drag_last = press;
     m_drag_distance = 0.0f;
@@ -271,7 +274,7 @@ void Viewport::handle_input(App& app) {
           // (the drag keeps the light's depth, which an off-screen light may not have).
           m_drag_light = m.on_screen ? i : -1;
           m_marker_pressed = true;
-          app.selected_light = i;
+          selection.light = i;
         }
       }
     }
@@ -289,43 +292,43 @@ void Viewport::handle_input(App& app) {
       const glm::vec3 moved =
           point_at_depth(scene.camera, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
                          local, scene.lights[m_drag_light].position);
-      execute(app, SetField{FieldPart::light, m_drag_light, "position", vec3_value(moved)});
+      commands.execute(SetField{FieldPart::light, m_drag_light, "position", vec3_value(moved)});
     } else if (m_drag_distance > kClickSlop && !m_marker_pressed) {
       // The scene turns as if grabbed: a drag to the right carries its front to the right (the
       // eye orbits left, positive yaw in orbit_camera); a drag down shows more of its top.
       const Camera camera = pan ? pan_camera(scene.camera, d.x, d.y, static_cast<int>(pane.size.y))
                                 : orbit_camera(scene.camera, d.x * kOrbitDegreesPerPixel,
                                                d.y * kOrbitDegreesPerPixel);
-      execute(app, SetCamera{camera});
+      commands.execute(SetCamera{camera});
     }
   }
 
   const RenderSettings& render = scene.render;
   if (ImGui::IsItemHovered() || ImGui::IsItemActive()) {
     int x = 0, y = 0;
-    if (render_pixel_at(io.MousePos, app.view.mode, render.width, render.height, x, y)) {
-      app.inspector.hover_x = x;
-      app.inspector.hover_y = y;
+    if (render_pixel_at(io.MousePos, view.mode, render.width, render.height, x, y)) {
+      m_hover_x = x;
+      m_hover_y = y;
     }
   }
 
   if (ImGui::IsItemDeactivated()) {
     if (m_drag_button == ImGuiMouseButton_Left && m_drag_light < 0 && !m_marker_pressed &&
-        m_drag_distance <= kClickSlop && !(app.view.mode == ViewMode::ab && m_drag_pane == 3)) {
-      pin_inspected_pixel(app, io.MousePos);
+        m_drag_distance <= kClickSlop && !(view.mode == ViewMode::ab && m_drag_pane == 3)) {
+      pin_inspected_pixel(view, render, io.MousePos);
       const Pane& pane = m_panes[m_drag_pane];
       const int hit =
           pick_object(scene, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
                       io.MousePos.x - pane.min.x, io.MousePos.y - pane.min.y);
-      if (hit >= 0) app.selected_object = hit;
+      if (hit >= 0) selection.object = hit;
     }
     m_drag_button = -1;
     m_drag_light = -1;
   }
 
   if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
-    execute(app, SetCamera{zoom_camera(scene.camera, io.MouseWheel)});
-    m_last_wheel_s = now;
+    commands.execute(SetCamera{zoom_camera(scene.camera, io.MouseWheel)});
+    m_last_wheel_s = now_s;
   }
 }
 

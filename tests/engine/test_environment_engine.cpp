@@ -1,0 +1,165 @@
+// The environment in the interactive engine: each edit of it falls in the class that redoes just
+// enough (docs/engine.md, "What an edit invalidates"), kd and ks edits under it recombine without
+// a ray, a shininess edit and a rotation trace no primary ray, and every converged frame equals
+// gloss-cli's one-shot render of the same scene (fast path and exact estimates alike).
+#include <mutex>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "engine/change_class.h"
+#include "engine/progressive_renderer.h"
+#include "engine/renderer.h"
+#include "support/scene_fixtures.h"
+
+namespace gloss {
+namespace {
+
+std::shared_ptr<const EnvironmentMap> gradient_map() {
+  auto map = std::make_shared<EnvironmentMap>();
+  map->radiance = Image(64, 32);
+  for (int j = 0; j < 32; ++j) {
+    for (int i = 0; i < 64; ++i) {
+      map->radiance.at(i, j) = glm::vec3(0.2f + i / 64.0f, 1.0f - j / 32.0f, 0.3f);
+    }
+  }
+  map->radiance.at(40, 8) = glm::vec3(50.0f);  // a small sun
+  return map;
+}
+
+Scene scene_in_environment(int env_samples) {
+  Scene scene = test::sphere_on_floor_scene();
+  scene.environment.map = gradient_map();
+  scene.environment.file = "gradient";
+  scene.render.env_samples = env_samples;
+  return scene;
+}
+
+TEST(EnvironmentChangeClass, EachEditRedoesJustEnough) {
+  const Scene before = scene_in_environment(0);
+  Scene after = before;
+  after.environment.rotation = 30.0f;
+  EXPECT_EQ(classify_change(before, after), ChangeClass::environment);
+  after = before;
+  after.environment.intensity = 2.0f;
+  EXPECT_EQ(classify_change(before, after), ChangeClass::shade);
+  after = before;
+  after.environment.as_background = false;
+  EXPECT_EQ(classify_change(before, after), ChangeClass::shade);
+  after = before;
+  after.environment.map = gradient_map();  // another map of the same file
+  EXPECT_EQ(classify_change(before, after), ChangeClass::environment);
+  after = before;
+  after.materials[0].shininess = 200.0f;  // the specular term depends on it
+  EXPECT_EQ(classify_change(before, after), ChangeClass::environment);
+  after = before;
+  after.materials[0].diffuse = glm::vec3(0.1f);
+  EXPECT_EQ(classify_change(before, after), ChangeClass::shade);
+  after = before;
+  after.environment = Environment{};  // removed: the slots go
+  EXPECT_EQ(classify_change(before, after), ChangeClass::light);
+  EXPECT_EQ(classify_change(after, before), ChangeClass::light);
+}
+
+double max_abs_diff(const Image& a, const Image& b) {
+  double worst = 0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      worst = std::max(worst, std::abs(double(a.pixels[i][c]) - double(b.pixels[i][c])));
+    }
+  }
+  return worst;
+}
+
+struct Frames {
+  std::mutex mutex;
+  std::vector<FrameInfo> seen;
+};
+
+// Converges engine on scene; the frames published on the way are kept in frames.
+std::shared_ptr<const RenderedFrame> converge(ProgressiveRenderer& engine, const Scene& scene,
+                                              Frames& frames) {
+  {
+    std::lock_guard<std::mutex> lock(frames.mutex);
+    frames.seen.clear();
+  }
+  engine.set_scene(scene);
+  EXPECT_TRUE(engine.wait_converged(60000));
+  return engine.latest();
+}
+
+void expect_fresh(const RenderedFrame& frame, const Scene& scene) {
+  RenderOptions options;
+  options.placement = &frame.refined;
+  const TermImages fresh = render(scene, options);
+  EXPECT_LE(max_abs_diff(frame.images.total, fresh.total), 1e-5);
+  EXPECT_LE(max_abs_diff(frame.images.diffuse, fresh.diffuse), 1e-5);
+  EXPECT_LE(max_abs_diff(frame.images.specular, fresh.specular), 1e-5);
+}
+
+TEST(EnvironmentEngine, EditsUnderTheFastPathTraceNoRays) {
+  Frames frames;
+  ProgressiveRenderer engine;
+  engine.set_on_publish([&] {
+    std::lock_guard<std::mutex> lock(frames.mutex);
+    frames.seen.push_back(engine.latest()->info);
+  });
+  Scene scene = scene_in_environment(0);
+  converge(engine, scene, frames);
+  scene.materials[0].diffuse = glm::vec3(0.7f, 0.2f, 0.1f);
+  scene.environment.intensity = 1.5f;
+  auto frame = converge(engine, scene, frames);
+  EXPECT_EQ(frame->info.cause, ChangeClass::shade);
+  EXPECT_EQ(frame->info.rays, 0);
+  expect_fresh(*frame, scene);
+  for (float rotation : {45.0f, -120.0f}) {
+    scene.environment.rotation = rotation;
+    frame = converge(engine, scene, frames);
+    EXPECT_EQ(frame->info.cause, ChangeClass::environment);
+    EXPECT_EQ(frame->info.rays, 0);
+    expect_fresh(*frame, scene);
+  }
+  scene.materials[0].shininess = 300.0f;
+  frame = converge(engine, scene, frames);
+  EXPECT_EQ(frame->info.cause, ChangeClass::environment);
+  EXPECT_EQ(frame->info.rays, 0);
+  expect_fresh(*frame, scene);
+  engine.set_on_publish(nullptr);
+}
+
+TEST(EnvironmentEngine, ExactEstimatesConvergeToTheOneShotImageWithoutPrimaryRays) {
+  Frames frames;
+  ProgressiveRenderer engine;
+  engine.set_on_publish([&] {
+    std::lock_guard<std::mutex> lock(frames.mutex);
+    frames.seen.push_back(engine.latest()->info);
+  });
+  Scene scene = scene_in_environment(32);
+  auto frame = converge(engine, scene, frames);
+  expect_fresh(*frame, scene);
+  // A rotation: the first frame recomputes the fast path from the cached hits (no ray), the
+  // next ones trace the estimates' shadow rays only: fewer than one primary ray per sample each
+  // step would need besides.
+  scene.environment.rotation = 60.0f;
+  frame = converge(engine, scene, frames);
+  expect_fresh(*frame, scene);
+  {
+    std::lock_guard<std::mutex> lock(frames.mutex);
+    ASSERT_GE(frames.seen.size(), 2u);
+    EXPECT_EQ(frames.seen.front().cause, ChangeClass::environment);
+    EXPECT_EQ(frames.seen.front().rays, 0);
+  }
+  // A material constant keeps the converged estimates: one recombination, no ray.
+  scene.materials[0].specular = glm::vec3(0.9f, 0.6f, 0.2f);
+  frame = converge(engine, scene, frames);
+  {
+    std::lock_guard<std::mutex> lock(frames.mutex);
+    EXPECT_EQ(frames.seen.size(), 1u);
+  }
+  EXPECT_EQ(frame->info.rays, 0);
+  expect_fresh(*frame, scene);
+  engine.set_on_publish(nullptr);
+}
+
+}  // namespace
+}  // namespace gloss
