@@ -25,6 +25,8 @@ const char* title(BrowsePurpose purpose) {
       return "Save materials";
     case BrowsePurpose::export_glsl:
       return "Export GLSL";
+    case BrowsePurpose::load_map:
+      return "Load map";
   }
   return "File";
 }
@@ -47,6 +49,8 @@ std::vector<std::string> extensions(BrowsePurpose purpose) {
       return {".json", ".mtl"};
     case BrowsePurpose::export_glsl:
       return {".frag", ".glsl"};
+    case BrowsePurpose::load_map:
+      return {".png", ".jpg", ".jpeg", ".exr", ".hdr"};
   }
   return {};
 }
@@ -58,6 +62,8 @@ RecentKind recent_kind(BrowsePurpose purpose) {
     case BrowsePurpose::load_materials:
     case BrowsePurpose::save_materials:
       return RecentKind::materials;
+    case BrowsePurpose::load_map:
+      return RecentKind::maps;
     case BrowsePurpose::open_scene:
     case BrowsePurpose::save_scene:
     case BrowsePurpose::export_glsl:

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "editor/model/session/recent_files.h"
+#include "scene/texture_map.h"
 
 namespace gloss {
 
@@ -17,6 +18,7 @@ enum class BrowsePurpose {
   save_scene,
   save_materials,
   export_glsl,  // issue 12: the selected object's material as a fragment shader
+  load_map,     // an image into a map slot of a material (map_target says which)
 };
 // The recent list the panel offers for purpose (scenes for scenes, models for Add model, ...).
 RecentKind recent_kind(BrowsePurpose purpose);
@@ -44,6 +46,11 @@ struct FileBrowser {
   std::vector<Entry> entries;
   bool stale = true;        // entries need re-reading
   bool focus_name = false;  // put the keyboard in the path field on the next draw
+  // For load_map: the object whose material gets the image, and the slot.
+  struct MapTarget {
+    int object = 0;
+    MapSlot slot = MapSlot::diffuse;
+  } map_target;
 
   void show(BrowsePurpose what, const std::filesystem::path& start_folder,
             const std::string& suggested_name);
