@@ -25,6 +25,8 @@ const char* title(BrowsePurpose purpose) {
       return "Save materials";
     case BrowsePurpose::export_glsl:
       return "Export GLSL";
+    case BrowsePurpose::open_environment:
+      return "Environment map";
     case BrowsePurpose::load_map:
       return "Load map";
   }
@@ -49,6 +51,8 @@ std::vector<std::string> extensions(BrowsePurpose purpose) {
       return {".json", ".mtl"};
     case BrowsePurpose::export_glsl:
       return {".frag", ".glsl"};
+    case BrowsePurpose::open_environment:
+      return {".hdr", ".exr", ".png"};
     case BrowsePurpose::load_map:
       return {".png", ".jpg", ".jpeg", ".exr", ".hdr"};
   }
@@ -58,6 +62,7 @@ std::vector<std::string> extensions(BrowsePurpose purpose) {
 RecentKind recent_kind(BrowsePurpose purpose) {
   switch (purpose) {
     case BrowsePurpose::add_model:
+    case BrowsePurpose::open_environment:  // files added to a scene (the list is not extended)
       return RecentKind::model;
     case BrowsePurpose::load_materials:
     case BrowsePurpose::save_materials:

@@ -17,8 +17,9 @@ enum class BrowsePurpose {
   load_materials,
   save_scene,
   save_materials,
-  export_glsl,  // issue 12: the selected object's material as a fragment shader
-  load_map,     // an image into a map slot of a material (map_target says which)
+  export_glsl,       // issue 12: the selected object's material as a fragment shader
+  open_environment,  // an environment map (HDR, EXR, PNG)
+  load_map,          // an image into a map slot of a material (map_target says which)
 };
 // The recent list the panel offers for purpose (scenes for scenes, models for Add model, ...).
 RecentKind recent_kind(BrowsePurpose purpose);

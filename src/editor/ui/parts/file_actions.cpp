@@ -213,6 +213,12 @@ void FileActions::browser_action(const std::string& path) {
       case BrowsePurpose::load_map:
         load_map(browser.map_target.object, browser.map_target.slot, path);
         break;
+      case BrowsePurpose::open_environment:
+        // The command reads the map; a bad file throws (the panel shows why) and the scene
+        // keeps what it had.
+        m_document.execute(SetEnvironment{path});
+        m_commands.info("environment " + path);
+        break;
     }
     browser.open = false;
   } catch (const std::exception& e) {
