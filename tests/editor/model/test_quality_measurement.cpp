@@ -86,11 +86,14 @@ TEST(QualityMeasurement, TeapotSceneListsEveryKnob) {
   q.start(load_scene(std::string(GLOSS_SCENES_DIR) + "/teapot.json"), tiny_options());
   q.wait();
   ASSERT_EQ(q.state(), QualityMeasurement::State::done) << q.error();
-  // Every knob but the maps' (the teapot scene has none).
+  // Every knob but the environment's and the maps' (the teapot scene has neither).
   std::vector<Knob> expected = tradeoff_knobs();
   expected.erase(
       std::remove_if(expected.begin(), expected.end(),
-                     [](Knob k) { return k == Knob::map_filter || k == Knob::map_resolution; }),
+                     [](Knob k) {
+                       return k == Knob::map_filter || k == Knob::map_resolution ||
+                              k == Knob::env_samples || k == Knob::env_resolution;
+                     }),
       expected.end());
   EXPECT_EQ(q.knobs(), expected);
   for (const Knob knob : expected) {
