@@ -51,6 +51,10 @@ class ScriptHost {
   virtual LineResult memory();
   // A viewport gesture (script.h, MouseAction); nothing without a display.
   virtual LineResult mouse(const MouseAction&) { return LineResult::go_on(); }
+  // The window's layout and keyboard shortcuts (script.h, LayoutAction and KeyAction); without a
+  // display these say so on stdout and go on.
+  virtual LineResult layout(const LayoutAction& action, const std::string& where);
+  virtual LineResult key(const KeyAction& action, const std::string& where);
 
   // The snapshot `snapshot` takes and `view ab snapshot` compares with. Kept here by default
   // (headless runs, tests); the editor keeps it in its App so the panel's button shares it.
