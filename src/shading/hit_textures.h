@@ -4,6 +4,9 @@
 // map. Every lookup reads its map at the level of the hit's footprint (texture/footprint.h),
 // or as a knob says (MapFilter). The reference path calls this per sample; the renderer's lanes
 // make the same calls (engine/trace/texture_lanes.cpp); the GLSL path mirrors it.
+#include <array>
+#include <cmath>
+
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -39,13 +42,17 @@ struct MapValues {
   glm::vec<4, T> texel[kMapSlots] = {};
 };
 
-// The level a map is read at for a footprint (before the pyramid clamps it).
+// The level a map is read at for a footprint (before the pyramid clamps it), from the
+// footprint or from its log2 (footprint_level's first term, shared by the maps of one set).
+template <class T>
+T map_level_of_log(const TextureMap& map, T log2_footprint) {
+  const Texture& t = *map.texture;
+  return log2_footprint + texel_density_log2(t.width(), t.height(), static_cast<T>(map.scale.x),
+                                             static_cast<T>(map.scale.y));
+}
 template <class T>
 T map_level(const TextureMap& map, T footprint) {
-  const Texture& t = *map.texture;
-  return footprint_level(footprint,
-                         texel_density_log2(t.width(), t.height(), static_cast<T>(map.scale.x),
-                                            static_cast<T>(map.scale.y)));
+  return map_level_of_log(map, std::log2(footprint));
 }
 
 template <class T>
@@ -67,43 +74,53 @@ template <class T>
 MapValues<T> map_values(const Material& material, const MapFrame<T>& frame, MapFilter filter) {
   MapValues<T> out;
   out.n = frame.n;
+  if (!material.map_storage) return out;
+  // The maps by slot, looked up once (Material::map is out of line), and log2 of each set's
+  // footprint once for every map that reads the set: a renderer makes this call per sample.
+  const std::array<TextureMap, kMapSlots>& maps = *material.map_storage;
+  const T log_footprint0 = std::log2(frame.footprint[0]);
+  const T log_footprint[2] = {log_footprint0, frame.footprint[1] == frame.footprint[0]
+                                                  ? log_footprint0
+                                                  : std::log2(frame.footprint[1])};
+  auto map_of = [&](MapSlot slot) -> const TextureMap& { return maps[static_cast<int>(slot)]; };
+  auto set_of = [&](MapSlot slot) { return map_of(slot).uv_set == 1 ? 1 : 0; };
   auto read = [&](MapSlot slot, const glm::vec<2, T>& uv) {
-    const TextureMap& map = material.map(slot);
-    const int set = map.uv_set == 1 ? 1 : 0;
-    const T level = map_level(map, frame.footprint[set]);
+    const TextureMap& map = map_of(slot);
+    const T level = map_level_of_log(map, log_footprint[set_of(slot)]);
     const int s = static_cast<int>(slot);
     out.level[s] = clamp_level(*map.texture, level);
     out.texel[s] = read_map(map, filter, uv, level);
     return out.texel[s];
   };
-  auto uv_of = [&](MapSlot slot) { return frame.uv[material.map(slot).uv_set == 1 ? 1 : 0]; };
-  if (material.has_map(MapSlot::diffuse)) {
+  auto uv_of = [&](MapSlot slot) { return frame.uv[set_of(slot)]; };
+  auto has = [&](MapSlot slot) { return map_of(slot).present(); };
+  if (has(MapSlot::diffuse)) {
     out.kd = glm::vec<3, T>(read(MapSlot::diffuse, uv_of(MapSlot::diffuse)));
     out.ka = out.kd;
   }
-  if (material.has_map(MapSlot::ambient)) {
+  if (has(MapSlot::ambient)) {
     out.ka = glm::vec<3, T>(read(MapSlot::ambient, uv_of(MapSlot::ambient)));
   }
-  if (material.has_map(MapSlot::specular)) {
+  if (has(MapSlot::specular)) {
     out.ks = glm::vec<3, T>(read(MapSlot::specular, uv_of(MapSlot::specular)));
   }
-  if (material.has_map(MapSlot::emission)) {
+  if (has(MapSlot::emission)) {
     out.ke = glm::vec<3, T>(read(MapSlot::emission, uv_of(MapSlot::emission)));
   }
-  if (material.has_map(MapSlot::shininess)) {
+  if (has(MapSlot::shininess)) {
     out.alpha = read(MapSlot::shininess, uv_of(MapSlot::shininess)).x;
   }
-  if (material.has_map(MapSlot::opacity)) {
+  if (has(MapSlot::opacity)) {
     const int s = static_cast<int>(MapSlot::opacity);
-    out.texel[s] = read_map(material.map(MapSlot::opacity), MapFilter::bilinear,
-                            uv_of(MapSlot::opacity), T(0));
+    out.texel[s] =
+        read_map(map_of(MapSlot::opacity), MapFilter::bilinear, uv_of(MapSlot::opacity), T(0));
   }
   // The normal maps work in the surface's own orientation (the side it was modelled with), then
   // turn with it: on the back of a two-sided surface a bump is a dent.
   const glm::vec<3, T> n0 = frame.side * frame.n;
   glm::vec<3, T> n = n0;
-  if (material.has_map(MapSlot::normal)) {
-    const TextureMap& map = material.map(MapSlot::normal);
+  if (has(MapSlot::normal)) {
+    const TextureMap& map = map_of(MapSlot::normal);
     const glm::vec<4, T> texel = read(MapSlot::normal, uv_of(MapSlot::normal));
     glm::vec<3, T> n_t = tangent_space_normal(texel, static_cast<T>(material.normal_scale));
     // A map turned or mirrored in (u, v) turns its tangent-space x and y back.
@@ -116,14 +133,14 @@ MapValues<T> map_values(const Material& material, const MapFrame<T>& frame, MapF
     }
     n = normal_from_map(n, frame.tangent, frame.handedness, n_t);
   }
-  if (material.has_map(MapSlot::bump)) {
+  if (has(MapSlot::bump)) {
     const glm::vec<2, T> uv = uv_of(MapSlot::bump);
-    const int set = material.map(MapSlot::bump).uv_set == 1 ? 1 : 0;
+    const int set = set_of(MapSlot::bump);
     const T du = bump_step(frame.footprint[set]);
     const T scale = static_cast<T>(material.bump_scale);
     const T h = scale * read(MapSlot::bump, uv).x;
-    const TextureMap& map = material.map(MapSlot::bump);
-    const T level = map_level(map, frame.footprint[set]);
+    const TextureMap& map = map_of(MapSlot::bump);
+    const T level = map_level_of_log(map, log_footprint[set]);
     const T h_u = scale * read_map(map, filter, uv + glm::vec<2, T>(du, T(0)), level).x;
     const T h_v = scale * read_map(map, filter, uv + glm::vec<2, T>(T(0), du), level).x;
     glm::vec<3, T> dpdu = frame.dpdu, dpdv = frame.dpdv;

@@ -22,13 +22,19 @@ MapFrame<T> mesh_map_frame(const Mesh& mesh, std::uint32_t prim, const T (&b)[3]
   const glm::uvec3 tri = mesh.triangles[prim];
   const glm::vec<3, T> p0(mesh.positions[tri.x]), p1(mesh.positions[tri.y]),
       p2(mesh.positions[tri.z]);
-  for (int set = 0; set < 2; ++set) {
+  // A mesh with one set reads it for set 1 too: the same values, computed once.
+  const int sets = mesh.uv[1].empty() ? 1 : 2;
+  for (int set = 0; set < sets; ++set) {
     const std::vector<glm::vec2>& uv = mesh.uv_set(set);
     const glm::vec<2, T> t0(uv[tri.x]), t1(uv[tri.y]), t2(uv[tri.z]);
     f.uv[set] = b[0] * t0 + b[1] * t1 + b[2] * t2;
     f.footprint[set] =
         footprint_uv(t, spread, cos_theta, triangle_uv_density(p0, p1, p2, t0, t1, t2));
     if (set == 0) triangle_uv_derivatives(p0, p1, p2, t0, t1, t2, f.dpdu, f.dpdv);
+  }
+  if (sets == 1) {
+    f.uv[1] = f.uv[0];
+    f.footprint[1] = f.footprint[0];
   }
   if (mesh.tangents.size() == mesh.positions.size()) {
     const glm::vec4 &a = mesh.tangents[tri.x], &c = mesh.tangents[tri.y], &d = mesh.tangents[tri.z];
