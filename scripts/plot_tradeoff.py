@@ -31,6 +31,9 @@ KNOB_STYLE = {  # marker, colour (colour-blind-safe Okabe-Ito palette)
     "shading": ("v", "#D55E00"),
     "resolution": ("P", "#56B4E9"),
     "shadows": ("X", "#000000"),
+    # Texture maps: how they are filtered, and at what fraction of their size.
+    "map_filter": ("H", "#882255"),
+    "map_resolution": ("p", "#44AA99"),
     # The raster (GLSL) path's rows: hollow markers, colours outside the palette above.
     "cpu": ("p", "#444444"),
     "raster-shading": ("<", "#7B3294"),
@@ -70,7 +73,8 @@ def label_text(knob, setting):
         return setting
     if knob in RASTER_LABEL:
         return RASTER_LABEL[knob] + " " + setting
-    return ("tess" if knob == "tessellation" else knob) + " " + setting
+    short = {"tessellation": "tess", "map_filter": "filter", "map_resolution": "maps"}
+    return short.get(knob, knob) + " " + setting
 
 
 def place_labels(fig, ax, labels):
@@ -191,10 +195,11 @@ def main():
         xs = [r["time_ms"] for r in knob_rows]
         ys = [max(r["rmse"], floor) for r in knob_rows]
         own = [(r, x, y) for r, x, y in zip(knob_rows, xs, ys) if r not in base_rows]
-        if knob in ("spp", "tessellation", "resolution") and base_point is not None:
+        ordered = ("spp", "tessellation", "resolution", "map_resolution")
+        if knob in ordered and base_point is not None:
             # The joining line passes through the star, not through this knob's own base timing.
             xs = [base_point[0] if r in base_rows else x for r, x in zip(knob_rows, xs)]
-        if knob in ("spp", "tessellation", "resolution"):  # ordered settings: join them
+        if knob in ordered:  # ordered settings: join them
             ax.plot(xs, ys, color=colour, linewidth=0.8, alpha=0.5, zorder=2)
         ax.scatter([x for _, x, _ in own], [y for _, _, y in own], marker=marker, color=colour,
                    s=46, label=knob, zorder=3, edgecolors="white", linewidths=0.6)

@@ -158,18 +158,17 @@ float gloss_energy_normalization(int model, float alpha) {
   return model == GLOSS_PHONG ? (alpha + 2.0) / (2.0 * pi) : (alpha + 8.0) / (8.0 * pi);
 }
 
-// The whole contract at one surface point with the material and lights defined above.
-// p: world position; n_g: geometric normal; n: shading normal (unit; n = n_g on spheres and flat
-// meshes); eye: camera position. The two-sided rule is applied here.
-GlossTerms gloss_shade(vec3 p, vec3 n_g, vec3 n, vec3 eye) {
-  vec3 v = normalize(eye - p);  // v = normalize(eye - p)
-  gloss_two_sided(n_g, n, v);
+// The contract at one surface point with the given material values (the constants, or the
+// constants times what maps give there: texture_lookup.glsl). p: world position; n_g and n:
+// geometric and shading normal, unit, both already on the viewer's side; v: unit, to the eye.
+GlossTerms gloss_shade_at(vec3 p, vec3 n_g, vec3 n, vec3 v, vec3 ka, vec3 kd, vec3 ks, vec3 ke,
+                          float alpha) {
   GlossTerms t;
-  t.emissive = gloss_ke;  // emissive = ke
+  t.emissive = ke;  // emissive = ke
   vec3 ambient_light = gloss_scene_ambient;
   t.diffuse = vec3(0.0);
   t.specular = vec3(0.0);
-  float norm = gloss_energy_normalize ? gloss_energy_normalization(gloss_model, gloss_alpha) : 1.0;
+  float norm = gloss_energy_normalize ? gloss_energy_normalization(gloss_model, alpha) : 1.0;
 #if GLOSS_LIGHT_COUNT > 0
   for (int i = 0; i < GLOSS_LIGHT_COUNT; ++i) {
     ambient_light += gloss_light_ambient[i];  // A_scene + sum_i La_i: not attenuated, not shadowed
@@ -177,23 +176,31 @@ GlossTerms gloss_shade(vec3 p, vec3 n_g, vec3 n, vec3 eye) {
     GlossLightFactors f = gloss_light(i, p, n, v, vis);
     float c = gloss_model_cosine(f, gloss_model);
     // diffuse_i = kd * Ld_i * ndl * att * spot * vis
-    t.diffuse += gloss_kd * gloss_light_diffuse[i] * f.diffuse_weight;
+    t.diffuse += kd * gloss_light_diffuse[i] * f.diffuse_weight;
     // specular_i = ks * Ls_i * c^alpha * att * spot * vis (times the normalisation when on)
-    t.specular += gloss_ks * gloss_light_specular[i] * (f.spec_weight *
-                                                        gloss_specular_power(c, gloss_alpha) *
-                                                        norm);
+    t.specular += ks * gloss_light_specular[i] * (f.spec_weight *
+                                                  gloss_specular_power(c, alpha) * norm);
   }
 #endif
 #if GLOSS_ENVIRONMENT
   // The environment's fast path (environment.glsl): kd E(n) / pi and ks times the lobe's mean
   // about the mirror direction, at the intensity (no energy normalisation: the lobe is normalised).
   vec3 mirror = normalize(2.0 * dot(n, v) * n - v);
-  float env_alpha = gloss_model == GLOSS_PHONG ? gloss_alpha : 0.25 * gloss_alpha;
-  t.diffuse += gloss_kd * (gloss_env_diffuse(n) * gloss_env_intensity);
-  t.specular += gloss_ks * (gloss_env_specular(env_alpha, mirror) * gloss_env_intensity);
+  float env_alpha = gloss_model == GLOSS_PHONG ? alpha : 0.25 * alpha;
+  t.diffuse += kd * (gloss_env_diffuse(n) * gloss_env_intensity);
+  t.specular += ks * (gloss_env_specular(env_alpha, mirror) * gloss_env_intensity);
 #endif
-  t.ambient = gloss_ka * ambient_light;  // ambient = ka * (A_scene + sum_i La_i)
+  t.ambient = ka * ambient_light;  // ambient = ka * (A_scene + sum_i La_i)
   // total = emissive + ambient + sum_i (diffuse_i + specular_i), in total.h's fixed order
   t.total = ((t.emissive + t.ambient) + t.diffuse) + t.specular;
   return t;
+}
+
+// The whole contract at one surface point with the material and lights defined above.
+// p: world position; n_g: geometric normal; n: shading normal (unit; n = n_g on spheres and flat
+// meshes); eye: camera position. The two-sided rule is applied here.
+GlossTerms gloss_shade(vec3 p, vec3 n_g, vec3 n, vec3 eye) {
+  vec3 v = normalize(eye - p);  // v = normalize(eye - p)
+  gloss_two_sided(n_g, n, v);
+  return gloss_shade_at(p, n_g, n, v, gloss_ka, gloss_kd, gloss_ks, gloss_ke, gloss_alpha);
 }

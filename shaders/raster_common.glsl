@@ -27,6 +27,22 @@ uniform vec2 gloss_env_rotation;
 uniform float gloss_env_intensity;
 #endif
 
+#if GLOSS_MAPS
+// The object's maps (texture_lookup.glsl says what each is); the raster path binds an empty
+// texture to the slots the material has none for.
+uniform sampler2D gloss_map_diffuse, gloss_map_ambient, gloss_map_specular, gloss_map_emission;
+uniform sampler2D gloss_map_shininess, gloss_map_opacity, gloss_map_normal, gloss_map_bump;
+uniform bool gloss_map_present[8];
+uniform ivec2 gloss_map_wrap[8];
+uniform vec4 gloss_map_transform[8];
+uniform vec2 gloss_map_offset[8];
+uniform ivec2 gloss_map_info[8];
+uniform bool gloss_map_alpha[8];
+uniform int gloss_map_filter;
+uniform float gloss_normal_scale, gloss_bump_scale;
+uniform float gloss_cone_spread;
+#endif
+
 // The view this pass draws from: the camera (docs/spec/shading.md, "The camera": forward f,
 // right r, up u, and the image-plane scales tan(fov_y / 2) W / H and tan(fov_y / 2)), one
 // face of a light's cube (scales 1: a 90 degree square frustum), a spot's square frustum

@@ -5,11 +5,57 @@
 layout(location = 0) in vec3 gloss_in_position;
 layout(location = 1) in vec3 gloss_in_normal;       // shading normal (= face normal when flat)
 layout(location = 2) in vec3 gloss_in_face_normal;  // n_g, as wound
+#if GLOSS_MAPS
+// The maps' attributes (raster_geometry.cpp): (u, v) of sets 0 and 1, set 0's tangent and
+// handedness, and per triangle (equal at its three corners) each set's density rho and set 0's
+// dp/du, dp/dv.
+layout(location = 3) in vec2 gloss_in_uv0;
+layout(location = 4) in vec2 gloss_in_uv1;
+layout(location = 5) in vec4 gloss_in_tangent;
+layout(location = 6) in vec2 gloss_in_density;
+layout(location = 7) in vec3 gloss_in_dpdu;
+layout(location = 8) in vec3 gloss_in_dpdv;
+// The triangle's corners and their (u, v) (set 0's three, then set 1's), the same at each
+// corner: the fragment shader intersects its pixel's ray with them.
+layout(location = 9) in vec3 gloss_in_p0;
+layout(location = 10) in vec3 gloss_in_p1;
+layout(location = 11) in vec3 gloss_in_p2;
+layout(location = 12) in vec4 gloss_in_corner_uv_a;  // set 0: corner 0, corner 1
+layout(location = 13) in vec4 gloss_in_corner_uv_b;  // set 0: corner 2; set 1: corner 0
+layout(location = 14) in vec4 gloss_in_corner_uv_c;  // set 1: corner 1, corner 2
+out vec2 gloss_uv0, gloss_uv1;
+flat out vec3 gloss_p0, gloss_p1, gloss_p2;
+flat out vec4 gloss_corner_uv_a, gloss_corner_uv_b, gloss_corner_uv_c;
+#if !defined(GLOSS_SHADOW_PASS)
+out vec4 gloss_tangent;
+flat out vec2 gloss_density;
+flat out vec3 gloss_dpdu, gloss_dpdv;
+#endif
+void gloss_pass_maps() {
+  gloss_uv0 = gloss_in_uv0;
+  gloss_uv1 = gloss_in_uv1;
+  gloss_p0 = gloss_in_p0;
+  gloss_p1 = gloss_in_p1;
+  gloss_p2 = gloss_in_p2;
+  gloss_corner_uv_a = gloss_in_corner_uv_a;
+  gloss_corner_uv_b = gloss_in_corner_uv_b;
+  gloss_corner_uv_c = gloss_in_corner_uv_c;
+#if !defined(GLOSS_SHADOW_PASS)
+  gloss_tangent = gloss_in_tangent;
+  gloss_density = gloss_in_density;
+  gloss_dpdu = gloss_in_dpdu;
+  gloss_dpdv = gloss_in_dpdv;
+#endif
+}
+#else
+void gloss_pass_maps() {}
+#endif
 
 #if defined(GLOSS_SHADOW_PASS)
 out vec3 gloss_position;
 void main() {
   gloss_position = gloss_in_position;
+  gloss_pass_maps();
   gl_Position = gloss_project(gloss_in_position);
 }
 #elif GLOSS_PER_VERTEX
@@ -50,6 +96,7 @@ void main() {
 #endif
   gloss_position = p;
   gloss_face_normal = gloss_in_face_normal;
+  gloss_pass_maps();
   gl_Position = gloss_project(p);
 }
 #else
@@ -59,6 +106,7 @@ void main() {
   gloss_position = gloss_in_position;
   gloss_normal = gloss_in_normal;
   gloss_face_normal = gloss_in_face_normal;
+  gloss_pass_maps();
   gl_Position = gloss_project(gloss_in_position);
 }
 #endif

@@ -19,6 +19,7 @@
 #include "analysis/image_metrics.h"
 #include "analysis/paired_timing.h"
 #include "analysis/ray_baseline.h"
+#include "analysis/texture_bench.h"
 #include "base/timing.h"
 #include "engine/environment/environment_stage.h"
 #include "engine/progressive_renderer.h"
@@ -242,6 +243,7 @@ BenchReport run_benchmark(const Scene& input, const BenchOptions& options) {
       report.tessellation.push_back(point);
     }
   }
+  measure_textured(scene, options, report);
   report.bench_peak_rss_mb = peak_rss_mb();
   return report;
 }
@@ -280,6 +282,14 @@ std::string format_bench_table(const BenchReport& r) {
   row("threads_speedup", r.threads_speedup, "x", "target >= 1.7");
   row("cache_bytes_per_pixel", r.cache_bytes_per_pixel, "B", "per-pixel factors");
   row("sample_cache_bytes_per_sample", r.sample_cache_bytes_per_sample, "B", "per-sample cache");
+  row("textured_retrace_ms", r.textured_retrace_ms, "ms", "2048^2 maps everywhere, normals on quads");
+  row("textured_retrace_ratio", r.textured_retrace_ratio, "", "over the untextured; target <= 1.3");
+  row("textured_reshade_ms", r.textured_reshade_ms, "ms", "kd edit on the textured scene");
+  row("textured_reshade_ratio", r.textured_reshade_ratio, "", "over today's re-shade; target <= 1.5");
+  row("textured_bandwidth_floor_ms", r.textured_bandwidth_floor_ms, "ms",
+      "streaming the textured re-shade's bytes");
+  row("textured_cache_bytes_per_pixel", r.textured_cache_bytes_per_pixel, "B",
+      "what the textured re-shade reads");
   if (r.peak_rss_mb > 0) row("peak_rss_mb", r.peak_rss_mb, "MB", "plain render, own process");
   row("bench_peak_rss_mb", r.bench_peak_rss_mb, "MB", "this benchmark's process");
   if (!r.tessellation.empty()) {
@@ -339,6 +349,12 @@ std::string bench_to_json(const BenchReport& r) {
   j["threads_speedup"] = r.threads_speedup;
   j["cache_bytes_per_pixel"] = r.cache_bytes_per_pixel;
   j["sample_cache_bytes_per_sample"] = r.sample_cache_bytes_per_sample;
+  j["textured_retrace_ms"] = r.textured_retrace_ms;
+  j["textured_retrace_ratio"] = r.textured_retrace_ratio;
+  j["textured_reshade_ms"] = r.textured_reshade_ms;
+  j["textured_reshade_ratio"] = r.textured_reshade_ratio;
+  j["textured_bandwidth_floor_ms"] = r.textured_bandwidth_floor_ms;
+  j["textured_cache_bytes_per_pixel"] = r.textured_cache_bytes_per_pixel;
   j["peak_rss_mb"] = r.peak_rss_mb;
   j["bench_peak_rss_mb"] = r.bench_peak_rss_mb;
   nlohmann::json tess = nlohmann::json::array();

@@ -46,6 +46,11 @@ struct BenchReport {
   double single_thread_ms = 0, threads_speedup = 0;
   double cache_bytes_per_pixel = 0;          // per-pixel factors (what a constant edit reads)
   double sample_cache_bytes_per_sample = 0;  // per-sample cache (exponent and light edits)
+  // Maps (texture_bench.h): a 2048 x 2048 map on every surface, normal maps on the quads.
+  double textured_retrace_ms = 0, textured_retrace_ratio = 0;  // over the untextured re-trace
+  double textured_reshade_ms = 0, textured_reshade_ratio = 0;  // kd edit, over today's
+  double textured_bandwidth_floor_ms = 0;     // streaming the textured re-shade's bytes
+  double textured_cache_bytes_per_pixel = 0;  // what the textured re-shade reads
   double peak_rss_mb = 0;        // of a plain render at this size in its own process (the CLI's)
   double bench_peak_rss_mb = 0;  // of this benchmark's process
   std::vector<TessellationPoint> tessellation;

@@ -18,6 +18,13 @@ ChangeClass classify_change(const Scene& before, const Scene& after, const Scene
   if (change == ChangeClass::exponent && make_render_plan(after).environment) {
     change = ChangeClass::environment;
   }
+  // Under a shininess map the energy normalisation varies per sample (power_lanes.h
+  // ScaledExponent): the switch rebuilds the per-pixel factors.
+  if (change == ChangeClass::shade &&
+      before.render.energy_normalize != after.render.energy_normalize &&
+      make_render_plan(after).textures.alpha) {
+    change = ChangeClass::exponent;
+  }
   if (change == ChangeClass::none && diff.any) change = ChangeClass::shade;
   return change;
 }

@@ -6,6 +6,7 @@
 #include "engine/environment/environment_stage.h"
 #include "engine/progressive_state.h"
 #include "engine/trace/single_sample_pass.h"
+#include "engine/trace/texture_lanes.h"
 
 namespace gloss {
 
@@ -78,6 +79,10 @@ bool ProgressiveRenderer::Impl::step() {
   } else if (dirty == ChangeClass::environment) {
     redo = ChangeClass::environment;  // its factors from the cached hits, no rays
     ok = recompute_environment_factors(cache, ctx);
+  } else if (dirty == ChangeClass::texture) {
+    redo = ChangeClass::texture;  // the maps at the cached hits, no rays
+    ok = resample_textures(cache, ctx) &&
+         (!ctx.plan.environment || recompute_environment_factors(cache, ctx));
   } else if (dirty == ChangeClass::light) {
     redo = ChangeClass::light;
     // One plane (one sample per pixel, or adaptive sampling's centres): light and pixel factors

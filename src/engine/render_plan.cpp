@@ -68,6 +68,23 @@ RenderPlan make_render_plan(const Scene& scene, bool full) {
     any_ks = any_ks || nonzero(m.specular);
   }
   plan.spheres = has_object_type(scene, ObjectType::sphere);
+  // Maps of the materials some object uses.
+  std::vector<bool> used(scene.materials.size(), false);
+  for (const Object& o : scene.objects) {
+    if (o.material >= 0 && o.material < static_cast<int>(used.size())) used[o.material] = true;
+  }
+  TexturePlan& t = plan.textures;
+  for (std::size_t m = 0; m < scene.materials.size(); ++m) {
+    if (!used[m]) continue;
+    const Material& mat = scene.materials[m];
+    t.kd = t.kd || mat.has_map(MapSlot::diffuse);
+    t.ka = t.ka || mat.has_map(MapSlot::ambient);
+    t.ks = t.ks || mat.has_map(MapSlot::specular);
+    t.ke = t.ke || mat.has_map(MapSlot::emission);
+    t.alpha = t.alpha || mat.has_map(MapSlot::shininess);
+    t.normals = t.normals || mat.has_map(MapSlot::normal) || mat.has_map(MapSlot::bump);
+  }
+  t.filter = scene.render.map_filter;
   const bool environment = scene.environment.present();
   plan.sky = environment;
   if (full) {

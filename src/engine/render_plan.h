@@ -9,6 +9,49 @@
 
 namespace gloss {
 
+// What the materials' maps ask of a render (docs/engine.md, "Maps"): which multipliers vary per
+// sample, kept per sample as texel channels in the caches, and whether maps move the shading
+// normal.
+struct TexturePlan {
+  bool kd = false;       // some material has a diffuse map (it also multiplies ka)
+  bool ka = false;       // some material has an ambient map: ka has channels of its own
+  bool ks = false;       // specular maps
+  bool ke = false;       // emission maps
+  bool alpha = false;    // shininess maps
+  bool normals = false;  // normal or bump maps
+  MapFilter filter = MapFilter::trilinear;
+
+  // Per-sample channels, in this order where present: kd (r, g, b), ka (r, g, b), ks, ke, alpha.
+  // Without an ambient map of its own, ka reads kd's channels (or 1 where there are none).
+  int kd_channel() const { return kd || ka ? 0 : -1; }
+  int ka_channel() const { return ka ? 3 : kd_channel(); }
+  int ks_channel() const { return ks ? 3 * ((kd || ka ? 1 : 0) + (ka ? 1 : 0)) : -1; }
+  int ke_channel() const {
+    return ke ? 3 * ((kd || ka ? 1 : 0) + (ka ? 1 : 0) + (ks ? 1 : 0)) : -1;
+  }
+  int alpha_channel() const {
+    return alpha ? 3 * ((kd || ka ? 1 : 0) + (ka ? 1 : 0) + (ks ? 1 : 0) + (ke ? 1 : 0)) : -1;
+  }
+  std::size_t channels() const {
+    return 3 * ((kd || ka ? 1 : 0) + (ka ? 1 : 0) + (ks ? 1 : 0) + (ke ? 1 : 0)) + (alpha ? 1 : 0);
+  }
+  // Whether the packets look maps up at all.
+  bool any() const { return channels() > 0 || normals; }
+
+  // The filter is left out: another filter samples the same channels again (a `texture` edit).
+  bool operator==(const TexturePlan& o) const {
+    return kd == o.kd && ka == o.ka && ks == o.ks && ke == o.ke && alpha == o.alpha &&
+           normals == o.normals;
+  }
+};
+
+// The arrays of a cache plane: light-factor slots and texel channels.
+struct PlaneShape {
+  std::size_t slots = 0;
+  std::size_t texels = 0;
+  PlaneShape(std::size_t s, std::size_t t = 0) : slots(s), texels(t) {}  // NOLINT: from a count
+};
+
 struct RenderPlan {
   std::vector<int> lights;  // scene lights that reach diffuse or specular (Ld or Ls not 0)
   std::vector<bool> unit_attenuation;  // per planned light: (c0, c1, c2) == (1, 0, 0)
@@ -28,8 +71,11 @@ struct RenderPlan {
   // pixel, so turning as_background on or off only recombines.
   bool sky = false;
 
+  TexturePlan textures;
+
   // Slots of light factors per sample: the planned lights, then the environment's three.
   std::size_t slots() const { return lights.size() + (environment ? 3 : 0); }
+  PlaneShape plane_shape() const { return {slots(), textures.channels()}; }
   std::size_t environment_slot(int channel) const {
     return lights.size() + static_cast<std::size_t>(channel);
   }
@@ -38,7 +84,7 @@ struct RenderPlan {
     return lights == o.lights && unit_attenuation == o.unit_attenuation && sources == o.sources &&
            shadow_rays == o.shadow_rays && emissive == o.emissive && ambient == o.ambient &&
            diffuse == o.diffuse && specular == o.specular && spheres == o.spheres &&
-           environment == o.environment && sky == o.sky;
+           environment == o.environment && sky == o.sky && textures == o.textures;
   }
   bool operator!=(const RenderPlan& o) const { return !(*this == o); }
 };

@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "scene/render_settings.h"
 #include "scene/scene.h"
@@ -39,6 +41,13 @@ struct EnvironmentBreakdown {
   double visibility = 1.0;  // the visible share of the irradiance (1 with shadows off)
 };
 
+// What one map gave at the pixel's hit.
+struct MapReading {
+  bool present = false;
+  double level = 0.0;     // the mip level read (after clamping to the pyramid)
+  glm::dvec4 texel{0.0};  // the filtered value (r, g, b, a)
+};
+
 struct PixelBreakdown {
   int x = 0, y = 0;           // the pixel, of the scene's render size
   int width = 0, height = 0;  // the scene's render size
@@ -57,6 +66,11 @@ struct PixelBreakdown {
   glm::dvec3 total{0.0};  // shading/total.h form_total of the four (background on a miss)
   std::vector<LightBreakdown> lights;  // one per scene light, in order
   EnvironmentBreakdown environment;
+  // Maps (docs/spec/shading.md, "Textures"), when the material has any.
+  bool textured = false;
+  glm::dvec2 uv[2] = {glm::dvec2(0.0), glm::dvec2(0.0)};  // (u, v) of sets 0 and 1
+  double footprint[2] = {0.0, 0.0};  // the sample's footprint in each set's (u, v) units
+  MapReading maps[kMapSlots];        // by MapSlot
 };
 
 // Answers for many pixels of one scene (the editor's hover) without rebuilding the ray-tracing

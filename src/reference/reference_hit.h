@@ -29,8 +29,8 @@ struct ReferenceHit {
 namespace detail {
 // Nearest positive root of |o + t d - c| = r for unit d, without cancellation: |oc|^2 - r^2 as
 // (|oc| - r)(|oc| + r) and the q form of the quadratic. A grazing ray that Embree hit but T
-// misses (negative discriminant by rounding) takes the tangent point. Returns fallback when no
-// root is positive.
+// misses (negative discriminant by rounding) takes the tangent point. Of two roots ahead, the one
+// nearer fallback (Embree's distance); fallback when no root is positive.
 template <class T>
 T sphere_distance(const glm::tvec3<T>& c, T r, const glm::tvec3<T>& o, const glm::tvec3<T>& d,
                   T fallback) {
@@ -43,6 +43,11 @@ T sphere_distance(const glm::tvec3<T>& c, T r, const glm::tvec3<T>& o, const glm
   const T q = b > T(0) ? -(b + root) : -(b - root);
   T t0 = q, t1 = q != T(0) ? cterm / q : -b;
   if (t0 > t1) std::swap(t0, t1);
+  // Both ahead: the one Embree reported, which is the far one where a cut-out (an opacity map)
+  // took the near one away.
+  if (t0 > T(0) && fallback > T(0) && std::abs(t1 - fallback) < std::abs(t0 - fallback)) {
+    return t1;
+  }
   if (t0 > T(0)) return t0;
   return t1 > T(0) ? t1 : fallback;
 }

@@ -17,6 +17,7 @@
 #include "reference/pixel_inspection.h"
 #include "reference/reference_environment.h"
 #include "reference/reference_hit.h"
+#include "reference/reference_maps.h"
 #include "scene/camera.h"
 #include "shading/light_source.h"
 #include "shading/sampling.h"
@@ -67,7 +68,9 @@ struct Job {
   CameraBasis<T> camera;  // camera.h's formula evaluated in T
   int width = 0, height = 0, spp = 1;
   PowMode pow = PowMode::exact;
+  MapFilter filter = MapFilter::trilinear;
   bool gouraud = false;
+  T fov_y = T(45);            // degrees: the ray cone's spread (texture/footprint.h)
   Vec3<T> ambient_light{0};             // A_scene + sum_i La_i
   std::vector<LightSource<T>> sources;  // per scene light, resolved in T (light_source.h)
   const ReferenceEnvironment* environment = nullptr;  // the scene's, when it has one
@@ -292,10 +295,18 @@ void shade_sample(const Job<T>& job, int x, int y, int s, int count, PixelSums<T
   }
   const Object& object = scene.objects[rh.hit.geomID];
   const bool is_mesh = object.type != ObjectType::sphere;
-  const ReferenceHit<T> h =
+  ReferenceHit<T> h =
       is_mesh ? triangle_reference_hit<T>(*object.mesh, rh.hit.primID, job.camera.eye, dir,
                                           T(rh.ray.tfar), T(rh.hit.u), T(rh.hit.v))
               : sphere_reference_hit<T>(object, job.camera.eye, dir, T(rh.ray.tfar));
+  const Material& m = scene.materials[static_cast<std::size_t>(object.material)];
+  MapValues<T> maps;  // 1, and n unchanged, where the material has no map
+  MapFrame<T> frame;
+  if (m.textured()) {
+    maps = hit_maps(job.fov_y, job.height, job.filter, object, rh.hit.primID, dir, count, h, m,
+                    frame);
+    h.n = maps.n;
+  }
   key.object = static_cast<std::int32_t>(rh.hit.geomID);
   key.mesh = is_mesh;
   key.flat = is_mesh && !object.mesh->smooth();
@@ -310,13 +321,15 @@ void shade_sample(const Job<T>& job, int x, int y, int s, int count, PixelSums<T
     record->lights.assign(scene.lights.size(), LightBreakdown{});
   }
 
-  const Material& m = scene.materials[static_cast<std::size_t>(object.material)];
-  const T alpha = T(m.shininess);
+  const T alpha = T(m.shininess) * maps.alpha;
+  const Vec3<T> ka = Vec3<T>(m.ambient) * maps.ka, kd = Vec3<T>(m.diffuse) * maps.kd,
+                ks = Vec3<T>(m.specular) * maps.ks, ke = Vec3<T>(m.emission) * maps.ke;
   const T norm =
       scene.render.energy_normalize ? energy_normalization<T>(scene.render.model, alpha) : T(1);
-  sum.emissive += Vec3<T>(m.emission);
-  sum.ambient += Vec3<T>(m.ambient) * job.ambient_light;
+  sum.emissive += ke;
+  sum.ambient += ka * job.ambient_light;
   if (record != nullptr) {
+    if (m.textured()) record_maps(m, frame, maps, *record);
     record->material = object.material;
     record->alpha = double(alpha);
     record->energy_factor = double(norm);
@@ -357,12 +370,11 @@ void shade_sample(const Job<T>& job, int x, int y, int s, int count, PixelSums<T
       key.shadowed |= std::uint64_t(1) << (i % 64);
       continue;  // vis = 0
     }
-    sum.diffuse += Vec3<T>(m.diffuse) * Vec3<T>(colours.diffuse) * dw;
-    sum.specular += Vec3<T>(m.specular) * Vec3<T>(colours.specular) * (sw * norm);
+    sum.diffuse += kd * Vec3<T>(colours.diffuse) * dw;
+    sum.specular += ks * Vec3<T>(colours.specular) * (sw * norm);
     if (record != nullptr) {  // the same products, kept apart (the sums above stay as they were)
-      record->lights[i].diffuse = glm::dvec3(Vec3<T>(m.diffuse) * Vec3<T>(colours.diffuse) * dw);
-      record->lights[i].specular =
-          glm::dvec3(Vec3<T>(m.specular) * Vec3<T>(colours.specular) * (sw * norm));
+      record->lights[i].diffuse = glm::dvec3(kd * Vec3<T>(colours.diffuse) * dw);
+      record->lights[i].specular = glm::dvec3(ks * Vec3<T>(colours.specular) * (sw * norm));
     }
   }
   if (job.environment != nullptr && job.environment->present()) {
@@ -370,7 +382,11 @@ void shade_sample(const Job<T>& job, int x, int y, int s, int count, PixelSums<T
                                         mix_bits(static_cast<std::uint32_t>(x) ^
                                                  mix_bits(static_cast<std::uint32_t>(y) ^
                                                           mix_bits(static_cast<std::uint32_t>(s)))));
-    shade_environment(job, key.object, h, m, seed, sum, record);
+    Material shaded = m;  // the constants times what the maps gave here
+    shaded.diffuse = glm::vec3(kd);
+    shaded.specular = glm::vec3(ks);
+    shaded.shininess = static_cast<float>(alpha);
+    shade_environment(job, key.object, h, shaded, seed, sum, record);
   }
 }
 
@@ -390,6 +406,8 @@ Job<T> make_job(const Scene& scene, RTCScene rtc, int spp, PowMode pow) {
   job.height = scene.render.height;
   job.spp = spp;
   job.pow = pow;
+  job.filter = scene.render.map_filter;
+  job.fov_y = T(scene.camera.fov_y);
   job.camera = make_camera_basis<T>(scene.camera, job.width, job.height);
   job.ambient_light = Vec3<T>(scene.ambient);
   for (const Light& light : scene.lights) {

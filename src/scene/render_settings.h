@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <string>
 
+#include "texture/texture_lookup.h"
+
 namespace gloss {
 
 enum class ShadingModel { phong, blinn_phong };
@@ -60,6 +62,9 @@ struct RenderSettings {
   // visibility when shadows are on). 0: the fast path alone.
   int env_resolution = 2;
   int env_samples = 64;
+  // How maps are read (docs/spec/shading.md, "Textures"): trilinear at the footprint's level
+  // (the contract), or a knob: bilinear or the nearest texel at level 0.
+  MapFilter map_filter = MapFilter::trilinear;
 };
 
 // Largest image side and pixel count accepted; larger requests are refused before allocating.

@@ -128,6 +128,24 @@ TEST(Placement, NormalsFollowTheInverseTransposeAndMirrorsRewind) {
   EXPECT_EQ(b, glm::uvec3(a.x, a.z, a.y));
 }
 
+TEST(Placement, TangentsTurnWithTheObjectAndMirrorsFlipTheirHandedness) {
+  Object o = unit_quad();
+  Mesh textured = *o.shape;
+  textured.tangents.assign(textured.positions.size(), glm::vec4(1, 0, 0, 1));
+  o.shape = std::make_shared<const Mesh>(textured);
+  o.transform.rotate = {0, 90, 0};
+  place_object(o);
+  // y by 90 takes x to -z: the tangent (1, 0, 0) becomes (0, 0, -1), handedness kept.
+  const glm::vec4 t = o.mesh->tangents[0];
+  EXPECT_NEAR(t.x, 0.0f, 1e-7f);
+  EXPECT_NEAR(t.z, -1.0f, 1e-7f);
+  EXPECT_EQ(t.w, 1.0f);
+  o.transform.rotate = {0, 0, 0};
+  o.transform.scale = {-3, 1, 1};  // a mirror along x: (-3, 0, 0) normalised, handedness -1
+  place_object(o);
+  EXPECT_EQ(o.mesh->tangents[0], glm::vec4(-1, 0, 0, -1));
+}
+
 TEST(Placement, EulerAnglesComeBackFromTheirMatrix) {
   for (const glm::vec3 angles : {glm::vec3(10, 20, 30), glm::vec3(-170, 45, 100),
                                  glm::vec3(0, -80, 0), glm::vec3(33, 0, -150)}) {

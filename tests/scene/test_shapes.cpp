@@ -29,11 +29,12 @@ TEST(Shapes, QuadIsTwoFlatTrianglesWoundLikeItsCorners) {
   EXPECT_FLOAT_EQ(area, 1.0f);
 }
 
-// Box 1 x 2 x 3: 12 triangles on 8 corners, faces of area 2, 6, 3 (twice each, 22 in all),
+// Box 1 x 2 x 3: 12 triangles on 24 vertices (four per face, for its texture coordinates),
+// faces of area 2, 6, 3 (twice each, 22 in all),
 // every face normal along an axis and pointing away from the centre.
 void expect_outward_box(const Mesh& box) {
   EXPECT_FALSE(box.smooth());
-  EXPECT_EQ(box.positions.size(), 8u);
+  EXPECT_EQ(box.positions.size(), 24u);
   ASSERT_EQ(box.triangles.size(), 12u);
   const glm::vec3 centre(0.5f, 1.0f, 1.5f);
   float area = 0.0f, volume = 0.0f;

@@ -16,7 +16,8 @@ namespace gloss {
 
 struct MeshBuffer {
   GLuint vertex_array = 0, buffer = 0;
-  GLsizei vertices = 0;  // 3 per triangle
+  GLsizei vertices = 0;       // 3 per triangle
+  int floats_per_vertex = 9;  // 46 with the maps' attributes (raster_geometry.cpp)
 };
 
 class RasterGeometry {

@@ -28,7 +28,8 @@ std::string describe(const RasterVariant& v) {
                       : v.shape == RasterShape::sphere ? "sphere"
                                                        : "sky";
   return std::string(shape) + " " + pass_name(v.pass) + " pass, " + std::to_string(v.light_count) +
-         " lights" + (v.shadows ? ", shadow maps" : "") + (v.environment ? ", environment" : "");
+         " lights" + (v.shadows ? ", shadow maps" : "") + (v.environment ? ", environment" : "") +
+         (v.maps ? ", maps" : "");
 }
 
 }  // namespace
@@ -40,10 +41,12 @@ std::string RasterPrograms::source(const RasterVariant& v, GLenum stage) {
   text +=
       std::string("#define GLOSS_PER_VERTEX ") + (v.pass == RasterPass::vertex ? "1" : "0") + "\n";
   text += std::string("#define GLOSS_ENVIRONMENT ") + (v.environment ? "1" : "0") + "\n";
+  text += std::string("#define GLOSS_MAPS ") + (v.maps ? "1" : "0") + "\n";
   if (v.pass == RasterPass::shadow) text += "#define GLOSS_SHADOW_PASS 1\n";
   text += kRasterCommonGlsl;
   text += kEnvironmentGlsl;
   text += kPhongContractGlsl;
+  if (v.maps) text += kTextureLookupGlsl;
   const bool vertex = stage == GL_VERTEX_SHADER;
   switch (v.shape) {
     case RasterShape::mesh:
@@ -105,6 +108,10 @@ void set_uniform_ivec4s(GLuint program, const char* name, const int* xyzw, int c
 
 void set_uniform_ivec2s(GLuint program, const char* name, const int* xy, int count) {
   glUniform2iv(glGetUniformLocation(program, name), count, xy);
+}
+
+void set_uniform_ints(GLuint program, const char* name, const int* x, int count) {
+  glUniform1iv(glGetUniformLocation(program, name), count, x);
 }
 
 }  // namespace gloss

@@ -24,9 +24,10 @@ struct RasterVariant {
   int light_count = 0;       // GLOSS_LIGHT_COUNT
   bool shadows = false;      // GLOSS_SHADOWS: the shading passes look up the shadow maps
   bool environment = false;  // GLOSS_ENVIRONMENT: the environment's fast path (environment.glsl)
+  bool maps = false;         // GLOSS_MAPS: the material has maps (shaders/texture_lookup.glsl)
   bool operator<(const RasterVariant& o) const {
-    return std::tie(shape, pass, light_count, shadows, environment) <
-           std::tie(o.shape, o.pass, o.light_count, o.shadows, o.environment);
+    return std::tie(shape, pass, light_count, shadows, environment, maps) <
+           std::tie(o.shape, o.pass, o.light_count, o.shadows, o.environment, o.maps);
   }
 };
 
@@ -68,6 +69,7 @@ void set_uniform(GLuint program, const char* name, const float* xyz, int count =
 void set_uniform_vec2s(GLuint program, const char* name, const float* xy, int count);
 void set_uniform_vec4s(GLuint program, const char* name, const float* xyzw, int count);
 void set_uniform_ivec2s(GLuint program, const char* name, const int* xy, int count);
+void set_uniform_ints(GLuint program, const char* name, const int* x, int count);
 void set_uniform_ivec4s(GLuint program, const char* name, const int* xyzw, int count);
 
 }  // namespace gloss

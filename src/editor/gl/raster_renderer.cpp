@@ -11,12 +11,14 @@
 #include <glm/geometric.hpp>
 
 #include "editor/gl/environment_texture.h"
+#include "editor/gl/map_textures.h"
 #include "editor/gl/raster_geometry.h"
 #include "editor/gl/raster_programs.h"
 #include "editor/gl/raster_view.h"
 #include "editor/gl/shadow_maps.h"
 #include "engine/frame_pool.h"
 #include "shading/light_source.h"
+#include "texture/footprint.h"
 
 namespace gloss {
 
@@ -184,6 +186,7 @@ struct RasterRenderer::Impl {
 
   RasterPrograms programs;
   RasterGeometry geometry;
+  MapTextures maps;
   ShadowMaps shadows;
   EnvironmentTexture environment;  // the environment's levels (texture unit 1)
   bool with_environment = false;   // of the frame being drawn
@@ -237,14 +240,21 @@ struct RasterRenderer::Impl {
     // in a cube face's left-handed one.
     const bool left_handed = glm::dot(glm::cross(view.right, view.up), view.forward) > 0.0f;
     glFrontFace(left_handed ? GL_CCW : GL_CW);
+    // The ray cone of one pixel at unit distance (texture/footprint.h), for the maps.
+    const float spread = cone_spread(scene.camera.fov_y, scene.render.height, 1);
     for (const Object* object : draw_order(scene, boxes, view)) {
       const Object& o = *object;
       const bool sphere = o.type == ObjectType::sphere;
+      const Material& material = scene.materials.at(static_cast<std::size_t>(o.material));
       // Spheres are impostors: per pixel in both shading passes.
       const RasterPass own = sphere && pass == RasterPass::vertex ? RasterPass::pixel : pass;
-      const GLuint program =
-          programs.get({sphere ? RasterShape::sphere : RasterShape::mesh, own, lights, shadows,
-                        with_environment && pass != RasterPass::shadow});
+      // Shadow passes need maps only to cut out.
+      const bool with_maps =
+          pass == RasterPass::shadow ? material.has_map(MapSlot::opacity) : material.textured();
+      RasterVariant variant{sphere ? RasterShape::sphere : RasterShape::mesh, own, lights, shadows,
+                            with_environment && pass != RasterPass::shadow};
+      variant.maps = with_maps;
+      const GLuint program = programs.get(variant);
       if (program != current) {
         glUseProgram(program);
         current = program;
@@ -261,9 +271,9 @@ struct RasterRenderer::Impl {
           }
         }
       }
-      if (pass != RasterPass::shadow) {
-        set_material_uniforms(program, scene.materials.at(static_cast<std::size_t>(o.material)));
-      }
+      if (pass != RasterPass::shadow) set_material_uniforms(program, material);
+      // Units 2..9 (0 holds the shadow maps, 1 the environment's levels).
+      if (with_maps) set_map_uniforms(program, maps, material, scene.render.map_filter, spread, 2);
       if (sphere) {
         set_uniform(program, "gloss_sphere_centre", &o.center.x);
         set_uniform(program, "gloss_sphere_radius", o.radius);
@@ -352,6 +362,7 @@ std::shared_ptr<RenderedFrame> RasterRenderer::render(const Scene& scene,
   Clock::time_point since = Clock::now();
 
   m.geometry.sync(scene);
+  m.maps.sync(scene);
   t.upload_ms = finish_ms(since);
 
   const bool shadows = scene.render.shadows && lights > 0;

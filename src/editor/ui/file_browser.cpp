@@ -30,6 +30,8 @@ const char* title(BrowsePurpose purpose) {
       return "Export GLSL";
     case BrowsePurpose::open_environment:
       return "Environment map";
+    case BrowsePurpose::load_map:
+      return "Load map";
   }
   return "File";
 }
@@ -55,6 +57,8 @@ std::vector<std::string> extensions(BrowsePurpose purpose) {
       return {".frag", ".glsl"};
     case BrowsePurpose::open_environment:
       return {".hdr", ".exr", ".png"};
+    case BrowsePurpose::load_map:
+      return {".png", ".jpg", ".jpeg", ".exr", ".hdr"};
   }
   return {};
 }
@@ -68,6 +72,8 @@ RecentKind recent_kind(BrowsePurpose purpose) {
     case BrowsePurpose::save_materials:
     case BrowsePurpose::save_material:
       return RecentKind::materials;
+    case BrowsePurpose::load_map:
+      return RecentKind::maps;
     case BrowsePurpose::open_scene:
     case BrowsePurpose::save_scene:
     case BrowsePurpose::export_glsl:

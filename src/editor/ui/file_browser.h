@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "editor/model/session/recent_files.h"
+#include "scene/texture_map.h"
 
 namespace gloss {
 
@@ -19,6 +20,7 @@ enum class BrowsePurpose {
   save_material,     // the selected object's material alone
   export_glsl,       // issue 12: the selected object's material as a fragment shader
   open_environment,  // an environment map (HDR, EXR, PNG)
+  load_map,          // an image into a map slot of a material (map_target says which)
 };
 // The recent list the panel offers for purpose (scenes for scenes, models for Add model, ...).
 RecentKind recent_kind(BrowsePurpose purpose);
@@ -46,6 +48,11 @@ struct FileBrowser {
   std::vector<Entry> entries;
   bool stale = true;        // entries need re-reading
   bool focus_name = false;  // put the keyboard in the path field on the next draw
+  // For load_map: the object whose material gets the image, and the slot.
+  struct MapTarget {
+    int object = 0;
+    MapSlot slot = MapSlot::diffuse;
+  } map_target;
 
   // The folder of the last file the user chose here (kept between sessions by FileActions): where
   // the next panel starts (editor/model/session/file_defaults.h).

@@ -175,6 +175,8 @@ void view_menu(Commands& commands, ViewSettings& view, std::optional<Snapshot>& 
     view.mode = ViewMode::lobe;
   }
   ImGui::MenuItem("Pixel inspector", "I", &view.show_inspector);
+  // Every object with the checker on its (u, v); the document keeps its materials.
+  ImGui::MenuItem("UV checker", nullptr, &view.uv_checker);
   if (ImGui::MenuItem("Snapshot, then A/B snapshot vs live", "Ctrl+B")) {
     snapshot_and_compare(commands, snapshot, view);
   }

@@ -13,6 +13,7 @@
 #include "engine/trace/refined_samples.h"
 #include "engine/trace/sample_packet.h"
 #include "engine/trace/self_shadow.h"
+#include "engine/trace/texture_lanes.h"
 #include "shading/sampling.h"
 
 namespace gloss {
@@ -45,7 +46,10 @@ long long packet_steps(const SamplePacket& packet, const SampleCache& cache,
   }
   if (any_hit(packet)) {
     SurfaceLanes surfaces;
-    packet_surfaces(packet, cache, ctx, surfaces);
+    mapped_surfaces(packet, cache, ctx, plane, surfaces);  // normal maps included
+    TexelLanes maps;
+    load_texels(packet, width, plane, maps);
+    const int alpha_map = ctx.plan.textures.alpha_channel();
     EnvironmentHit hits[kLanes];
     bool active[kLanes];
     glm::vec3 origin[kLanes];
@@ -60,7 +64,7 @@ long long packet_steps(const SamplePacket& packet, const SampleCache& cache,
       h.n = glm::normalize(glm::dvec3(s.n));
       h.v = glm::normalize(glm::dvec3(s.v));
       h.r = 2.0 * glm::dot(h.n, h.v) * h.n - h.v;
-      h.alpha = scene.materials[m].shininess;
+      h.alpha = scene.materials[m].shininess * (alpha_map >= 0 ? maps.channel[alpha_map][i] : 1.0f);
       h.model = scene.render.model;
       h.diffuse = env.diffuse[m] != 0;
       h.specular = env.specular[m] != 0;

@@ -5,6 +5,7 @@
 #include "engine/parallel_loops.h"
 #include "engine/trace/refined_samples.h"
 #include "engine/trace/sample_packet.h"
+#include "engine/trace/texture_lanes.h"
 #include "shading/environment.h"
 
 namespace gloss {
@@ -19,7 +20,7 @@ void store_environment(const SamplePacket& packet, const SampleCache& cache,
     for (LightLanes& c : channels) c = LightLanes{};
   } else {
     SurfaceLanes surfaces;
-    packet_surfaces(packet, cache, ctx, surfaces);
+    mapped_surfaces(packet, cache, ctx, plane, surfaces);  // normal maps included
     environment_lanes(packet, surfaces, ctx, channels);
   }
   for (int c = 0; c < 3; ++c) {

@@ -25,17 +25,21 @@ bool shows_sky(const PixelFactors& factors, const Recombination& recombination) 
 
 // The pixels combine_terms' dense loop does not finish, into total (and the four term images of
 // out when given): adaptive sampling's refined pixels (their weight and background share are
-// their own; written whole) and the further materials of mixed pixels (added).
+// their own; written whole) and the further materials of mixed pixels (added). With maps, each
+// has a textured record (textured_factors.h) in place of its scalar factors.
 void recombine_refined(const PixelFactors& factors, const Recombination& recombination,
                        Image& total, TermImages* terms) {
   const std::size_t pixels = static_cast<std::size_t>(factors.width) * factors.height;
   const std::size_t lights = factors.lights;
   const bool sky = shows_sky(factors, recombination);
+  const bool records = factors.textured_stride > 0;
   for (std::size_t k = 0; k < factors.refined_pixel.size(); ++k) {
     const std::size_t i = factors.refined_pixel[k];
     glm::vec3 term[4] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
     const std::int32_t m = factors.material[i];
-    if (m >= 0) {
+    if (m >= 0 && records) {
+      recombination.textured_terms(m, &factors.refined_textured[k * factors.textured_stride], term);
+    } else if (m >= 0) {
       recombination.terms(m, factors.refined_weight[k], factors.diffuse.data() + i,
                           factors.specular.data() + i, pixels, term);
     }
@@ -50,9 +54,14 @@ void recombine_refined(const PixelFactors& factors, const Recombination& recombi
   }
   for (std::size_t e = 0; e < factors.extra_pixel.size(); ++e) {
     glm::vec3 term[4];
-    recombination.terms(factors.extra_material[e], factors.extra_weight[e],
-                        factors.extra_diffuse.data() + e * lights,
-                        factors.extra_specular.data() + e * lights, 1, term);
+    if (records) {
+      recombination.textured_terms(factors.extra_material[e],
+                                   &factors.extra_textured[e * factors.textured_stride], term);
+    } else {
+      recombination.terms(factors.extra_material[e], factors.extra_weight[e],
+                          factors.extra_diffuse.data() + e * lights,
+                          factors.extra_specular.data() + e * lights, 1, term);
+    }
     const std::size_t i = factors.extra_pixel[e];
     total.pixels[i] += form_total(term[0], term[1], term[2], term[3]);
     if (terms != nullptr) {
@@ -83,18 +92,38 @@ void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermIm
   // The factors were built for the same plan (an edit that changes it is classed `light`).
   assert(recombination.lights() == factors.lights);
   const bool sky = shows_sky(factors, recombination);
-  // The pixel loop, instantiated per (one sample, term images) so it holds no such branches.
-  auto pixels_loop = [&](auto single_tag, auto terms_tag, std::size_t begin, std::size_t end) {
+  // Maps (textured_factors.h): with one sample the texel channels multiply the terms, with
+  // more each pixel's textured record replaces its scalar factors.
+  const TexturePlan& maps = ctx.plan.textures;
+  const int channel[4] = {maps.ke_channel(), maps.ka_channel(), maps.kd_channel(),
+                          maps.ks_channel()};
+  auto texel_terms = [&](std::size_t i, glm::vec3 term[4]) {
+    for (int t = 0; t < 4; ++t) {
+      if (channel[t] < 0) continue;
+      const float* const* c = &factors.texel[static_cast<std::size_t>(channel[t])];
+      term[t] *= glm::vec3(c[0][i], c[1][i], c[2][i]);
+    }
+  };
+  // The pixel loop, instantiated per (one sample, term images, maps) so it holds no such
+  // branches. kMaps: 0 none, 1 texel channels (one sample), 2 textured records.
+  auto pixels_loop = [&](auto single_tag, auto terms_tag, auto maps_tag, std::size_t begin,
+                         std::size_t end) {
     constexpr bool kSingle = decltype(single_tag)::value;  // weight, background from material
     constexpr bool kTerms = decltype(terms_tag)::value;
+    constexpr int kMaps = decltype(maps_tag)::value;
     for (std::size_t i = begin; i != end; ++i) {
       glm::vec3 term[4] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
       const std::int32_t m = factors.material[i];
       const float weight = kSingle ? 1.0f : factors.weight[i];
       const float missed = kSingle ? (m < 0 ? 1.0f : 0.0f) : factors.background[i];
       if (m >= 0) {
-        recombination.terms(m, weight, factors.diffuse.data() + i, factors.specular.data() + i,
-                            pixels, term);
+        if constexpr (kMaps == 2) {
+          recombination.textured_terms(m, &factors.textured[i * factors.textured_stride], term);
+        } else {
+          recombination.terms(m, weight, factors.diffuse.data() + i, factors.specular.data() + i,
+                              pixels, term);
+          if constexpr (kMaps == 1) texel_terms(i, term);
+        }
       }
       out.total.pixels[i] = sky ? recombination.total_under_sky(term, factors.sky[i])
                                 : recombination.total(term, missed);
@@ -107,6 +136,8 @@ void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermIm
     }
   };
   const bool single = factors.samples == 1;
+  const int map_kind = single ? (factors.texel_channels > 0 ? 1 : 0)
+                              : (factors.textured_stride > 0 && !factors.textured.empty() ? 2 : 0);
   ForkJoinFence fence;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pixels, 16384),
                     [&](const tbb::blocked_range<std::size_t>& range) {
@@ -115,10 +146,21 @@ void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermIm
                       const std::size_t b = range.begin(), e = range.end();
                       using T = std::true_type;
                       using F = std::false_type;
-                      if (single && terms) pixels_loop(T{}, T{}, b, e);
-                      if (single && !terms) pixels_loop(T{}, F{}, b, e);
-                      if (!single && terms) pixels_loop(F{}, T{}, b, e);
-                      if (!single && !terms) pixels_loop(F{}, F{}, b, e);
+                      using M0 = std::integral_constant<int, 0>;
+                      using M1 = std::integral_constant<int, 1>;
+                      using M2 = std::integral_constant<int, 2>;
+                      if (map_kind == 0) {
+                        if (single && terms) pixels_loop(T{}, T{}, M0{}, b, e);
+                        if (single && !terms) pixels_loop(T{}, F{}, M0{}, b, e);
+                        if (!single && terms) pixels_loop(F{}, T{}, M0{}, b, e);
+                        if (!single && !terms) pixels_loop(F{}, F{}, M0{}, b, e);
+                      } else if (map_kind == 1) {
+                        if (terms) pixels_loop(T{}, T{}, M1{}, b, e);
+                        if (!terms) pixels_loop(T{}, F{}, M1{}, b, e);
+                      } else {
+                        if (terms) pixels_loop(F{}, T{}, M2{}, b, e);
+                        if (!terms) pixels_loop(F{}, F{}, M2{}, b, e);
+                      }
                     });
   fence.join();
   recombine_refined(factors, recombination, out.total, terms ? &out : nullptr);

@@ -9,6 +9,7 @@
 // a short list of extras. With one sample per pixel the weight is 1 on a hit and the background
 // share 1 on a miss, so those two arrays stay empty. Bytes per pixel: 4 + 8 per planned light,
 // plus 8 with more than one sample, plus the extras.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "engine/render_context.h"
 #include "engine/shade/power_lanes.h"
 #include "engine/trace/sample_cache.h"
+#include "engine/trace/texture_lanes.h"
 
 namespace gloss {
 
@@ -43,6 +45,16 @@ struct PixelFactors {
   // radiance at intensity 1 where they missed (environment/environment_stage.h); empty
   // otherwise.
   std::vector<glm::vec3> sky;
+  // Maps (docs/engine.md, "Maps"; render_plan.h TexturePlan). With one sample per pixel the
+  // multipliers are the sample's texel channels, borrowed from the cache's plane 0 (the factors
+  // are used with the cache they were built from: its plane outlives them). With more samples a
+  // pixel's factors per material group are textured records (textured_factors.h): the means of
+  // the multipliers times the factors, per channel, in `textured` (uniform sampling's pixels),
+  // `refined_textured` (refined pixels) and `extra_textured` (further materials).
+  std::size_t texel_channels = 0;
+  std::array<const float*, kMaxTexelChannels> texel{};
+  std::size_t textured_stride = 0;  // floats per record; 0 without colour maps
+  std::vector<float> textured, refined_textured, extra_textured;
 
   std::size_t bytes() const;
 };
@@ -75,7 +87,7 @@ void single_sample_coverage(const std::vector<std::int32_t>& object_material,
 void single_sample_light(const MaterialExponents& exponents, PowMode mode,
                          const std::int32_t* material, const float* diffuse_weight,
                          const float* spec_weight, const float* cosine, int n, float* diffuse,
-                         float* specular);
+                         float* specular, const ScaledExponent* scaled = nullptr);
 
 // Recombines factors with the scene's material constants, light colours, ambient and background
 // into out.total (and the four term images when terms is set). out is resized as needed.

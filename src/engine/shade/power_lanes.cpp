@@ -7,6 +7,7 @@
 #include "engine/simd/lane_gather.h"
 #include "engine/simd/lane_mask.h"
 #include "shading/fast_power.h"
+#include "shading/shading.h"
 
 // glibc's libmvec has vector variants of powf (_ZGV{b,c,d,e}N*vv_powf, glibc >= 2.22), but
 // <math.h> declares them only under -ffast-math, which the renderer must not use (its NaN and
@@ -40,13 +41,20 @@ namespace {
 // With weight, out = weight * c^alpha (0 on missed lanes) in the same loop: the powers then
 // need no trip through memory before their only use.
 void power16(const MaterialExponents& exponents, const std::int32_t* mat, const float* cos,
-             const float* weight, float* out, PowMode mode) {
-  alignas(64) float base[kLanes], alpha[kLanes], floor[kLanes];
+             const float* weight, float* out, PowMode mode, const ScaledExponent* scaled) {
+  alignas(64) float base[kLanes], alpha[kLanes], floor[kLanes], material_alpha[kLanes];
   alignas(64) std::int32_t index[kLanes];
   for (int i = 0; i < kLanes; ++i) index[i] = std::max(mat[i], 0);
   const LaneGather by_material(index);  // a handful of materials: a permute, no gather
   by_material(exponents.alpha.data(), exponents.alpha.size(), alpha);
   by_material(exponents.floor.data(), exponents.floor.size(), floor);
+  if (scaled != nullptr) {  // a shininess map: each lane's own exponent and floor
+    for (int i = 0; i < kLanes; ++i) {
+      material_alpha[i] = alpha[i];
+      alpha[i] *= scaled->scale[i];
+      floor[i] = alpha[i] > 0.0f ? std::exp2(-120.0f / alpha[i]) : 0.0f;
+    }
+  }
   for (int i = 0; i < kLanes; ++i) {
     floor[i] = mat[i] < 0 ? std::numeric_limits<float>::infinity() : floor[i];
   }
@@ -72,6 +80,12 @@ void power16(const MaterialExponents& exponents, const std::int32_t* mat, const 
       base[i] = cos[i] >= floor[i] && cos[i] > 0.0f ? base[i] : 0.0f;
     }
   }
+  if (scaled != nullptr && scaled->energy) {  // recombination applies the material's own
+    for (int i = 0; i < kLanes; ++i) {
+      base[i] *= energy_normalization(scaled->model, alpha[i]) /
+                 energy_normalization(scaled->model, material_alpha[i]);
+    }
+  }
   if (weight == nullptr) {
     for (int i = 0; i < kLanes; ++i) out[i] = base[i];
   } else {
@@ -83,19 +97,27 @@ void power16(const MaterialExponents& exponents, const std::int32_t* mat, const 
 // same code, so a run clipped at the image's edge gets the same bits as a full one (the vector
 // and scalar powf of a loop's remainder may differ by an ulp).
 void power_lanes(const MaterialExponents& exponents, const std::int32_t* material, const float* c,
-                 const float* weight, float* out, int n, PowMode mode) {
+                 const float* weight, float* out, int n, PowMode mode,
+                 const ScaledExponent* scaled = nullptr) {
   if (n == kLanes) {
-    power16(exponents, material, c, weight, out, mode);
+    power16(exponents, material, c, weight, out, mode, scaled);
     return;
   }
   alignas(64) float cos[kLanes], w[kLanes], result[kLanes];
   alignas(64) std::int32_t mat[kLanes];
+  ScaledExponent padded;
   for (int i = 0; i < kLanes; ++i) {
     cos[i] = i < n ? c[i] : 0.0f;
     mat[i] = i < n ? material[i] : -1;
     w[i] = i < n && weight != nullptr ? weight[i] : 0.0f;
+    if (scaled != nullptr) padded.scale[i] = i < n ? scaled->scale[i] : 1.0f;
   }
-  power16(exponents, mat, cos, weight != nullptr ? w : nullptr, result, mode);
+  if (scaled != nullptr) {
+    padded.energy = scaled->energy;
+    padded.model = scaled->model;
+  }
+  power16(exponents, mat, cos, weight != nullptr ? w : nullptr, result, mode,
+          scaled != nullptr ? &padded : nullptr);
   for (int i = 0; i < n; ++i) out[i] = result[i];
 }
 }  // namespace
@@ -106,8 +128,15 @@ void specular_power_lanes(const MaterialExponents& exponents, const std::int32_t
 }
 
 void specular_lanes(const MaterialExponents& exponents, const std::int32_t* material,
-                    const float* c, const float* weight, float* out, int n, PowMode mode) {
-  power_lanes(exponents, material, c, weight, out, n, mode);
+                    const float* c, const float* weight, float* out, int n, PowMode mode,
+                    const ScaledExponent* scaled) {
+  power_lanes(exponents, material, c, weight, out, n, mode, scaled);
+}
+
+void scaled_power_lanes(const MaterialExponents& exponents, const std::int32_t* material,
+                        const float* c, float* out, int n, PowMode mode,
+                        const ScaledExponent& scaled) {
+  power_lanes(exponents, material, c, nullptr, out, n, mode, &scaled);
 }
 
 }  // namespace gloss

@@ -29,9 +29,24 @@ MaterialExponents material_exponents(const Scene& scene);
 void specular_power_lanes(const MaterialExponents& exponents, const std::int32_t* material,
                           const float* c, float* out, int n, PowMode mode);
 
+// A shininess map's part in c^alpha (docs/engine.md, "Maps"): each lane's exponent is its
+// material's times scale[i], and with energy normalisation on the power is also multiplied by
+// the lane's normalisation over its material's (recombination applies the material's).
+struct ScaledExponent {
+  alignas(64) float scale[kLanes];
+  bool energy = false;
+  ShadingModel model = ShadingModel::phong;
+};
+
 // out[i] = weight[i] * c[i]^alpha(material[i]), 0 where material < 0: the same powers, in
-// the loop that makes them.
+// the loop that makes them; scaled: a shininess map's exponents.
 void specular_lanes(const MaterialExponents& exponents, const std::int32_t* material,
-                    const float* c, const float* weight, float* out, int n, PowMode mode);
+                    const float* c, const float* weight, float* out, int n, PowMode mode,
+                    const ScaledExponent* scaled = nullptr);
+
+// specular_power_lanes with a shininess map's exponents.
+void scaled_power_lanes(const MaterialExponents& exponents, const std::int32_t* material,
+                        const float* c, float* out, int n, PowMode mode,
+                        const ScaledExponent& scaled);
 
 }  // namespace gloss

@@ -43,6 +43,22 @@ class Recombination {
     }
   }
 
+  // One material group's four terms from a textured record (textured_factors.h): the means of
+  // the maps' multipliers times the factors, per channel.
+  void textured_terms(std::int32_t material, const float* record, glm::vec3 term[4]) const {
+    const float* f = &m_flat[static_cast<std::size_t>(material) * m_stride];
+    term[0] = glm::vec3(f[0], f[1], f[2]) * glm::vec3(record[3], record[4], record[5]);
+    term[1] = glm::vec3(f[3], f[4], f[5]) * glm::vec3(record[0], record[1], record[2]);
+    term[2] = glm::vec3(0.0f);
+    term[3] = glm::vec3(0.0f);
+    for (std::size_t li = 0; li < m_lights; ++li) {
+      const float* k = f + 6 + 6 * li;
+      const float* r = record + 6 + 6 * li;
+      term[2] += glm::vec3(k[0], k[1], k[2]) * glm::vec3(r[0], r[1], r[2]);
+      term[3] += glm::vec3(k[3], k[4], k[5]) * glm::vec3(r[3], r[4], r[5]);
+    }
+  }
+
   // A pixel's total from its first material's terms and its share of missed samples.
   glm::vec3 total(const glm::vec3 term[4], float missed) const {
     return form_total(term[0], term[1], term[2], term[3], missed * m_background);

@@ -5,6 +5,7 @@
 #include "engine/parallel_loops.h"
 #include "engine/shade/pixel_groups.h"
 #include "engine/shade/power_lanes.h"
+#include "engine/shade/textured_factors.h"
 #include "engine/simd/lanes.h"
 
 namespace gloss {
@@ -23,6 +24,8 @@ bool refine_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pi
   out.extra_weight.clear();
   out.extra_diffuse.clear();
   out.extra_specular.clear();
+  out.extra_textured.clear();
+  out.refined_textured.clear();
   if (refined.spp == 0) return true;
   const Scene& scene = *ctx.scene;
   const std::size_t lights = ctx.plan.slots();
@@ -32,12 +35,19 @@ bool refine_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pi
   const std::vector<std::int32_t> materials = object_materials(scene);
   const ShadingModel model = scene.render.model;
   const SamplePlane& plane = refined.plane;
-  const int chunks = static_cast<int>((refined.pixels.size() + kPixelsPerChunk - 1) /
-                                      kPixelsPerChunk);
+  const bool textured = has_colour_texels(ctx.plan.textures);
+  const int alpha_channel = ctx.plan.textures.alpha_channel();
+  if (textured) {
+    out.textured_stride = textured_stride(lights);
+    out.refined_textured.resize(refined.pixels.size() * out.textured_stride);
+  }
+  const int chunks =
+      static_cast<int>((refined.pixels.size() + kPixelsPerChunk - 1) / kPixelsPerChunk);
   std::vector<FactorExtras> extras(static_cast<std::size_t>(chunks));
   const bool done = parallel_chunks(chunks, ctx.cancel, [&](int chunk) {
     FactorExtras& chunk_extras = extras[static_cast<std::size_t>(chunk)];
-    PixelGroups groups(lights);
+    PixelGroups groups(lights, out.textured_stride);
+    std::vector<float> texel(kMaxTexelChannels), diffuse(lights), sample_specular(lights);
     std::vector<std::int32_t> material(spp);
     std::vector<float> specular(spp * lights);  // [light * spp + sample]
     const std::size_t k0 = static_cast<std::size_t>(chunk) * kPixelsPerChunk;
@@ -53,8 +63,17 @@ bool refine_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pi
         for (std::size_t s0 = 0; s0 < spp; s0 += kLanes) {  // c^alpha by the lane helper
           const int m = static_cast<int>(std::min<std::size_t>(kLanes, spp - s0));
           alignas(64) float power[kLanes];
-          specular_power_lanes(exponents, &material[s0], f.cosine(model) + e0 + s0, power, m,
-                               scene.render.pow);
+          ScaledExponent storage;
+          const ScaledExponent* scaled = scaled_exponents(
+              ctx, alpha_channel >= 0 ? plane.texels[alpha_channel].data() + e0 + s0 : nullptr, m,
+              storage);
+          if (scaled != nullptr) {
+            scaled_power_lanes(exponents, &material[s0], f.cosine(model) + e0 + s0, power, m,
+                               scene.render.pow, *scaled);
+          } else {
+            specular_power_lanes(exponents, &material[s0], f.cosine(model) + e0 + s0, power, m,
+                                 scene.render.pow);
+          }
           for (int i = 0; i < m; ++i) {
             specular[li * spp + s0 + i] = f.spec_weight[e0 + s0 + i] * power[i];
           }
@@ -62,15 +81,23 @@ bool refine_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pi
       }
       groups.clear();
       for (std::size_t s = 0; s < spp; ++s) {
-        float* acc = groups.add(material[s]);
+        float* record = nullptr;
+        float* acc = groups.add(material[s], textured ? &record : nullptr);
         if (acc == nullptr) continue;
         for (std::size_t li = 0; li < lights; ++li) {
           acc[2 * li] += plane.lights[li].diffuse_weight[e0 + s];
           acc[2 * li + 1] += specular[li * spp + s];
         }
+        if (textured) {
+          sample_texels(plane, e0 + s, texel.data(), diffuse.data());
+          for (std::size_t li = 0; li < lights; ++li) sample_specular[li] = specular[li * spp + s];
+          add_textured_sample(ctx.plan.textures, texel.data(), lights, diffuse.data(),
+                              sample_specular.data(), record);
+        }
       }
       groups.write(refined.pixels[k], inv_n, out, out.refined_weight[k], out.refined_background[k],
-                   chunk_extras);
+                   chunk_extras,
+                   textured ? &out.refined_textured[k * out.textured_stride] : nullptr);
     }
   });
   if (!done) return false;

@@ -59,8 +59,14 @@ void TotalLanes::add_light(const std::int32_t* material, std::size_t li, const f
   }
 }
 
-void TotalLanes::store(const std::int32_t* material, float (&rgb)[3 * kLanes]) const {
+void TotalLanes::store(const std::int32_t* material, float (&rgb)[3 * kLanes],
+                       const float* const (*maps)[4][3]) const {
   alignas(64) float total[3][kLanes];
+  if (maps != nullptr && !all_lanes_negative(material)) {
+    store_mapped(material, *maps, total);
+    interleave(total, rgb);
+    return;
+  }
   if (all_lanes_negative(material)) {  // all missed: the terms are 0, the total 0 + background
     for (std::size_t c = 0; c < 3; ++c) {
       // Added to 0 as the general path does (a -0 or, with denormals off, a denormal background
@@ -107,6 +113,32 @@ void TotalLanes::store(const std::int32_t* material, float (&rgb)[3 * kLanes]) c
     }
   }
   interleave(total, rgb);
+}
+
+// The textured lanes: each term times its multipliers before the total is formed, in
+// Recombination::terms' order (the scalar path of combine_terms, which the tests compare).
+void TotalLanes::store_mapped(const std::int32_t* material, const float* const (&maps)[4][3],
+                              float (&total)[3][kLanes]) const {
+  alignas(64) std::int32_t index[kLanes];
+  material_index(material, index);
+  const LaneGather by_material(index);
+  const std::size_t materials = m_recombination.materials();
+  alignas(64) float emission[kLanes], ambient[kLanes];
+  for (int c = 0; c < 3; ++c) {
+    by_material(m_recombination.column(static_cast<std::size_t>(c)), materials, emission);
+    by_material(m_recombination.column(3 + static_cast<std::size_t>(c)), materials, ambient);
+    const float background = m_recombination.background()[c];
+    for (int i = 0; i < kLanes; ++i) {
+      const bool hit = material[i] >= 0;
+      float term[4] = {hit ? emission[i] : 0.0f, hit ? ambient[i] : 0.0f,
+                       hit ? m_diffuse[c][i] : 0.0f, hit ? m_specular[c][i] : 0.0f};
+      for (int t = 0; t < 4; ++t) {
+        if (maps[t][c] != nullptr) term[t] *= maps[t][c][i];
+      }
+      total[c][i] =
+          form_total(term[0], term[1], term[2], term[3], (hit ? 0.0f : 1.0f) * background);
+    }
+  }
 }
 
 }  // namespace gloss

@@ -20,10 +20,16 @@ class TotalLanes {
   void add_light(const std::int32_t* material, std::size_t li, const float* diffuse,
                  const float* specular);
 
-  // The lanes' totals, pixel by pixel (r, g, b), once every light is added.
-  void store(const std::int32_t* material, float (&rgb)[3 * kLanes]) const;
+  // The lanes' totals, pixel by pixel (r, g, b), once every light is added. maps (when not
+  // null): per term (emissive, ambient, diffuse, specular) the lanes' three multipliers from
+  // the maps, or null for none, applied as combine_terms applies a pixel's texel channels.
+  void store(const std::int32_t* material, float (&rgb)[3 * kLanes],
+             const float* const (*maps)[4][3] = nullptr) const;
 
  private:
+  void store_mapped(const std::int32_t* material, const float* const (&maps)[4][3],
+                    float (&total)[3][kLanes]) const;
+
   const Recombination& m_recombination;
   alignas(64) float m_diffuse[3][kLanes];   // sum over lights of kd Ld diffuse
   alignas(64) float m_specular[3][kLanes];  // sum over lights of ks Ls specular

@@ -5,7 +5,9 @@
 #include <string>
 
 #include "base/error.h"
+#include "engine/trace/cut_outs.h"
 #include "engine/trace/self_shadow.h"
+#include "shading/hit_textures.h"
 
 namespace gloss {
 
@@ -25,7 +27,8 @@ void check(RTCDevice device, const char* what) {
   }
 }
 
-void attach_sphere(RTCDevice device, RTCScene scene, const Object& object, unsigned id) {
+void attach_sphere(RTCDevice device, RTCScene scene, const Object& object, unsigned id,
+                   const CutOut* cut) {
   RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
   auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
                                                         RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
@@ -34,12 +37,18 @@ void attach_sphere(RTCDevice device, RTCScene scene, const Object& object, unsig
   v[2] = object.center.z;
   v[3] = object.radius;
   rtcSetGeometryOccludedFilterFunction(geom, drop_origin_sphere_hits);
+  if (cut != nullptr) {
+    rtcSetGeometryUserData(geom, const_cast<CutOut*>(cut));
+    rtcSetGeometryIntersectFilterFunction(geom, cut_out_sphere);
+    rtcSetGeometryOccludedFilterFunction(geom, cut_out_sphere_occluded);
+  }
   rtcCommitGeometry(geom);
   rtcAttachGeometryByID(scene, geom, id);
   rtcReleaseGeometry(geom);
 }
 
-void attach_mesh(RTCDevice device, RTCScene scene, const Mesh& mesh, unsigned id) {
+void attach_mesh(RTCDevice device, RTCScene scene, const Mesh& mesh, unsigned id,
+                 const CutOut* cut) {
   RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
   auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
                                                         RTC_FORMAT_FLOAT3, 3 * sizeof(float),
@@ -49,6 +58,11 @@ void attach_mesh(RTCDevice device, RTCScene scene, const Mesh& mesh, unsigned id
                                                            RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
                                                            mesh.triangles.size()));
   std::memcpy(t, mesh.triangles.data(), mesh.triangles.size() * 3 * sizeof(unsigned));
+  if (cut != nullptr) {
+    rtcSetGeometryUserData(geom, const_cast<CutOut*>(cut));
+    rtcSetGeometryIntersectFilterFunction(geom, cut_out_triangles);
+    rtcSetGeometryOccludedFilterFunction(geom, cut_out_triangles);
+  }
   rtcCommitGeometry(geom);
   rtcAttachGeometryByID(scene, geom, id);
   rtcReleaseGeometry(geom);
@@ -75,11 +89,20 @@ EmbreeScene::EmbreeScene(const Scene& scene)
     const Object& object = scene.objects[i];
     const auto id = static_cast<unsigned>(i);
     if (object.hidden) continue;  // no ray meets it: not seen, no shadow, not picked
-    if (object.type == ObjectType::sphere) {
-      attach_sphere(m_device, m_scene, object, id);
-    } else if (object.mesh && !object.mesh->triangles.empty()) {
-      attach_mesh(m_device, m_scene, *object.mesh, id);
+    std::unique_ptr<CutOut> cut = make_cut_out(scene, object);
+    // A mesh without (u, v) reads the map's texel at (0, 0): cut out whole, or not at all.
+    if (cut != nullptr && object.type != ObjectType::sphere && object.mesh &&
+        !object.mesh->textured()) {
+      const bool opaque = opaque_at(cut->map, glm::vec2(0.0f));
+      cut.reset();
+      if (!opaque) continue;
     }
+    if (object.type == ObjectType::sphere) {
+      attach_sphere(m_device, m_scene, object, id, cut.get());
+    } else if (object.mesh && !object.mesh->triangles.empty()) {
+      attach_mesh(m_device, m_scene, *object.mesh, id, cut.get());
+    }
+    if (cut != nullptr) m_cut_outs.push_back(std::move(cut));
   }
   rtcCommitScene(m_scene);
   check(m_device, "scene build");

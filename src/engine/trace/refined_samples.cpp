@@ -89,7 +89,7 @@ bool trace_refined_samples(SampleCache& cache, const RenderContext& ctx,
   RefinedSamples& refined = cache.refined;
   refined.spp = spp;
   refined.pixels = std::move(pixels);
-  size_plane(refined.plane, refined.entries(), ctx.plan.slots());
+  size_plane(refined.plane, refined.entries(), ctx.plan.plane_shape());
   const SamplePattern pattern = make_sample_pattern(cache.seed, spp);
   const int width = static_cast<int>(refined.entries());
   const bool done = for_each_entry_packet(cache, ctx, [&](SamplePacket& packet) {
@@ -139,6 +139,7 @@ bool copy_kept_samples(const SamplePlane& from, SamplePlane& to,
         copy(from.lights[li].cos_phong, to.lights[li].cos_phong);
         copy(from.lights[li].cos_blinn, to.lights[li].cos_blinn);
       }
+      for (std::size_t c = 0; c < to.texels.size(); ++c) copy(from.texels[c], to.texels[c]);
     }
   });
 }
@@ -173,9 +174,11 @@ bool update_refined_samples(SampleCache& cache, const RenderContext& ctx,
   next.spp = old.spp;
   next.pixels = std::move(pixels);
   next.plane = std::move(spare);
-  size_plane(next.plane, next.entries(), ctx.plan.slots());
-  // The light factors of kept samples are copied when current (the same plan), else made anew.
-  const bool copy_lights = !lights_stale && old.plane.lights.size() == next.plane.lights.size();
+  size_plane(next.plane, next.entries(), ctx.plan.plane_shape());
+  // The light factors (and the maps' texels, made in the same pass) of kept samples are copied
+  // when current (the same plan), else made anew.
+  const bool copy_lights = !lights_stale && old.plane.lights.size() == next.plane.lights.size() &&
+                           old.plane.texels.size() == next.plane.texels.size();
   const bool copied =
       copy_kept_samples(old.plane, next.plane, copies, spp, copy_lights, ctx.cancel);
   // Packets over the runs: traced entries get primary rays, kept ones with stale light factors
@@ -219,7 +222,7 @@ bool update_refined_samples(SampleCache& cache, const RenderContext& ctx,
 bool recompute_refined_light_factors(SampleCache& cache, const RenderContext& ctx) {
   RefinedSamples& refined = cache.refined;
   if (refined.spp == 0) return true;
-  size_plane(refined.plane, refined.entries(), ctx.plan.slots());
+  size_plane(refined.plane, refined.entries(), ctx.plan.plane_shape());
   const SamplePattern pattern = make_sample_pattern(cache.seed, refined.spp);
   const int width = static_cast<int>(refined.entries());
   return for_each_entry_packet(cache, ctx, [&](SamplePacket& packet) {

@@ -7,20 +7,23 @@
 
 namespace gloss {
 
-void size_plane(SamplePlane& plane, std::size_t pixels, std::size_t lights) {
+void size_plane(SamplePlane& plane, std::size_t pixels, PlaneShape shape) {
   plane.object.resize(pixels);
   plane.prim.resize(pixels);
   plane.t.resize(pixels);
   plane.u.resize(pixels);
   plane.v.resize(pixels);
-  plane.lights.resize(lights);
+  plane.lights.resize(shape.slots);
   for (LightFactorPlane& l : plane.lights) l.resize(pixels);
+  plane.texels.resize(shape.texels);
+  for (UninitializedBuffer<float>& t : plane.texels) t.resize(pixels);
 }
 
 namespace {
 std::size_t plane_bytes(const SamplePlane& p) {
   return p.object.size() * (sizeof(std::int32_t) + sizeof(std::uint32_t) + 3 * sizeof(float)) +
-         p.object.size() * p.lights.size() * 4 * sizeof(float);
+         p.object.size() * p.lights.size() * 4 * sizeof(float) +
+         p.object.size() * p.texels.size() * sizeof(float);
 }
 }  // namespace
 
@@ -53,7 +56,7 @@ void reset_sample_cache(SampleCache& cache, const Scene& scene, int width, int h
   cache.camera_d = make_camera_basis<double>(scene.camera, width, height);
 }
 
-void append_planes(SampleCache& cache, std::size_t lights, int count) {
+void append_planes(SampleCache& cache, PlaneShape shape, int count) {
   const std::size_t pixels = cache.pixel_count();
   for (int s = 0; s < count; ++s) {
     if (!cache.spare.empty()) {
@@ -64,7 +67,7 @@ void append_planes(SampleCache& cache, std::size_t lights, int count) {
     } else {
       cache.planes.emplace_back();
     }
-    size_plane(cache.planes.back(), cache.pixel_count(), lights);
+    size_plane(cache.planes.back(), cache.pixel_count(), shape);
   }
 }
 
@@ -77,7 +80,7 @@ void drop_planes(SampleCache& cache, int first) {
 
 bool add_samples(SampleCache& cache, const RenderContext& ctx, int count) {
   const int first = cache.samples();
-  append_planes(cache, ctx.plan.slots(), count);
+  append_planes(cache, ctx.plan.plane_shape(), count);
   const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
   const bool done = for_each_packet(cache, ctx, [&](SamplePacket& packet) {
     long long rays = 0;
@@ -103,12 +106,12 @@ void reclaim_planes(SampleCache& into, SampleCache&& from) {
   }
 }
 
-void size_planes(SampleCache& cache, std::size_t lights) {
-  for (SamplePlane& plane : cache.planes) size_plane(plane, cache.pixel_count(), lights);
+void size_planes(SampleCache& cache, PlaneShape shape) {
+  for (SamplePlane& plane : cache.planes) size_plane(plane, cache.pixel_count(), shape);
 }
 
 bool recompute_light_factors(SampleCache& cache, const RenderContext& ctx) {
-  size_planes(cache, ctx.plan.slots());
+  size_planes(cache, ctx.plan.plane_shape());
   const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
   const bool planes_done = for_each_packet(cache, ctx, [&](SamplePacket& packet) {
     long long rays = 0;

@@ -3,7 +3,7 @@
 // geometry factors of the shading contract (shading.h LightFactors). Stored plane by plane
 // (plane s holds sample s of every pixel), so progressive passes append planes. Every field is
 // its own array (structure of arrays): packets store and re-shading loops read them as vectors.
-// Bytes per sample: 20 for the hit + 16 per planned light.
+// Bytes per sample: 20 for the hit + 16 per planned light + 4 per texel channel (maps).
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -35,6 +35,9 @@ struct SamplePlane {
   UninitializedBuffer<std::uint32_t> prim;   // triangle index; 0 for spheres
   UninitializedBuffer<float> t, u, v;        // hit distance (unit direction) and barycentrics
   std::vector<LightFactorPlane> lights;      // [planned light]
+  // What the maps gave each sample (render_plan.h TexturePlan: the multipliers of kd, ka, ks,
+  // ke and alpha that vary), one array per channel; empty without maps.
+  std::vector<UninitializedBuffer<float>> texels;
 };
 
 // Adaptive sampling's extra samples (adaptive_refinement.h): `spp` stratified samples of each
@@ -81,13 +84,14 @@ void reset_sample_cache(SampleCache& cache, const Scene& scene, int width, int h
 // cancellation the new planes are dropped and false is returned; the cache stays consistent.
 bool add_samples(SampleCache& cache, const RenderContext& ctx, int count);
 
-// Sizes plane for `pixels` samples and `lights` planned lights; buffers keep their capacity.
-void size_plane(SamplePlane& plane, std::size_t pixels, std::size_t lights);
+// Sizes plane for `pixels` samples, shape.slots light-factor slots and shape.texels texel
+// channels; buffers keep their capacity.
+void size_plane(SamplePlane& plane, std::size_t pixels, PlaneShape shape);
 
 // Appends count planes sized for the cache and `lights` planned lights (memory of spare planes
 // reused), and drops the planes from index first on (to the spares): the bracket of a pass that
 // traces new planes (add_samples, trace_single_sample).
-void append_planes(SampleCache& cache, std::size_t lights, int count);
+void append_planes(SampleCache& cache, PlaneShape shape, int count);
 void drop_planes(SampleCache& cache, int first);
 
 // Moves the planes of `from` (a cache no longer needed) and its refined samples' buffers into
@@ -97,10 +101,11 @@ void reclaim_planes(SampleCache& into, SampleCache&& from);
 
 // Sizes every plane for the cache's pixels and `lights` planned lights (before light factors
 // are recomputed for another plan).
-void size_planes(SampleCache& cache, std::size_t lights);
+void size_planes(SampleCache& cache, PlaneShape shape);
 
 // Recomputes the light factors (shadow rays included) of every plane and of the refined
-// samples for the context's scene and plan, reusing the primary hits. false when cancelled (the factors are then stale).
+// samples for the context's scene and plan, reusing the primary hits. false when cancelled (the
+// factors are then stale).
 bool recompute_light_factors(SampleCache& cache, const RenderContext& ctx);
 
 struct SamplePacket;

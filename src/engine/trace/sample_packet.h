@@ -18,6 +18,7 @@
 #include "engine/simd/lane_store.h"
 #include "engine/simd/lanes.h"
 #include "engine/trace/sample_cache.h"
+#include "engine/trace/texture_lanes.h"
 #include "shading/environment.h"
 #include "shading/sampling.h"
 #include "shading/surface.h"
@@ -135,22 +136,39 @@ inline bool any_hit(const SamplePacket& packet) {
   return !all_lanes_negative(packet.object);
 }
 
-// Surfaces of the packet's hits, then per planned light the factors, stored in plane and each
-// also handed to on_light(li, lanes) for a consumer fused into the same pass. Returns the
-// shadow rays traced.
+// The samples per pixel a plane's samples share their pixel with (their footprint's share).
+inline int plane_spp(const SampleCache& cache, const SamplePlane& plane) {
+  return &plane == &cache.refined.plane ? cache.refined.spp : cache.target_spp;
+}
+
+// Surfaces of the packet's hits, then the maps there (stored in plane; handed to *texels when
+// given), then per planned light the factors, stored in plane and each also handed to
+// on_light(li, lanes) for a consumer fused into the same pass. Returns the shadow rays traced.
 template <class OnLight>
 long long shade_sample(const SamplePacket& packet, const SampleCache& cache,
-                       const RenderContext& ctx, SamplePlane& plane, OnLight&& on_light) {
+                       const RenderContext& ctx, SamplePlane& plane, OnLight&& on_light,
+                       TexelLanes* texels = nullptr) {
+  TexelLanes own_texels;
+  TexelLanes& maps = texels != nullptr ? *texels : own_texels;
+  const std::size_t channels = ctx.plan.textures.channels();
   if (!any_hit(packet)) {  // all background (image borders): every light's factors are zero
     LightLanes none{};
     for (std::size_t li = 0; li < ctx.plan.slots(); ++li) {
       store_light(packet, cache.width, none, plane.lights[li]);
       on_light(li, none);
     }
+    if (channels > 0) {
+      unit_texels(channels, maps);
+      store_texels(packet, cache.width, maps, plane);
+    }
     return 0;
   }
   SurfaceLanes surfaces;
   packet_surfaces(packet, cache, ctx, surfaces);
+  if (ctx.plan.textures.any()) {  // before the lights: normal maps turn n
+    texture_lanes(packet, cache, ctx, plane_spp(cache, plane), surfaces, maps);
+    store_texels(packet, cache.width, maps, plane);
+  }
   long long rays = 0;
   for (std::size_t li = 0; li < ctx.plan.lights.size(); ++li) {
     LightLanes lanes;
@@ -175,11 +193,11 @@ long long shade_sample(const SamplePacket& packet, const SampleCache& cache,
 template <class OnLight>
 long long trace_sample(SamplePacket& packet, const SampleCache& cache, const RenderContext& ctx,
                        const SamplePattern& pattern, int stratum, SamplePlane& plane,
-                       OnLight&& on_light) {
+                       OnLight&& on_light, TexelLanes* texels = nullptr) {
   packet_directions(packet, cache, pattern, stratum);
   const long long rays = trace_primary(packet, cache, ctx);
   store_hits(packet, cache.width, plane);
-  return rays + shade_sample(packet, cache, ctx, plane, on_light);
+  return rays + shade_sample(packet, cache, ctx, plane, on_light, texels);
 }
 
 // Runs f(packet) -> rays over the cached region's packets, band by band of whole rows on

@@ -4,6 +4,7 @@
 
 #include "engine/shade/power_lanes.h"
 #include "engine/shade/recombination.h"
+#include "engine/shade/textured_factors.h"
 #include "engine/shade/total_lanes.h"
 #include "engine/simd/lane_store.h"
 #include "engine/trace/sample_packet.h"
@@ -51,32 +52,52 @@ bool fused_factors_pass(const SampleCache& cache, const RenderContext& ctx, Pixe
       environment_rotation<float>(sky ? scene.environment.rotation : 0.0f);
   if (sky) factors.sky.assign(pixels, glm::vec3(0.0f));
   const float intensity = scene.environment.intensity;
+  // Maps: the texel lanes multiply the total's terms as combine_terms multiplies a pixel's.
+  const TexturePlan& maps = ctx.plan.textures;
+  const bool mapped = has_colour_texels(maps);
+  const int alpha_channel = maps.alpha_channel();
+  const int term_channel[4] = {maps.ke_channel(), maps.ka_channel(), maps.kd_channel(),
+                               maps.ks_channel()};
   return for_each_packet(cache, ctx, [&](SamplePacket& packet) {
     alignas(64) std::int32_t material[kLanes];
     alignas(64) float diffuse[kLanes], specular[kLanes];
+    TexelLanes texels;
     TotalLanes totals(recombination);
     bool coverage = false;
     auto on_light = [&](std::size_t li, const LightLanes& lanes) {
-      if (!coverage) {  // first light: the primary hits are final by now
+      if (!coverage) {  // first light: the primary hits (and texels) are final by now
         single_sample_coverage(materials, packet.object, kLanes, material);
         coverage = true;
       }
+      ScaledExponent storage;
+      const ScaledExponent* scaled = scaled_exponents(
+          ctx, alpha_channel >= 0 ? texels.channel[alpha_channel] : nullptr, kLanes, storage);
       single_sample_light(exponents, scene.render.pow, material, lanes.diffuse_weight,
                           lanes.spec_weight,
                           model == ShadingModel::phong ? lanes.cos_phong : lanes.cos_blinn, kLanes,
-                          diffuse, specular);
+                          diffuse, specular, scaled);
       stream_lanes(packet, width, diffuse, &factors.diffuse[li * pixels]);
       stream_lanes(packet, width, specular, &factors.specular[li * pixels]);
       if (total != nullptr) totals.add_light(material, li, diffuse, specular);
     };
-    const long long rays = sample(packet, on_light);
+    const long long rays = sample(packet, on_light, texels);
     if (!coverage) {
       single_sample_coverage(materials, packet.object, kLanes, material);
     }
     stream_lanes(packet, width, material, factors.material.data());
     if (total != nullptr) {
       float rgb[3 * kLanes];
-      totals.store(material, rgb);
+      if (mapped) {
+        const float* term_maps[4][3] = {};
+        for (int t = 0; t < 4; ++t) {
+          for (int c = 0; c < 3 && term_channel[t] >= 0; ++c) {
+            term_maps[t][c] = texels.channel[term_channel[t] + c];
+          }
+        }
+        totals.store(material, rgb, &term_maps);
+      } else {
+        totals.store(material, rgb);
+      }
       if (sky) {
         glm::vec3 radiance[kLanes];
         sky_lanes(packet, scene.environment, rotation, radiance);
@@ -100,27 +121,32 @@ bool fused_factors_pass(const SampleCache& cache, const RenderContext& ctx, Pixe
 bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFactors& factors,
                          Image* total) {
   drop_planes(cache, 0);  // the first sample of a fresh image (callers reset the cache)
-  append_planes(cache, ctx.plan.slots(), 1);
+  append_planes(cache, ctx.plan.plane_shape(), 1);
   const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
   const int stratum = sample_stratum(pattern, 0);
-  const bool done =
-      fused_factors_pass(cache, ctx, factors, total, [&](SamplePacket& packet, auto& on_light) {
-        return trace_sample(packet, cache, ctx, pattern, stratum, cache.planes[0], on_light);
+  const bool done = fused_factors_pass(
+      cache, ctx, factors, total, [&](SamplePacket& packet, auto& on_light, TexelLanes& texels) {
+        return trace_sample(packet, cache, ctx, pattern, stratum, cache.planes[0], on_light,
+                            &texels);
       });
   if (!done) drop_planes(cache, 0);
+  if (done) borrow_texels(cache.planes[0], ctx.plan, factors);
   return done;
 }
 
 bool relight_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFactors& factors,
                            Image* total) {
-  size_planes(cache, ctx.plan.slots());
+  size_planes(cache, ctx.plan.plane_shape());
   const SamplePattern pattern = make_sample_pattern(cache.seed, cache.target_spp);
   const int stratum = sample_stratum(pattern, 0);
-  return fused_factors_pass(cache, ctx, factors, total, [&](SamplePacket& packet, auto& on_light) {
-    packet_directions(packet, cache, pattern, stratum);
-    load_hits(packet, cache.width, cache.planes[0]);
-    return shade_sample(packet, cache, ctx, cache.planes[0], on_light);
-  });
+  const bool done = fused_factors_pass(
+      cache, ctx, factors, total, [&](SamplePacket& packet, auto& on_light, TexelLanes& texels) {
+        packet_directions(packet, cache, pattern, stratum);
+        load_hits(packet, cache.width, cache.planes[0]);
+        return shade_sample(packet, cache, ctx, cache.planes[0], on_light, &texels);
+      });
+  if (done) borrow_texels(cache.planes[0], ctx.plan, factors);
+  return done;
 }
 
 }  // namespace gloss

@@ -14,9 +14,10 @@ namespace gloss {
 
 namespace {
 
-enum class Format { png, hdr, exr, unknown };
+enum class Format { png, jpeg, hdr, exr, unknown };
 
-// The format from the file's first bytes: PNG's 8-byte signature, Radiance's "#?" header
+// The format from the file's first bytes: PNG's 8-byte signature, JPEG's start-of-image marker
+// and the next marker's first byte (FF D8 FF), Radiance's "#?" header
 // (#?RADIANCE or #?RGBE), OpenEXR's magic number 20000630 (76 2f 31 01, little-endian).
 Format sniff(const std::string& path) {
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
@@ -26,6 +27,7 @@ Format sniff(const std::string& path) {
   const std::size_t n = std::fread(head, 1, sizeof head, file.get());
   static const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   if (n == 8 && std::memcmp(head, png, 8) == 0) return Format::png;
+  if (n >= 3 && head[0] == 0xFF && head[1] == 0xD8 && head[2] == 0xFF) return Format::jpeg;
   if (n >= 2 && head[0] == '#' && head[1] == '?') return Format::hdr;
   if (n >= 4 && head[0] == 0x76 && head[1] == 0x2f && head[2] == 0x31 && head[3] == 0x01) {
     return Format::exr;
@@ -56,10 +58,9 @@ void check_image_size(const std::string& path, const char* format, long long wid
                                ", more than the largest map side of " +
                                std::to_string(kMaxMapSide) + " pixels");
   }
-  const std::uint64_t bytes =
-      static_cast<std::uint64_t>(width) * height *
-          (channels * sizeof(float) + options.extra_bytes_per_pixel) +
-      extra_bytes;
+  const std::uint64_t bytes = static_cast<std::uint64_t>(width) * height *
+                                  (channels * sizeof(float) + options.extra_bytes_per_pixel) +
+                              extra_bytes;
   const std::uint64_t budget = image_budget(options);
   if (bytes > budget) {
     const std::string limit =
@@ -91,6 +92,9 @@ FloatImage read_image(const std::string& path, const ImageReadOptions& options,
     case Format::png:
       image = read_png_image(path, options, out);
       break;
+    case Format::jpeg:
+      image = read_jpeg_image(path, options, out);
+      break;
     case Format::hdr:
       image = read_hdr_image(path, options, out);
       break;
@@ -99,8 +103,8 @@ FloatImage read_image(const std::string& path, const ImageReadOptions& options,
       break;
     case Format::unknown:
       throw InputError(path,
-                       "not an image gloss reads as a map (PNG, Radiance HDR or OpenEXR, told by "
-                       "the file's first bytes)");
+                       "not an image gloss reads as a map (PNG, JPEG, Radiance HDR or OpenEXR, "
+                       "told by the file's first bytes)");
   }
   check_finite_samples(path, image);
   return image;

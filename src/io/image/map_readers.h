@@ -1,5 +1,5 @@
 #pragma once
-// The three formats of image_reader.h, one reader each, and the checks they share (io's own,
+// The formats of image_reader.h, one reader each, and the checks they share (io's own,
 // private).
 #include <cstdint>
 #include <string>
@@ -12,6 +12,8 @@ FloatImage read_png_image(const std::string& path, const ImageReadOptions& optio
                           ImageFileInfo& info);
 FloatImage read_hdr_image(const std::string& path, const ImageReadOptions& options,
                           ImageFileInfo& info);
+FloatImage read_jpeg_image(const std::string& path, const ImageReadOptions& options,
+                           ImageFileInfo& info);
 FloatImage read_exr_image(const std::string& path, const ImageReadOptions& options,
                           ImageFileInfo& info);
 

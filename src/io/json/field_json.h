@@ -65,11 +65,12 @@ void write_changed_fields(const FieldTable<S>& table, const S& value, const S& d
 
 // Adds every field of table to out, in table order, except those that do not apply to value
 // and hold their default (S{}'s): a point light's file keeps its old keys, and a spot switched
-// to a point light keeps its cone for a switch back.
+// to a point light keeps its cone for a switch back. Map fields without a map are left out.
 template <class S>
 void write_fields(const FieldTable<S>& table, const S& value, nlohmann::ordered_json& out) {
   for (const Field<S>& f : table) {
     if (!f.applies_to(value) && f.get(value) == f.get(S{})) continue;
+    if (f.kind == FieldKind::map && !f.get(value).map.named()) continue;  // no map
     out[f.key] = field_value_json(f.kind, f.choices, f.get(value));
   }
 }

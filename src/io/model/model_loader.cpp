@@ -22,8 +22,10 @@
 #include <glm/geometric.hpp>
 
 #include "base/error.h"
+#include "io/model/model_maps.h"
 #include "io/model/model_material.h"
 #include "io/model/model_process.h"
+#include "scene/geometry/tangent_space.h"
 
 namespace gloss {
 
@@ -100,35 +102,47 @@ bool normals_usable(const aiMesh& mesh) {
   return true;
 }
 
+// Tangents go with the normals they were made for.
 void drop_normals(aiMesh& mesh) {
   delete[] mesh.mNormals;
   mesh.mNormals = nullptr;
+  delete[] mesh.mTangents;
+  delete[] mesh.mBitangents;
+  mesh.mTangents = mesh.mBitangents = nullptr;
 }
 
 // GenSmoothNormals writes each face's normal into its corners' vertices, so it needs one vertex
 // per polygon corner (assimp's "verbose" format). The PLY and glTF readers share vertices between
 // faces without saying so, and assimp's own un-sharing step is internal, not a flag: this is it,
-// for a mesh that (after RemoveComponent) holds only positions and faces. Morph targets are
-// dropped (gloss does not animate) because their arrays follow the old vertex numbering.
+// for a mesh that (after RemoveComponent) holds only positions, texture coordinates and faces.
+// Morph targets are dropped (gloss does not animate) because their arrays follow the old vertex
+// numbering.
 void unshare_vertices(aiMesh& mesh) {
   unsigned corners = 0;
   for (unsigned f = 0; f < mesh.mNumFaces; ++f) corners += mesh.mFaces[f].mNumIndices;
   auto* positions = new aiVector3D[corners];
+  aiVector3D* uv[2] = {nullptr, nullptr};
+  for (unsigned c = 0; c < 2; ++c) {
+    if (mesh.mTextureCoords[c] != nullptr) uv[c] = new aiVector3D[corners];
+  }
   unsigned next = 0;
   for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
     aiFace& face = mesh.mFaces[f];
     for (unsigned k = 0; k < face.mNumIndices; ++k) {
       positions[next] = mesh.mVertices[face.mIndices[k]];
+      for (unsigned c = 0; c < 2; ++c) {
+        if (uv[c] != nullptr) uv[c][next] = mesh.mTextureCoords[c][face.mIndices[k]];
+      }
       face.mIndices[k] = next++;
     }
   }
   delete[] mesh.mVertices;
   mesh.mVertices = positions;
   mesh.mNumVertices = corners;
-  // RemoveComponent took these away already; any left would follow the old numbering.
+  // Texture coordinate sets 0 and 1 follow the new numbering; anything else would not.
   for (unsigned c = 0; c < AI_MAX_NUMBER_OF_TEXTURECOORDS; ++c) {
     delete[] mesh.mTextureCoords[c];
-    mesh.mTextureCoords[c] = nullptr;
+    mesh.mTextureCoords[c] = c < 2 ? uv[c] : nullptr;
   }
   for (unsigned c = 0; c < AI_MAX_NUMBER_OF_COLOR_SETS; ++c) {
     delete[] mesh.mColors[c];
@@ -154,20 +168,40 @@ glm::vec3 to_vec3(const aiVector3D& v) {
 // Drops the vertices no triangle uses (after degenerate triangles were removed), keeping order.
 void remove_unused_vertices(Mesh& mesh) {
   std::vector<unsigned> remap(mesh.positions.size(), ~0u);
-  std::vector<glm::vec3> positions, normals;
+  Mesh kept;
   for (glm::uvec3& tri : mesh.triangles) {
     for (int k = 0; k < 3; ++k) {
       unsigned& index = tri[k];
       if (remap[index] == ~0u) {
-        remap[index] = static_cast<unsigned>(positions.size());
-        positions.push_back(mesh.positions[index]);
-        if (mesh.smooth()) normals.push_back(mesh.normals[index]);
+        remap[index] = static_cast<unsigned>(kept.positions.size());
+        kept.positions.push_back(mesh.positions[index]);
+        if (mesh.smooth()) kept.normals.push_back(mesh.normals[index]);
+        for (int c = 0; c < 2; ++c) {
+          if (!mesh.uv[c].empty()) kept.uv[c].push_back(mesh.uv[c][index]);
+        }
+        if (!mesh.tangents.empty()) kept.tangents.push_back(mesh.tangents[index]);
       }
       index = remap[index];
     }
   }
-  mesh.positions = std::move(positions);
-  mesh.normals = std::move(normals);
+  kept.triangles = std::move(mesh.triangles);
+  mesh = std::move(kept);
+}
+
+// A file's tangent with its handedness: +1 where the file's bitangent agrees with
+// cross(normal, tangent), -1 where it is mirrored (glTF's TANGENT.w, which assimp turns into
+// the bitangent).
+glm::vec4 file_tangent(const aiMesh& in, unsigned v) {
+  const glm::dvec3 t(in.mTangents[v].x, in.mTangents[v].y, in.mTangents[v].z);
+  const double len = glm::length(t);
+  const glm::vec3 unit = len > 0.0 && std::isfinite(len) ? glm::vec3(t / len) : glm::vec3(0.0f);
+  float w = 1.0f;
+  if (in.mBitangents != nullptr && in.mNormals != nullptr) {
+    const glm::vec3 n(in.mNormals[v].x, in.mNormals[v].y, in.mNormals[v].z);
+    const glm::vec3 b(in.mBitangents[v].x, in.mBitangents[v].y, in.mBitangents[v].z);
+    w = glm::dot(glm::cross(n, unit), b) < 0.0f ? -1.0f : 1.0f;
+  }
+  return glm::vec4(unit, w);
 }
 
 // Appends one triangulated assimp mesh. Normals are normalised in double so tiny but non-zero
@@ -177,6 +211,12 @@ void append_mesh(const aiMesh& in, bool with_normals, Mesh& out) {
   const auto base = static_cast<unsigned>(out.positions.size());
   for (unsigned v = 0; v < in.mNumVertices; ++v) {
     out.positions.push_back(to_vec3(in.mVertices[v]));
+    for (unsigned c = 0; c < 2; ++c) {
+      if (in.mTextureCoords[c] != nullptr) {
+        out.uv[c].emplace_back(in.mTextureCoords[c][v].x, in.mTextureCoords[c][v].y);
+      }
+    }
+    if (with_normals && in.mTangents != nullptr) out.tangents.push_back(file_tangent(in, v));
     if (!with_normals) continue;
     const glm::dvec3 n(in.mNormals[v].x, in.mNormals[v].y, in.mNormals[v].z);
     const double len = glm::length(n);
@@ -204,10 +244,9 @@ void append_mesh(const aiMesh& in, bool with_normals, Mesh& out) {
 // GenSmoothNormals counts each polygon once at a vertex, as for an OBJ file, whatever the format.
 constexpr unsigned kImportFlags =
     aiProcess_RemoveComponent | aiProcess_PreTransformVertices | aiProcess_ValidateDataStructure;
-constexpr int kRemovedComponents = aiComponent_TANGENTS_AND_BITANGENTS | aiComponent_COLORS |
-                                   aiComponent_TEXCOORDS | aiComponent_BONEWEIGHTS |
-                                   aiComponent_ANIMATIONS | aiComponent_TEXTURES |
-                                   aiComponent_LIGHTS | aiComponent_CAMERAS;
+constexpr int kRemovedComponents = aiComponent_COLORS | aiComponent_BONEWEIGHTS |
+                                   aiComponent_ANIMATIONS | aiComponent_LIGHTS |
+                                   aiComponent_CAMERAS;
 
 }  // namespace
 
@@ -272,6 +311,17 @@ Model import_with_assimp(const std::string& path, const ModelOptions& options) {
     name_of[i] = name;
     model.material_names.push_back(name);
     model.materials.push_back(named.material);
+    model.file_materials.push_back(std::move(named.textures));
+  }
+  // Images inside the file (a .glb's buffers, data: URIs), named "*N" as the materials name them.
+  for (unsigned i = 0; i < scene->mNumTextures; ++i) {
+    const aiTexture& texture = *scene->mTextures[i];
+    ModelEmbeddedImage image;
+    image.name = "*" + std::to_string(i);
+    if (texture.mHeight == 0) {  // compressed (PNG, JPEG ...): mWidth bytes
+      image.bytes.assign(reinterpret_cast<const char*>(texture.pcData), texture.mWidth);
+    }  // else raw texels, which no glTF or OBJ file makes: left empty, reported as unusable
+    model.embedded.push_back(std::move(image));
   }
 
   std::map<unsigned, std::size_t> part_of;  // material index -> part
@@ -286,15 +336,25 @@ Model import_with_assimp(const std::string& path, const ModelOptions& options) {
     }
     append_mesh(mesh, !flat && mesh.mNormals != nullptr, model.parts[it->second].mesh);
   }
-  // A part mixing meshes with and without normals would be inconsistent: flat throughout.
+  // A part mixing meshes with and without normals would be inconsistent: flat throughout; the
+  // same for texture coordinates and tangents.
   for (ModelPart& part : model.parts) {
-    if (part.mesh.normals.size() != part.mesh.positions.size()) part.mesh.normals.clear();
+    Mesh& mesh = part.mesh;
+    if (mesh.normals.size() != mesh.positions.size()) mesh.normals.clear();
+    for (auto& uv : mesh.uv) {
+      if (uv.size() != mesh.positions.size()) uv.clear();
+    }
+    if (mesh.uv[0].empty()) mesh.uv[1].clear();
+    if (mesh.tangents.size() != mesh.positions.size() || !mesh.smooth()) mesh.tangents.clear();
   }
 
   std::size_t dropped = 0;
   for (ModelPart& part : model.parts) {
     dropped += drop_degenerate_triangles(part.mesh);
     remove_unused_vertices(part.mesh);
+    // The file's tangents where it gives them, else MikkTSpace's (the convention normal maps
+    // are baked in).
+    if (part.mesh.tangents.empty()) generate_tangents(part.mesh);
   }
   if (dropped > 0) {
     model.warnings.push_back(path + ": dropped " + std::to_string(dropped) +
@@ -325,8 +385,20 @@ Model load_model(const std::string& path, const ModelOptions& options) {
   if (!(options.crease_angle >= 0.0f && options.crease_angle <= 180.0f)) {
     throw InputError(path, "crease angle must be 0..180 degrees");
   }
-  return import_in_child_process(
+  Model model = import_in_child_process(
       path, [&options](const std::string& file) { return import_with_assimp(file, options); });
+  // The child is this program, but what comes back is checked as any input: arrays that do not
+  // match their mesh are dropped rather than indexed.
+  for (ModelPart& part : model.parts) {
+    Mesh& mesh = part.mesh;
+    for (auto& uv : mesh.uv) {
+      if (uv.size() != mesh.positions.size()) uv.clear();
+    }
+    if (mesh.tangents.size() != mesh.positions.size()) mesh.tangents.clear();
+  }
+  model.file_materials.resize(model.materials.size());
+  if (options.read_maps) read_model_maps(path, model, options);
+  return model;
 }
 
 }  // namespace gloss

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <string>
 #include <utility>
 
+#include <assimp/GltfMaterial.h>
 #include <assimp/material.h>
 
 #include <glm/common.hpp>
@@ -28,6 +30,60 @@ bool get_float(const aiMaterial& m, const char* key, unsigned type, unsigned ind
   if (m.Get(key, type, index, value) != AI_SUCCESS) return false;
   out = static_cast<float>(value);
   return true;
+}
+
+// assimp lists glTF's base colour texture as DIFFUSE and BASE_COLOR, and its metallic-roughness
+// texture as UNKNOWN, METALNESS and DIFFUSE_ROUGHNESS: each once is enough.
+constexpr aiTextureType kDuplicateTypes[] = {aiTextureType_BASE_COLOR, aiTextureType_METALNESS,
+                                             aiTextureType_DIFFUSE_ROUGHNESS};
+
+ModelFileMaterial file_material(const aiMaterial& in, bool pbr, const glm::vec3& base,
+                                float metallic, float roughness) {
+  ModelFileMaterial out;
+  out.gltf = pbr;
+  float opacity = 1.0f;
+  get_float(in, AI_MATKEY_OPACITY, opacity);
+  out.base_colour = glm::vec4(base, opacity);
+  out.metallic = metallic;
+  out.roughness = roughness;
+  aiString mode;
+  if (in.Get(AI_MATKEY_GLTF_ALPHAMODE, mode) == AI_SUCCESS) out.alpha_mode = mode.C_Str();
+  get_float(in, AI_MATKEY_GLTF_ALPHACUTOFF, out.alpha_cutoff);
+  for (int t = aiTextureType_NONE + 1; t <= AI_TEXTURE_TYPE_MAX; ++t) {
+    const auto type = static_cast<aiTextureType>(t);
+    if (std::find(std::begin(kDuplicateTypes), std::end(kDuplicateTypes), type) !=
+        std::end(kDuplicateTypes)) {
+      continue;
+    }
+    const unsigned count = in.GetTextureCount(type);
+    for (unsigned k = 0; k < count; ++k) {
+      ModelTextureRef ref;
+      ref.type = t;
+      aiString path;
+      unsigned uv = 0;
+      aiTextureMapMode modes[2] = {aiTextureMapMode_Wrap, aiTextureMapMode_Wrap};
+      if (in.GetTexture(type, k, &path, nullptr, &uv, nullptr, nullptr, modes) != AI_SUCCESS) {
+        continue;
+      }
+      ref.path = path.C_Str();
+      ref.uv_set = static_cast<int>(uv);
+      ref.wrap_u = modes[0];
+      ref.wrap_v = modes[1];
+      aiUVTransform transform;
+      if (in.Get(AI_MATKEY_UVTRANSFORM(type, k), transform) == AI_SUCCESS) {
+        ref.transformed = true;
+        ref.translation[0] = transform.mTranslation.x;
+        ref.translation[1] = transform.mTranslation.y;
+        ref.scaling[0] = transform.mScaling.x;
+        ref.scaling[1] = transform.mScaling.y;
+        ref.rotation = transform.mRotation;
+      }
+      get_float(in, AI_MATKEY_GLTF_TEXTURE_SCALE(type, k), ref.strength);
+      get_float(in, AI_MATKEY_GLTF_TEXTURE_STRENGTH(type, k), ref.strength);
+      out.textures.push_back(ref);
+    }
+  }
+  return out;
 }
 
 // assimp's stand-in for a part without a material of its own, where it is not named
@@ -78,6 +134,7 @@ NamedMaterial convert_material(const aiMaterial& in, unsigned index,
         glm::mix(glm::vec3(0.04f), m.diffuse, std::clamp(metallic, 0.0f, 1.0f)) * (1.0f - r);
   }
   get_colour(in, AI_MATKEY_COLOR_EMISSIVE, m.emission);
+  out.textures = file_material(in, pbr, base, metallic, roughness);
   // assimp's glTF 2.0 reader gives shininess itself: 1000 (1 - roughness)^2.
   get_float(in, AI_MATKEY_SHININESS, m.shininess);
 

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -108,6 +109,58 @@ Material read_material(Reader& r) {
   return m;
 }
 
+void write_file_material(Writer& w, const ModelFileMaterial& m) {
+  w.raw<std::uint64_t>(m.textures.size());
+  for (const ModelTextureRef& t : m.textures) {
+    w.raw(t.type);
+    w.text(t.path);
+    w.raw(t.uv_set);
+    w.raw(t.wrap_u);
+    w.raw(t.wrap_v);
+    w.raw(t.transformed);
+    w.raw(t.translation);
+    w.raw(t.scaling);
+    w.raw(t.rotation);
+    w.raw(t.strength);
+  }
+  w.raw(m.gltf);
+  w.raw(m.base_colour);
+  w.raw(m.metallic);
+  w.raw(m.roughness);
+  w.text(m.alpha_mode);
+  w.raw(m.alpha_cutoff);
+}
+
+ModelFileMaterial read_file_material(Reader& r) {
+  ModelFileMaterial m;
+  const auto count = r.raw<std::uint64_t>();
+  for (std::uint64_t i = 0; i < count; ++i) {
+    ModelTextureRef t;
+    t.type = r.raw<int>();
+    t.path = r.text();
+    t.uv_set = r.raw<int>();
+    t.wrap_u = r.raw<int>();
+    t.wrap_v = r.raw<int>();
+    t.transformed = r.raw<bool>();
+    const auto translation = r.raw<std::array<float, 2>>();
+    const auto scaling = r.raw<std::array<float, 2>>();
+    t.translation[0] = translation[0];
+    t.translation[1] = translation[1];
+    t.scaling[0] = scaling[0];
+    t.scaling[1] = scaling[1];
+    t.rotation = r.raw<float>();
+    t.strength = r.raw<float>();
+    m.textures.push_back(std::move(t));
+  }
+  m.gltf = r.raw<bool>();
+  m.base_colour = r.raw<glm::vec4>();
+  m.metallic = r.raw<float>();
+  m.roughness = r.raw<float>();
+  m.alpha_mode = r.text();
+  m.alpha_cutoff = r.raw<float>();
+  return m;
+}
+
 std::string pack(const Model& model) {
   Writer w;
   w.raw('M');
@@ -117,11 +170,21 @@ std::string pack(const Model& model) {
     w.array(part.mesh.positions);
     w.array(part.mesh.normals);
     w.array(part.mesh.triangles);
+    w.array(part.mesh.uv[0]);
+    w.array(part.mesh.uv[1]);
+    w.array(part.mesh.tangents);
   }
   w.raw<std::uint64_t>(model.materials.size());
   for (std::size_t i = 0; i < model.materials.size(); ++i) {
     w.text(model.material_names[i]);
     write_material(w, model.materials[i]);
+    write_file_material(
+        w, i < model.file_materials.size() ? model.file_materials[i] : ModelFileMaterial{});
+  }
+  w.raw<std::uint64_t>(model.embedded.size());
+  for (const ModelEmbeddedImage& image : model.embedded) {
+    w.text(image.name);
+    w.text(image.bytes);
   }
   w.raw<std::uint64_t>(model.warnings.size());
   for (const std::string& warning : model.warnings) w.text(warning);
@@ -137,12 +200,23 @@ Model unpack(Reader& r) {
     part.mesh.positions = r.array<glm::vec3>();
     part.mesh.normals = r.array<glm::vec3>();
     part.mesh.triangles = r.array<glm::uvec3>();
+    part.mesh.uv[0] = r.array<glm::vec2>();
+    part.mesh.uv[1] = r.array<glm::vec2>();
+    part.mesh.tangents = r.array<glm::vec4>();
     model.parts.push_back(std::move(part));
   }
   const auto materials = r.raw<std::uint64_t>();
   for (std::uint64_t i = 0; i < materials; ++i) {
     model.material_names.push_back(r.text());
     model.materials.push_back(read_material(r));
+    model.file_materials.push_back(read_file_material(r));
+  }
+  const auto images = r.raw<std::uint64_t>();
+  for (std::uint64_t i = 0; i < images; ++i) {
+    ModelEmbeddedImage image;
+    image.name = r.text();
+    image.bytes = r.text();
+    model.embedded.push_back(std::move(image));
   }
   const auto warnings = r.raw<std::uint64_t>();
   for (std::uint64_t i = 0; i < warnings; ++i) model.warnings.push_back(r.text());

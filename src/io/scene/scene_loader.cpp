@@ -14,6 +14,7 @@
 #include "io/json/material_json.h"
 #include "io/json/name_escape.h"
 #include "io/scene/environment_reader.h"
+#include "io/scene/material_maps.h"
 #include "io/scene/scene_json_reader.h"
 #include "io/scene/scene_object_reader.h"
 #include "scene/fields/fields.h"
@@ -58,8 +59,9 @@ Environment read_environment(const JsonObjectReader& top, const std::string& bas
   environment.file = reader.string("file");
   if (environment.file.empty()) reader.fail("file", "must name a map file");
   const std::filesystem::path file(environment.file);
-  const std::string path =
-      file.is_absolute() || base_dir.empty() ? file.string() : (std::filesystem::path(base_dir) / file).string();
+  const std::string path = file.is_absolute() || base_dir.empty()
+                               ? file.string()
+                               : (std::filesystem::path(base_dir) / file).string();
   const std::uint64_t budget = memory_budget_bytes();
   if (claimed_bytes >= budget) {
     reader.fail("file", "no memory budget is left for a map after the geometry (" +
@@ -131,6 +133,16 @@ void refuse_materials_file(const nlohmann::json& root, const std::string& path) 
   }
 }
 
+// A file named relative to the folder `from`, named relative to `to` (absolute paths stay; so
+// does a path that cannot be made relative).
+std::string rebased(const std::string& file, const std::filesystem::path& from,
+                    const std::filesystem::path& to) {
+  const std::filesystem::path path(file);
+  if (file.empty() || path.is_absolute()) return file;
+  const std::filesystem::path relative = (from / path).lexically_normal().lexically_relative(to);
+  return relative.empty() ? (from / path).string() : relative.generic_string();
+}
+
 bool has_mtl_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -143,10 +155,9 @@ Scene parse_scene(const std::string& text, const std::string& path,
                   std::vector<std::string>* warnings) {
   const nlohmann::json root = parse_json_text(text, path);
   refuse_materials_file(root, path);
-  const JsonObjectReader top(
-      root, path, "",
-      allowed_keys(scene_fields(),
-                   {"camera", "lights", "materials", "objects", "render", "environment"}));
+  const JsonObjectReader top(root, path, "",
+                             allowed_keys(scene_fields(), {"camera", "lights", "materials",
+                                                           "objects", "render", "environment"}));
 
   Scene scene;
   scene.path = path;
@@ -169,6 +180,15 @@ Scene parse_scene(const std::string& text, const std::string& path,
   claim_geometry_in_advance(objects, context);
   for (std::size_t i = 0; i < objects.size(); ++i) {
     read_scene_object(objects[i], i, context, materials, pending);
+  }
+  // The maps the scene's own materials name (a model's came with it), after the geometry.
+  MapReadContext maps;
+  maps.file = path;
+  maps.base_dir = context.base_dir;
+  maps.claimed_bytes = &claimed_bytes;
+  maps.warnings = warnings;
+  for (auto& [name, material] : materials) {
+    read_material_maps(material, child_path("materials", escape_name(name)), maps);
   }
   resolve_materials(path, materials, pending, scene);
   scene.environment = read_environment(top, context.base_dir, claimed_bytes, warnings);
@@ -196,6 +216,16 @@ void save_scene(const Scene& scene, const std::string& path) {
       if (object.type != ObjectType::mesh || file.empty() || file.is_absolute()) continue;
       const fs::path relative = (from / file).lexically_normal().lexically_relative(to);
       object.params.file = relative.empty() ? (from / file).string() : relative.generic_string();
+    }
+  }
+  if (!scene.path.empty() && from != to) {
+    for (Material& material : moved.materials) {
+      for (int s = 0; s < kMapSlots; ++s) {
+        const auto slot = static_cast<MapSlot>(s);
+        if (material.map(slot).named()) {
+          material.map(slot).file = rebased(material.map(slot).file, from, to);
+        }
+      }
     }
   }
   if (!scene.path.empty() && from != to && !moved.environment.file.empty()) {

@@ -17,6 +17,7 @@
 #include "io/json/field_json.h"
 #include "io/json/name_escape.h"
 #include "io/model/model_loader.h"
+#include "io/model/model_maps.h"
 #include "io/model/teapot_reader.h"
 #include "io/scene/scene_json_reader.h"
 #include "io/scene/scene_loader.h"
@@ -170,7 +171,15 @@ void read_mesh(const JsonObjectReader& reader, const ObjectReadContext& context,
                                    : (std::filesystem::path(context.base_dir) / file_path).string();
   Model model;
   try {
-    model = load_model(resolved, {params.smooth, params.crease_angle});
+    ModelOptions options;
+    options.smooth = params.smooth;
+    options.crease_angle = params.crease_angle;
+    if (context.claimed_bytes != nullptr && context.budget_bytes != UINT64_MAX) {
+      options.map_budget_bytes = context.budget_bytes > *context.claimed_bytes
+                                     ? context.budget_bytes - *context.claimed_bytes
+                                     : 1;
+    }
+    model = load_model(resolved, options);
   } catch (const InputError& error) {
     fail_field(context.file, reader.path("file"), error.what());
   } catch (const std::bad_alloc&) {
@@ -183,6 +192,21 @@ void read_mesh(const JsonObjectReader& reader, const ObjectReadContext& context,
   for (const std::string& warning : model.warnings) {
     if (context.warnings)
       context.warnings->push_back(context.file + ": " + reader.path("file") + ": " + warning);
+  }
+  if (context.claimed_bytes != nullptr) *context.claimed_bytes += model.map_bytes;
+  // The model's maps named as the scene names files: relative to the scene's folder.
+  for (Material& material : model.materials) {
+    for (int s = 0; s < kMapSlots; ++s) {
+      if (!material.map(static_cast<MapSlot>(s)).named()) continue;
+      TextureMap& map = material.map(static_cast<MapSlot>(s));
+      std::string inner_model, inner_material;
+      MapSlot slot;
+      if (split_model_map_reference(map.file, inner_model, inner_material, slot)) {
+        map.file = model_map_reference(params.file, inner_material, slot);
+      } else {
+        map.file = (file_path.parent_path() / map.file).lexically_normal().generic_string();
+      }
+    }
   }
 
   std::vector<const ModelPart*> parts;

@@ -39,6 +39,22 @@ bool in_range(double x, double min, double max, bool open_min, bool open_max) {
   return (open_min ? x > min : x >= min) && (open_max ? x < max : x <= max);
 }
 
+// A map's settings: a texture coordinate set of 0 or 1, finite scale, rotation and offset within
+// the coordinate range the lookups keep exact (docs/spec/shading.md: coordinates up to 1e6).
+FieldProblem map_problem(const TextureMap& map) {
+  if (map.uv_set != 0 && map.uv_set != 1) return {"uv_set must be 0 or 1"};
+  const double values[] = {map.scale.x, map.scale.y, map.offset.x, map.offset.y, map.rotation};
+  const char* names[] = {"scale", "scale", "offset", "offset", "rotation"};
+  for (int k = 0; k < 5; ++k) {
+    if (!std::isfinite(values[k]) || std::fabs(values[k]) > 1e6) {
+      return {std::string(names[k]) + " must be a finite number from -1000000 to 1000000, got " +
+              number_text(values[k])};
+    }
+  }
+  if (map.present() && !map.named()) return {"a map must name its file"};
+  return {};
+}
+
 }  // namespace
 
 FieldProblem field_problem(FieldKind kind, double min, double max, bool open_min, bool open_max,
@@ -72,6 +88,8 @@ FieldProblem field_problem(FieldKind kind, double min, double max, bool open_min
     case FieldKind::flag:
       if (value.x != 0.0 && value.x != 1.0) return {"must be on or off"};
       return {};
+    case FieldKind::map:
+      return map_problem(value.map);
     case FieldKind::choice:
       if (!(value.x == std::floor(value.x)) || value.x < 0.0 ||
           value.x >= static_cast<double>(choices.size())) {
@@ -98,6 +116,8 @@ std::string field_text(FieldKind kind, const std::vector<const char*>& choices,
       return number_text(value.x);
     case FieldKind::flag:
       return value.x != 0.0 ? "on" : "off";
+    case FieldKind::map:
+      return value.map.named() ? value.map.file : "none";
     case FieldKind::choice: {
       const int index = static_cast<int>(value.x);
       return index >= 0 && index < static_cast<int>(choices.size()) ? choices[index] : "?";

@@ -14,6 +14,7 @@
 #include <glm/vec3.hpp>
 
 #include "scene/fields/change.h"
+#include "scene/texture_map.h"
 
 namespace gloss {
 
@@ -24,14 +25,16 @@ enum class FieldKind {
   whole,   // a whole number within [min, max]
   flag,    // true or false
   choice,  // one of the names in choices
+  map,     // an image map: a file and how (u, v) reach it (scene/texture_map.h)
 };
 
 // A field's value whatever its kind: colours and vectors in v; numbers, whole numbers, flags
-// (0 or 1) and choices (the index into choices) in x. A double holds every float, every int
-// and every uint32_t exactly.
+// (0 or 1) and choices (the index into choices) in x; maps in map. A double holds every float,
+// every int and every uint32_t exactly.
 struct FieldValue {
   glm::vec3 v{0.0f};
   double x = 0.0;
+  TextureMap map;
 };
 
 inline FieldValue vec3_value(const glm::vec3& v) {
@@ -45,8 +48,14 @@ inline FieldValue number_value(double x) {
   return value;
 }
 
+inline FieldValue map_value(TextureMap map) {
+  FieldValue value;
+  value.map = std::move(map);
+  return value;
+}
+
 inline bool operator==(const FieldValue& a, const FieldValue& b) {
-  return a.v == b.v && a.x == b.x;
+  return a.v == b.v && a.x == b.x && a.map == b.map;
 }
 inline bool operator!=(const FieldValue& a, const FieldValue& b) {
   return !(a == b);
@@ -191,6 +200,18 @@ Field<typename MemberOf<decltype(Member)>::Struct> choice_field(const char* key,
     using V = std::remove_reference_t<decltype(s.*Member)>;
     s.*Member = static_cast<V>(static_cast<int>(value.x));
   };
+  return f;
+}
+
+// One of a Material's maps (scene/material.h) as a map field.
+template <class S, MapSlot Slot>
+Field<S> map_field(const char* key, const char* label) {
+  Field<S> f;
+  f.key = key;
+  f.label = label;
+  f.kind = FieldKind::map;
+  f.get = [](const S& s) { return map_value(s.map(Slot)); };
+  f.set = [](S& s, const FieldValue& value) { s.map(Slot) = value.map; };
   return f;
 }
 

@@ -31,6 +31,50 @@ const FieldTable<Material>& material_fields() {
                     .invalidates(ChangeClass::exponent)
                     .explain("the exponent alpha of c^alpha: larger is a smaller, sharper "
                              "highlight"));
+    // Maps (docs/spec/shading.md, "Textures"): a colour or shininess map is sampled again at the
+    // cached hits; an opacity map changes what rays hit; a normal or bump map moves the shading
+    // normal, so the light factors are made again.
+    using M = Material;
+    t.push_back(map_field<M, MapSlot::diffuse>("diffuse_map", "diffuse map")
+                    .invalidates(ChangeClass::texture)
+                    .explain("kd times the map, per channel (and ka, unless an ambient map is "
+                             "given); sRGB-decoded unless the file says linear"));
+    t.push_back(map_field<M, MapSlot::ambient>("ambient_map", "ambient map")
+                    .invalidates(ChangeClass::texture)
+                    .explain("ka times the map, per channel (for example an occlusion map)"));
+    t.push_back(map_field<M, MapSlot::specular>("specular_map", "specular map")
+                    .invalidates(ChangeClass::texture)
+                    .explain("ks times the map, per channel"));
+    t.push_back(map_field<M, MapSlot::emission>("emission_map", "emission map")
+                    .invalidates(ChangeClass::texture)
+                    .explain("ke times the map, per channel"));
+    t.push_back(map_field<M, MapSlot::shininess>("shininess_map", "shininess map")
+                    .invalidates(ChangeClass::texture)
+                    .explain("alpha times the map's first channel (linear data)"));
+    t.push_back(map_field<M, MapSlot::opacity>("opacity_map", "opacity map")
+                    .invalidates(ChangeClass::full)
+                    .explain("a cut-out: no surface where the map (its alpha, else its first "
+                             "channel) is below 0.5"));
+    t.push_back(map_field<M, MapSlot::normal>("normal_map", "normal map")
+                    .invalidates(ChangeClass::light)
+                    .explain("tangent-space normals, +Y up (glTF, OpenGL): n = 2 c - 1"));
+    t.push_back(
+        scalar_field<&Material::normal_scale>(FieldKind::number, "normal_scale", "normal scale")
+            .range(-1e3, 1e3)
+            .ui(0.0, 2.0)
+            .invalidates(ChangeClass::light)
+            .only_when([](const Material& m) { return m.map(MapSlot::normal).named(); })
+            .explain("the normal map's x and y times this: 0 is flat, 1 as painted"));
+    t.push_back(map_field<M, MapSlot::bump>("bump_map", "bump map")
+                    .invalidates(ChangeClass::light)
+                    .explain("a height field (first channel, linear) that tilts the shading "
+                             "normal"));
+    t.push_back(scalar_field<&Material::bump_scale>(FieldKind::number, "bump_scale", "bump scale")
+                    .range(-1e6, 1e6)
+                    .ui(0.0, 0.1)
+                    .invalidates(ChangeClass::light)
+                    .only_when([](const Material& m) { return m.map(MapSlot::bump).named(); })
+                    .explain("the bump map's height times this, scene units"));
     return t;
   }();
   return table;
@@ -231,6 +275,11 @@ const FieldTable<RenderSettings>& render_fields() {
             .explain("directions per sample that converge on the environment's exact "
                      "terms (visibility included with shadows on); 0: the fast path "
                      "alone"));
+    t.push_back(choice_field<&RenderSettings::map_filter>("map_filter", "map filter",
+                                                          {"trilinear", "bilinear", "nearest"})
+                    .invalidates(ChangeClass::texture)
+                    .explain("maps read trilinear at each sample's footprint (the contract), or "
+                             "bilinear or nearest at full resolution (knobs: they alias)"));
     return t;
   }();
   return table;

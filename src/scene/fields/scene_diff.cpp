@@ -43,6 +43,8 @@ const char* to_string(ChangeClass change) {
       return "shade";
     case ChangeClass::exponent:
       return "exponent";
+    case ChangeClass::texture:
+      return "texture";
     case ChangeClass::environment:
       return "environment";
     case ChangeClass::light:
@@ -78,14 +80,29 @@ SceneDiff diff_scenes(const Scene& before, const Scene& after) {
   if (before.materials.size() != after.materials.size()) {
     diff.change = raise(diff.change, ChangeClass::exponent);
     diff.any = true;
+    for (const Scene* s : {&before, &after}) {
+      for (const Material& m : s->materials) {
+        if (m.has_map(MapSlot::opacity)) diff.geometry = true;
+      }
+    }
+    if (diff.geometry) diff.change = ChangeClass::full;
   } else {
     for (std::size_t m = 0; m < before.materials.size(); ++m) {
       diff_fields(material_fields(), before.materials[m], after.materials[m], diff);
       // The reference changes no Phong pixel (ChangeClass::none) but is part of the document.
       diff.any = diff.any || before.materials[m].preset != after.materials[m].preset ||
                  before.materials[m].reference != after.materials[m].reference;
+      // An opacity map cuts the geometry: what rays hit changes (engine/trace/cut_outs.h).
+      if (before.materials[m].map(MapSlot::opacity) != after.materials[m].map(MapSlot::opacity)) {
+        diff.change = ChangeClass::full;
+        diff.geometry = true;
+      }
     }
   }
+  auto cut = [](const Scene& s, int material) {
+    return material >= 0 && material < static_cast<int>(s.materials.size()) &&
+           s.materials[static_cast<std::size_t>(material)].has_map(MapSlot::opacity);
+  };
   if (before.objects.size() != after.objects.size()) {
     diff.change = ChangeClass::full;
     diff.geometry = diff.any = true;
@@ -104,6 +121,10 @@ SceneDiff diff_scenes(const Scene& before, const Scene& after) {
       if (a.material != b.material) {
         diff.change = raise(diff.change, ChangeClass::exponent);
         diff.any = true;
+        if (cut(before, a.material) || cut(after, b.material)) {  // cut out now, or no more
+          diff.change = ChangeClass::full;
+          diff.geometry = true;
+        }
       }
       diff.any = diff.any || a.name != b.name || !same_params(a.params, b.params) ||
                  a.shape != b.shape || a.transform.pivot_set != b.transform.pivot_set;

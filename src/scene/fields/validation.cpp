@@ -179,6 +179,14 @@ void check_memory(const Scene& scene, SampleMemory samples) {
                      " MB with it, budget " + memory_budget_text());
     }
   }
+  const std::uint64_t maps = texture_bytes(scene);
+  if (maps > 0 && total + maps > budget) {
+    fail_field(file, "materials",
+               "the maps hold ~" + std::to_string(megabytes(maps)) + " MB: the scene needs ~" +
+                   std::to_string(megabytes(total + maps)) + " MB with them, budget " +
+                   memory_budget_text());
+  }
+  total += maps;
   const RenderSettings& r = scene.render;
   const std::uint64_t render = render_bytes(r, scene.lights.size(), samples);
   if (total + render > budget) {

@@ -60,11 +60,18 @@ void transform_mesh(Mesh& mesh, const glm::mat4& transform) {
   if (det < 0.0) {
     for (glm::uvec3& tri : mesh.triangles) std::swap(tri.y, tri.z);
   }
-  if (mesh.normals.empty()) return;
   if (det == 0.0 || !std::isfinite(det)) {
     mesh.normals.clear();
+    mesh.tangents.clear();
     return;
   }
+  for (glm::vec4& t : mesh.tangents) {
+    const glm::dvec3 m = linear * glm::dvec3(t.x, t.y, t.z);
+    const double len = glm::length(m);
+    const glm::vec3 unit = (len > 0.0 && is_finite(m)) ? glm::vec3(m / len) : glm::vec3(1, 0, 0);
+    t = glm::vec4(unit, det < 0.0 ? -t.w : t.w);
+  }
+  if (mesh.normals.empty()) return;
   const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
   for (glm::vec3& n : mesh.normals) {
     const glm::dvec3 m = normal_matrix * glm::dvec3(n);

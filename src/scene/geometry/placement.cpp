@@ -31,9 +31,10 @@ glm::dvec3 nearest_turns(const glm::dvec3& a, const glm::dvec3& near) {
   return {nearest_turn(a.x, near.x), nearest_turn(a.y, near.y), nearest_turn(a.z, near.z)};
 }
 
-// The transformed copy of mesh: positions placed in double and rounded once; normals by the
-// inverse transpose, renormalised; triangles rewound where the transform mirrors, so winding and
-// normals keep agreeing (as transform_mesh does).
+// The transformed copy of mesh: positions placed in double and rounded once; tangents by the
+// linear part (handedness flipped where it mirrors) and normals by the inverse transpose, both
+// renormalised; triangles rewound where the transform mirrors, so winding and normals keep
+// agreeing (as transform_mesh does).
 Mesh placed_mesh(const Mesh& mesh, const ObjectTransform& t) {
   Mesh out = mesh;
   for (glm::vec3& p : out.positions) p = glm::vec3(place_point(t, glm::dvec3(p)));
@@ -41,6 +42,13 @@ Mesh placed_mesh(const Mesh& mesh, const ObjectTransform& t) {
   const double det = glm::determinant(linear);
   if (det < 0.0) {
     for (glm::uvec3& tri : out.triangles) std::swap(tri.y, tri.z);
+  }
+  for (glm::vec4& tangent : out.tangents) {
+    const glm::dvec3 m = linear * glm::dvec3(tangent.x, tangent.y, tangent.z);
+    const double len = glm::length(m);
+    const glm::vec3 unit =
+        len > 0.0 && std::isfinite(len) ? glm::vec3(m / len) : glm::vec3(1, 0, 0);
+    tangent = glm::vec4(unit, det < 0.0 ? -tangent.w : tangent.w);
   }
   if (out.normals.empty()) return out;
   const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));

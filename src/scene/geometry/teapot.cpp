@@ -75,12 +75,41 @@ glm::vec3 patch_normal(const glm::dvec3 control[16], double s, double t) {
   return glm::vec3(0.0f, 1.0f, 0.0f);  // the whole patch is degenerate; its triangles are dropped
 }
 
+// The tangent frame of the patch's texture coordinates (u, v) = (1 - t, 1 - s) at (s, t): T is
+// dP/du = -dP/dt made perpendicular to the normal n, w the sign that makes w cross(n, T) point
+// along dP/dv = -dP/ds. Where dP/dt vanishes (a row collapsed to a pole: the lid's knob, the
+// bottom's centre) the frame is taken a little way into the patch, as the normal is, so each of
+// the pole's vertices (one per t) gets the frame of the direction it leaves the pole in.
+glm::vec4 patch_tangent(const glm::dvec3 control[16], double s, double t, const glm::vec3& n) {
+  const glm::dvec3 normal(n);
+  auto frame = [&](const SurfacePoint& sp, glm::vec4& out) {
+    const glm::dvec3 du = -sp.d_t, dv = -sp.d_s;
+    const glm::dvec3 tangent = du - normal * glm::dot(normal, du);
+    const double len = glm::length(tangent);
+    const double scale = std::max(glm::length(sp.d_t), glm::length(sp.d_s));
+    if (!(len > 1e-8 * scale) || !std::isfinite(len)) return false;
+    const double w = glm::dot(glm::cross(normal, tangent), dv) < 0.0 ? -1.0 : 1.0;
+    out = glm::vec4(glm::vec3(tangent / len), static_cast<float>(w));
+    return true;
+  };
+  glm::vec4 out;
+  if (frame(eval_patch(control, s, t), out)) return out;
+  for (double nudge : {1e-3, 1e-2, 1e-1}) {
+    const double s2 = s < 0.5 ? s + nudge : s - nudge;
+    if (frame(eval_patch(control, s2, t), out)) return out;
+  }
+  // No direction along u anywhere near: any tangent perpendicular to n.
+  const glm::dvec3 axis = std::fabs(normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+  return glm::vec4(glm::vec3(glm::normalize(glm::cross(axis, normal))), 1.0f);
+}
+
 }  // namespace
 
 // Vertex (i, j) of a patch sits at s = i / level (row direction), t = j / level (column
 // direction). Triangles (a, b, c) and (a, c, d) of each grid cell wind like cross(dP/dt, dP/ds),
 // the outward normal; a collapsed row or column makes one of the two zero-area, and those are
-// dropped.
+// dropped. Its texture coordinates are the patch's own parameters, (u, v) = (1 - t, 1 - s):
+// each patch carries the whole image once, u to the right and v up seen from outside.
 Mesh tessellate_patches(const BezierPatches& patches, int level, bool smooth) {
   if (level < 1 || level > 64) {
     throw std::invalid_argument("tessellate_patches: level " + std::to_string(level) +
@@ -106,7 +135,10 @@ Mesh tessellate_patches(const BezierPatches& patches, int level, bool smooth) {
       for (unsigned j = 0; j < n; ++j) {
         const double t = static_cast<double>(j) / level;
         mesh.positions.emplace_back(eval_patch(control, s, t).position);
-        if (smooth) mesh.normals.push_back(patch_normal(control, s, t));
+        const glm::vec3 normal = patch_normal(control, s, t);
+        if (smooth) mesh.normals.push_back(normal);
+        mesh.uv[0].emplace_back(static_cast<float>(1.0 - t), static_cast<float>(1.0 - s));
+        mesh.tangents.push_back(patch_tangent(control, s, t, normal));
       }
     }
     for (unsigned i = 0; i + 1 < n; ++i) {

@@ -44,3 +44,21 @@ std::uint64_t environment_bytes(const Environment& environment) {
 }
 
 }  // namespace gloss
+
+namespace gloss {
+
+std::uint64_t texture_bytes(const Scene& scene) {
+  std::vector<const Texture*> seen;
+  std::uint64_t total = 0;
+  for (const Material& material : scene.materials) {
+    for (int slot = 0; slot < kMapSlots; ++slot) {
+      const Texture* t = material.map(static_cast<MapSlot>(slot)).texture.get();
+      if (t == nullptr || std::find(seen.begin(), seen.end(), t) != seen.end()) continue;
+      seen.push_back(t);
+      total += t->bytes();
+    }
+  }
+  return total;
+}
+
+}  // namespace gloss

@@ -46,6 +46,9 @@ int sample_band_rows(int width, int height, int spp, std::size_t lights);
 // Bytes an environment map and the engine's tables for it hold (0 without one).
 std::uint64_t environment_bytes(const Environment& environment);
 
+// Bytes the scene's map textures hold, each shared texture once.
+std::uint64_t texture_bytes(const Scene& scene);
+
 // Bytes of the render for the scene's render settings and lights.
 std::uint64_t render_bytes(const RenderSettings& render, std::size_t lights, SampleMemory samples);
 

@@ -24,7 +24,8 @@ std::uint64_t vector_bytes(const std::vector<T>& v) {
 
 std::uint64_t mesh_bytes(const Mesh& mesh) {
   return sizeof(Mesh) + vector_bytes(mesh.positions) + vector_bytes(mesh.normals) +
-         vector_bytes(mesh.triangles);
+         vector_bytes(mesh.triangles) + vector_bytes(mesh.uv[0]) + vector_bytes(mesh.uv[1]) +
+         vector_bytes(mesh.tangents);
 }
 
 std::uint64_t scene_bytes_without_meshes(const Scene& scene) {

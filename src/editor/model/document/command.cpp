@@ -11,6 +11,7 @@
 #include "base/text_distance.h"
 #include "io/material/preset_table.h"
 #include "io/scene/environment_reader.h"
+#include "io/scene/material_maps.h"
 #include "io/scene/scene_loader.h"
 #include "scene/fields/validation.h"
 #include "scene/geometry/placement.h"
@@ -79,10 +80,28 @@ void set_in(const FieldTable<S>& table, FieldPart part, S& target, const SetFiel
   field.set(target, c.value);
 }
 
+// A map named by its file (a script line, the load button) is read here, against the scene's
+// folder, so the document only ever holds maps with their textures.
+SetField with_map_read(const SetField& c, const Scene& scene) {
+  MapSlot slot;
+  if (c.part != FieldPart::material || !map_slot_of_key(c.key, slot)) return c;
+  SetField read = c;
+  MapReadContext context;
+  context.file = scene.path;
+  context.base_dir = std::filesystem::path(scene.path).parent_path().string();
+  try {
+    read_map(read.value.map, slot, context);
+  } catch (const InputError& error) {
+    throw CommandError(c.key + ": " + error.what());
+  }
+  return read;
+}
+
 void set_field(const SetField& c, Scene& scene) {
   switch (c.part) {
     case FieldPart::material:
-      return set_in(material_fields(), c.part, object_material(scene, c.index), c);
+      return set_in(material_fields(), c.part, object_material(scene, c.index),
+                    with_map_read(c, scene));
     case FieldPart::light:
       return set_in(light_fields(), c.part, scene_light(scene, c.index), c);
     case FieldPart::render:
@@ -146,7 +165,8 @@ std::string describe(const SetField& c) {
 bool continuous(const SetField& c) {
   auto of = [&](const auto& table) {
     const auto* field = find_field(table, c.key);
-    return field != nullptr && field->kind != FieldKind::flag && field->kind != FieldKind::choice;
+    return field != nullptr && field->kind != FieldKind::flag && field->kind != FieldKind::choice &&
+           field->kind != FieldKind::map;
   };
   switch (c.part) {
     case FieldPart::material:
@@ -274,7 +294,9 @@ void apply_command(const Command& command, Scene& scene) {
               throw CommandError("unknown preset '" + c.name + "'" +
                                  did_you_mean(nearest_preset_names(c.name, 1)));
             }
-            object_material(next, c.object) = preset->material;
+            // The preset's constants; the maps stay (docs/spec/shading.md, "Textures").
+            Material& material = object_material(next, c.object);
+            material = with_constants(material, preset->material);
           },
           [&](const SetMaterial& c) { object_material(next, c.object) = c.material; },
           [&](const SetModel& c) {

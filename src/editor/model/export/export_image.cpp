@@ -133,6 +133,7 @@ TextChunks export_text(const Scene& scene, const ViewSettings& view, ScreenshotK
   } else {
     line += " renderer=cpu";
   }
+  if (view.uv_checker) line += " uv_checker=on";  // the materials are not the scene's
   return {{"Software", "gloss editor"},
           {"gloss:settings", line},
           {kSceneChunkKeyword, embedded_scene_text(scene)}};
@@ -147,7 +148,7 @@ bool export_needs_terms(const ViewSettings& view, ScreenshotKind kind) {
 Image render_export(const Scene& scene, const ViewSettings& view, ScreenshotKind kind) {
   RenderOptions options;
   options.terms = export_needs_terms(view, kind);
-  return export_image(render(scene, options), view, kind, scene.render);
+  return export_image(render(scene_as_viewed(scene, view), options), view, kind, scene.render);
 }
 
 Image export_image(const TermImages& terms, const ViewSettings& view, ScreenshotKind kind,

@@ -61,8 +61,9 @@ bool export_needs_terms(const ViewSettings& view, ScreenshotKind kind);
 Image export_image(const TermImages& terms, const ViewSettings& view, ScreenshotKind kind,
                    const RenderSettings& render);
 
-// Renders scene with the CPU renderer at scene.render's size and spp and returns
-// export_image() of it (window screenshots come from the GL back buffer). Throws like render().
+// Renders scene as the view shows it (scene_as_viewed: the UV checker view's materials) with the
+// CPU renderer at scene.render's size and spp and returns export_image() of it (window screenshots
+// come from the GL back buffer). Throws like render().
 Image render_export(const Scene& scene, const ViewSettings& view, ScreenshotKind kind);
 
 // Writes image for a script's `screenshot PATH`: a PATH naming a folder (existing, or ending in

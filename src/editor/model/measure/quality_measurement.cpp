@@ -14,6 +14,12 @@ namespace gloss {
 
 namespace {
 
+// The map knobs have rows only for a scene with maps (tradeoff.h).
+bool has_maps(const Scene& scene) {
+  return std::any_of(scene.materials.begin(), scene.materials.end(),
+                     [](const Material& m) { return m.textured(); });
+}
+
 bool has_teapot(const Scene& scene) {
   return std::any_of(scene.objects.begin(), scene.objects.end(),
                      [](const Object& o) { return o.type == ObjectType::teapot; });
@@ -68,9 +74,11 @@ void QualityMeasurement::start(const Scene& scene, TradeoffOptions options) {
     const bool chosen =
         options.knobs.empty() ||
         std::find(options.knobs.begin(), options.knobs.end(), knob) != options.knobs.end();
-    const bool environment_knob = knob == Knob::env_samples || knob == Knob::env_resolution;
+    // Knobs a scene has no rows for (tradeoff.h): no teapot, no environment, no maps.
+    const bool maps = knob == Knob::map_filter || knob == Knob::map_resolution;
+    const bool environment = knob == Knob::env_samples || knob == Knob::env_resolution;
     if (chosen && (knob != Knob::tessellation || has_teapot(scene)) &&
-        (!environment_knob || scene.environment.present())) {
+        (!maps || has_maps(scene)) && (!environment || scene.environment.present())) {
       m_knobs.push_back(knob);
     }
   }

@@ -96,6 +96,10 @@ bool parse_view_extra(Tokens& t, const std::string& mode, ScriptAction& out) {
     out = ClippedOverlayAction{t.on_off("view clipped")};
     return true;
   }
+  if (mode == "uv_checker") {
+    out = UvCheckerAction{t.on_off("view uv_checker")};
+    return true;
+  }
   if (mode == "ab") {
     ViewAction v;
     v.mode = ViewMode::ab;
@@ -308,7 +312,8 @@ ScriptAction parse_line(Tokens& t) {
     } else if (!parse_view_mode(mode, v.mode) || v.mode == ViewMode::single) {
       throw std::runtime_error(
           "view must be render, terms, ab, lobe, 'term NAME', "
-          "'ab snapshot|cpu-gl|pixel-vertex|reference' or 'clipped on|off', got '" +
+          "'ab snapshot|cpu-gl|pixel-vertex|reference', 'clipped on|off' or "
+          "'uv_checker on|off', got '" +
           mode + "'");
     }
     if (v.mode == ViewMode::lobe && !t.done()) return parse_lobe_elevation(t, v);

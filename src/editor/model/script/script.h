@@ -37,6 +37,10 @@ struct ViewAction {
 struct ClippedOverlayAction {
   bool on = false;
 };
+// `view uv_checker on|off`: the UV checker view (ViewSettings::uv_checker).
+struct UvCheckerAction {
+  bool on = false;
+};
 // `snapshot`: keeps the current document as the A side of `view ab snapshot`.
 struct SnapshotAction {};
 // `select OBJECT`: an index, or a name resolved when the line runs (as ObjectRef below).
@@ -211,7 +215,7 @@ struct LobeAction {
 using ScriptAction =
     std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction, ViewAction,
                  SelectAction, StatsAction, SleepAction, AnimateAction, QuitAction, QualityAction,
-                 InspectAction, ClippedOverlayAction, SnapshotAction, MemoryAction,
+                 InspectAction, ClippedOverlayAction, UvCheckerAction, SnapshotAction, MemoryAction,
                  ExportGlslAction, RendererAction, ShadingAction, ShadowMapAction, ShadowBiasAction,
                  MouseAction, ReferenceAction, FitAction, LayoutAction, KeyAction, LobeAction,
                  ObjectLineAction, SaveAction, BrowseAction, GizmoAction>;

@@ -174,6 +174,10 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
               host.view().show_clipped = a.on;
               return LineResult::go_on();
             },
+            [&](const UvCheckerAction& a) {
+              host.view().uv_checker = a.on;
+              return LineResult::go_on();
+            },
             [&](const SnapshotAction&) {
               host.snapshot() = take_snapshot(host.layer(), host.snapshot());
               std::printf("snapshot: %s\n", host.snapshot()->label.c_str());

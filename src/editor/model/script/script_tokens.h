@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "editor/model/script/script.h"
@@ -74,9 +75,54 @@ struct Tokens {
   }
 };
 
+// A map: `PATH [wrap MODE | wrap U_MODE V_MODE] [scale S | scale SU SV] [offset DU DV]
+// [rotation DEGREES] [uv_set 0|1]`, or `none` to clear the slot. The path is one word, relative
+// to the scene's folder; the image is read when the line runs (document/command.cpp).
+inline TextureMap parse_map(Tokens& t, const char* key) {
+  TextureMap map;
+  const std::string file = t.word(key);
+  if (file == "none") return map;
+  map.file = file;
+  auto wrap = [](const std::string& name) {
+    if (name == "repeat") return Wrap::repeat;
+    if (name == "clamp") return Wrap::clamp;
+    if (name == "mirror") return Wrap::mirror;
+    throw std::runtime_error("wrap must be repeat, clamp or mirror, got '" + name + "'");
+  };
+  auto numeric = [](const std::string& w) {
+    char* end = nullptr;
+    std::strtof(w.c_str(), &end);
+    return end != w.c_str() && *end == '\0';
+  };
+  while (!t.done()) {
+    const std::string option = t.word("map option");
+    if (option == "wrap") {
+      map.wrap[0] = map.wrap[1] = wrap(t.word("wrap mode"));
+      if (!t.done() && t.words[t.next] != "scale" && t.words[t.next] != "offset" &&
+          t.words[t.next] != "rotation" && t.words[t.next] != "uv_set") {
+        map.wrap[1] = wrap(t.word("wrap mode"));
+      }
+    } else if (option == "scale") {
+      map.scale = glm::vec2(t.number("scale"));
+      if (!t.done() && numeric(t.words[t.next])) map.scale.y = t.number("scale");
+    } else if (option == "offset") {
+      map.offset.x = t.number("offset");
+      map.offset.y = t.number("offset");
+    } else if (option == "rotation") {
+      map.rotation = t.number("rotation");
+    } else if (option == "uv_set") {
+      map.uv_set = t.index("uv_set");
+    } else {
+      throw std::runtime_error("unknown map option '" + option +
+                               "' (wrap, scale, offset, rotation, uv_set)");
+    }
+  }
+  return map;
+}
+
 // A value of field from the rest of the line: one number for a grey colour or three for R G B,
 // three for a vector (or one, for a vector that takes one number), one number, a whole number,
-// on/off, or a choice's name.
+// on/off, a map, or a choice's name.
 template <class S>
 FieldValue parse_value(Tokens& t, const Field<S>& field) {
   FieldValue value;
@@ -112,6 +158,9 @@ FieldValue parse_value(Tokens& t, const Field<S>& field) {
       break;
     case FieldKind::flag:
       value.x = t.on_off(field.key) ? 1.0 : 0.0;
+      break;
+    case FieldKind::map:
+      value.map = parse_map(t, field.key);
       break;
     case FieldKind::choice: {
       const std::string& name = t.word(field.key);

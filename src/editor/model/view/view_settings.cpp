@@ -1,5 +1,11 @@
 #include "editor/model/view/view_settings.h"
 
+#include <array>
+#include <memory>
+#include <utility>
+
+#include "texture/uv_checker.h"
+
 namespace gloss {
 
 namespace {
@@ -85,8 +91,7 @@ const char* to_string(ScreenshotKind kind) {
 
 bool parse_screenshot_kind(const std::string& name, ScreenshotKind& kind) {
   const ScreenshotKind all[] = {ScreenshotKind::viewport, ScreenshotKind::terms,
-                                ScreenshotKind::window, ScreenshotKind::shown,
-                                ScreenshotKind::exr};
+                                ScreenshotKind::window, ScreenshotKind::shown, ScreenshotKind::exr};
   return parse_name(name, all, kind);
 }
 
@@ -109,6 +114,32 @@ bool parse_lobe_plot(const std::string& name, LobePlot& plot) {
 
 bool lobe_energy_normalize(LobeEnergy energy, bool document_setting) {
   return energy == LobeEnergy::scene ? document_setting : energy == LobeEnergy::on;
+}
+
+Material uv_checker_material() {
+  // One map array for every copy: the checker's pyramid is made once and shared.
+  static const std::shared_ptr<const std::array<TextureMap, kMapSlots>> maps = [] {
+    auto array = std::make_shared<std::array<TextureMap, kMapSlots>>();
+    TextureMap& diffuse = (*array)[static_cast<int>(MapSlot::diffuse)];
+    diffuse.file = "UV checker";
+    diffuse.texture = shared_uv_checker();
+    return std::shared_ptr<const std::array<TextureMap, kMapSlots>>(std::move(array));
+  }();
+  Material m;
+  m.ambient = glm::vec3(0.15f);
+  m.diffuse = glm::vec3(1.0f);
+  m.specular = glm::vec3(0.0f);
+  m.emission = glm::vec3(0.0f);
+  m.map_storage = maps;
+  return m;
+}
+
+Scene scene_as_viewed(const Scene& document, const ViewSettings& view) {
+  if (!view.uv_checker) return document;
+  Scene scene = document;
+  const Material checker = uv_checker_material();
+  for (Material& m : scene.materials) m = checker;
+  return scene;
 }
 
 }  // namespace gloss

@@ -7,6 +7,7 @@
 
 #include "editor/model/view/gizmo.h"
 #include "editor/model/view/raster_settings.h"
+#include "scene/scene.h"
 
 namespace gloss {
 
@@ -67,6 +68,9 @@ struct ViewSettings {
   // and the Phong | Blinn-Phong A/B view renders B with the rescaled exponents.
   bool keep_highlight_size = true;
   bool show_clipped = false;  // stripes over clipped pixels (exposure_histogram.h)
+  // Every object with the UV checker (texture/uv_checker.h) on its (u, v) instead of its
+  // material: a way to see a model's coordinates. The renderers get scene_as_viewed().
+  bool uv_checker = false;
   bool orbit_light = false;   // animate the selected light about the target's y axis
   float orbit_speed = 45.0f;  // degrees per second
   ScreenshotKind screenshot_kind = ScreenshotKind::viewport;  // what Ctrl+S saves
@@ -93,6 +97,16 @@ struct ViewSettings {
   bool inspect_pinned = false;  // false: the inspector follows the cursor over the viewport
   int inspect_x = 0, inspect_y = 0;
 };
+
+// The scene the renderers are handed for the document in this view: the document itself, or
+// with the UV checker on, the document with every material replaced by the checker material
+// (uv_checker_material). The document is not changed: a view setting, not an edit.
+Scene scene_as_viewed(const Scene& document, const ViewSettings& view);
+
+// The UV checker view's material: kd 1 times the checker on (u, v) set 0 (and ka 0.15 times
+// it, so unlit sides still show their cells), no specular, emission or other map, no physical
+// reference: the cells as the lights show them, nothing of the document's material.
+Material uv_checker_material();
 
 // Whether the lobe view normalises: document_setting is render.energy_normalize.
 bool lobe_energy_normalize(LobeEnergy energy, bool document_setting);

@@ -64,6 +64,8 @@ bool field_widget(const Field<S>& field, S& value, bool link_channels = false,
       if (ImGui::Checkbox(label, &on)) v.x = on ? 1.0 : 0.0;
       break;
     }
+    case FieldKind::map:  // the material panel's map slots draw these (map_slots.cpp)
+      return false;
     case FieldKind::choice: {
       int index = static_cast<int>(v.x);
       ImGui::TextUnformatted(label);

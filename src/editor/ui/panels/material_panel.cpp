@@ -8,7 +8,9 @@
 #include <imgui.h>
 
 #include "editor/model/document/preset_status.h"
+#include "editor/ui/file_browser.h"
 #include "editor/ui/panels/field_widgets.h"
+#include "editor/ui/panels/map_slots.h"
 #include "editor/ui/panels/material_parts.h"
 #include "editor/ui/panels/panel_state.h"
 #include "editor/ui/panels/panel_widgets.h"
@@ -140,6 +142,8 @@ void draw_material_panel(Commands& commands, Selection& selection, ViewSettings&
                                : blinn     ? "Blinn exponent##shininess"
                                            : "Phong exponent##shininess";
   for (const Field<Material>& field : material_fields()) {
+    // Maps have their rows below (map_slots.h); a map's scale shows once there is that map.
+    if (field.kind == FieldKind::map || !field.applies_to(edited)) continue;
     const bool exponent = std::string(field.key) == "shininess";
     field_widget(field, edited, state.link_channels, exponent ? exponent_label : nullptr);
     if (exponent && ImGui::IsItemHovered()) {
@@ -154,6 +158,8 @@ void draw_material_panel(Commands& commands, Selection& selection, ViewSettings&
           field_command(FieldPart::material, object, material_fields(), material, edited)) {
     commands.execute(*command);
   }
+  draw_map_slots(commands, browser, state.thumbnails, object, material,
+                 scene_folder(scene.path, view.screenshot_dir).string());
 
   section_title("Presets");
   if (!material.preset.empty()) {

@@ -40,7 +40,8 @@ void draw_menu_bar(Commands& commands, Selection& selection, ViewSettings& view,
                    std::optional<Snapshot>& snapshot, Session& session, FileActions& files,
                    Exports& exports, OpenWindows& windows, LayoutState& layout);
 // The Material panel: the selected object's material (its name, a copy, saving it), its
-// constants, the presets and the user's library, the scene's materials, the shading model.
+// constants and maps, the presets and the user's library, the scene's materials, the shading
+// model. Loading a map opens the file browser.
 void draw_material_panel(Commands& commands, Selection& selection, ViewSettings& view,
                          MaterialPanelState& state, MaterialLibrary& library, FileActions& files,
                          FileBrowser& browser, ImVec2 pos, ImVec2 size);

@@ -104,6 +104,12 @@ void draw_view_mode(Commands& commands, ViewSettings& view, Viewport& viewport,
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("the selected material's lobe as a polar plot");
   same_line_if_fits(toggle_width("pixel inspector (I)"));
   ImGui::Checkbox("pixel inspector (I)", &view.show_inspector);
+  ImGui::Checkbox("UV checker", &view.uv_checker);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "every object with a checker on its (u, v): hue runs with u, brightness with v,\n"
+        "a white square at (0, 0); a view only, the materials are not changed");
+  }
   view.mode = static_cast<ViewMode>(mode);
   if (view.mode == ViewMode::single) {
     if (ImGui::BeginCombo("term", display_name(view.single))) {

@@ -43,7 +43,8 @@ void Exports::start(ScreenshotKind kind, const std::string& path, bool from_scri
   std::string raster_error;
   if (view.renderer == RendererChoice::gl) {
     try {
-      raster = m_viewport.render_raster(scene, view.raster, export_needs_terms(view, kind));
+      raster = m_viewport.render_raster(scene_as_viewed(scene, view), view.raster,
+                                        export_needs_terms(view, kind));
       if (!raster) raster_error = "the raster path is unavailable (see the notice)";
     } catch (const std::exception& e) {
       raster_error = std::string("the raster path failed: ") + e.what();

@@ -180,6 +180,7 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
                 ab ? view.ab_source : AbSource::models,
                 sides,
                 view.raster};
+  key.uv_checker = view.uv_checker;
   key.settings.shading = ShadingFrequency::pixel;  // each side's frequency is in sides
   key.lights = document.lights.size();
   // The raster path failed with this setup: the ray tracer draws until the setup changes.
@@ -195,7 +196,7 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
       ab != (m_pushed_mode == ViewMode::ab) || (ab && view.keep_highlight_size != m_pushed_keep) ||
       (ab && view.ab_source != m_pushed_source) ||
       (ab && view.ab_source == AbSource::snapshot && snapshot_revision != m_pushed_snapshot) ||
-      !(sides.a == m_sides.a) || !(sides.b == m_sides.b);
+      !(sides.a == m_sides.a) || !(sides.b == m_sides.b) || view.uv_checker != m_pushed_uv_checker;
   const bool raster_dirty =
       (sides.a.raster || sides.b.raster) && (!m_raster_shown || !(key == m_raster_key));
   if (!changed && !raster_dirty) {
@@ -206,12 +207,17 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
   }
 
   const bool new_edit = m_pushed_any && revision != m_pushed_revision;
-  Scene scene = document;
+  Scene scene = scene_as_viewed(document, view);  // the UV checker view swaps the materials
   scene.render.width = width;
   scene.render.height = height;
   AbScenes pair = ab ? ab_scenes(scene, view.ab_source, snapshot, view.keep_highlight_size)
                      : AbScenes{std::move(scene), Scene{}};
   pair.a.render.width = pair.b.render.width = width;  // the snapshot has its own size
+  if (ab && view.uv_checker) {
+    // The snapshot side, too: both sides show the checker.
+    pair.a = scene_as_viewed(pair.a, view);
+    pair.b = scene_as_viewed(pair.b, view);
+  }
   pair.a.render.height = pair.b.render.height = height;
   if (m_fill) {
     // Panes that fill their cells show each side's view, in the document's frame, and more
@@ -306,6 +312,7 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
     m_pushed_keep = view.keep_highlight_size;
     m_pushed_source = view.ab_source;
     m_pushed_snapshot = snapshot_revision;
+    m_pushed_uv_checker = view.uv_checker;
     m_sides = sides;
   }
   if (new_edit) {
@@ -354,7 +361,7 @@ void Viewport::blit(int framebuffer_height) const {
 bool Viewport::converged_and_shown(std::uint64_t revision, const ViewSettings& view) const {
   if (!m_pushed_any || revision != m_pushed_revision || view.mode != m_pushed_mode ||
       needs_terms(view) != m_pushed_terms || view.renderer != m_pushed_renderer ||
-      view.raster != m_pushed_raster ||
+      view.raster != m_pushed_raster || view.uv_checker != m_pushed_uv_checker ||
       (view.mode == ViewMode::ab && view.ab_source != m_pushed_source)) {
     return false;
   }

@@ -209,6 +209,7 @@ class Viewport {
   bool m_pushed_keep = false;
   AbSource m_pushed_source = AbSource::models;
   std::uint64_t m_pushed_snapshot = 0;  // revision of the snapshot pushed as A
+  bool m_pushed_uv_checker = false;     // the renderers were handed the UV checker view
   std::string m_label_a, m_label_b;     // A/B pane labels of what was pushed
   AbSides m_sides;                      // which renderer draws each side (A alone outside A/B)
   RendererChoice m_pushed_renderer = RendererChoice::cpu;
@@ -227,7 +228,8 @@ class Viewport {
     AbSource source = AbSource::models;
     AbSides sides;
     RasterSettings settings;
-    std::size_t lights = 0;  // the document's light count (the raster path takes 32 at most)
+    std::size_t lights = 0;   // the document's light count (the raster path takes 32 at most)
+    bool uv_checker = false;  // the UV checker view: the same revision, other materials
     bool operator==(const RasterKey& o) const;
     // Equal but perhaps for the document's revision and the snapshot's: what a failure that
     // does not depend on the edit (too many lights, shadow maps too large) repeats on.

@@ -14,7 +14,7 @@ namespace gloss {
 bool Viewport::RasterKey::same_setup(const RasterKey& o) const {
   return width == o.width && height == o.height && terms == o.terms && ab == o.ab &&
          keep == o.keep && source == o.source && sides.a == o.sides.a && sides.b == o.sides.b &&
-         settings == o.settings && lights == o.lights;
+         settings == o.settings && lights == o.lights && uv_checker == o.uv_checker;
 }
 
 bool Viewport::RasterKey::operator==(const RasterKey& o) const {

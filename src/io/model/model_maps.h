@@ -1,0 +1,39 @@
+#pragma once
+// The maps a model file's materials name, read into their textures (docs/model-corpus.md,
+// docs/scene-format.md "Maps from model files"):
+// - OBJ: the MTL files its `mtllib` lines name, read by mtl_maps.h;
+// - glTF 2.0: base colour (diffuse; its alpha the opacity of alpha mode MASK), emissive,
+//   normal (with its scale), occlusion (the ambient map: base colour times 1 + strength (R - 1),
+//   made per texel) and metallic-roughness, converted per texel by the rule the constants follow
+//   (model_material.h): ks = mix(0.04, base colour, metallic) (1 - roughness) as the specular
+//   map and (1 - roughness)^2 as the shininess map under alpha = 1000; samplers' wrap modes
+//   (MIRRORED_REPEAT included), KHR_texture_transform, a second UV set, images inside the file.
+// An image a model names that cannot be read is a warning naming it, and that map is left out:
+// the model still loads. Maps gloss makes from a model, or takes from inside it, are named
+// MODEL#MATERIAL/SLOT, which model_map_texture reads back.
+#include <memory>
+#include <string>
+
+#include "io/model/model_loader.h"
+
+namespace gloss {
+
+// Reads the maps of every material of model (loaded from path), filling model.unused and
+// model.warnings with what could not be used.
+void read_model_maps(const std::string& path, Model& model, const ModelOptions& options);
+
+// The reference of a map made from or held in a model: MODEL#MATERIAL/SLOT.
+std::string model_map_reference(const std::string& model, const std::string& material,
+                                MapSlot slot);
+
+// Splits a reference (false when file is a plain image path).
+bool split_model_map_reference(const std::string& file, std::string& model, std::string& material,
+                               MapSlot& slot);
+
+// The texture a reference names, from the model at model_path (the reference's model, resolved).
+// Throws InputError naming the model when it, the material or the map is not there.
+std::shared_ptr<const Texture> model_map_texture(const std::string& model_path,
+                                                 const std::string& material, MapSlot slot,
+                                                 std::uint64_t budget_bytes);
+
+}  // namespace gloss
