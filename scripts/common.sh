@@ -10,8 +10,13 @@ GLOSS_PACKAGES=(
   cmake g++ clang libglfw3-dev libimgui-dev libglm-dev python3-glad libstb-dev
   libassimp-dev assimp-testmodels libembree-dev libtbb-dev nlohmann-json3-dev libcli11-dev libpng-dev
   libgtest-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri libegl-dev libclang-rt-14-dev
-  imagemagick xdotool python3-matplotlib desktop-file-utils
+  imagemagick xdotool python3-matplotlib desktop-file-utils nodejs
 )
+
+# npm packages, installed globally (npm root -g) after the Debian ones: the Khronos
+# glTF-Validator, which tests/export/validate_exports.cmake runs with node on gloss-cli's glTF
+# exports. Pinned so every machine validates alike.
+GLOSS_NPM_PACKAGES=(gltf-validator@2.0.0-dev.3.10)
 
 gloss_log() { printf '[gloss] %s\n' "$*" >&2; }
 
@@ -31,6 +36,26 @@ gloss_install_missing() {
   $sudo env DEBIAN_FRONTEND=noninteractive apt-get update -qq
   $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
     "${missing[@]}" >/dev/null
+}
+
+# Installs GLOSS_NPM_PACKAGES that node cannot find yet. Debian's nodejs comes without npm (its
+# `npm` package); NodeSource's nodejs brings its own, so npm is installed only when missing.
+gloss_install_npm_missing() {
+  command -v node >/dev/null || return 0
+  local sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  if ! command -v npm >/dev/null; then
+    $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends npm \
+      >/dev/null
+  fi
+  local root
+  root="$(npm root -g)"
+  for p in "${GLOSS_NPM_PACKAGES[@]}"; do
+    if ! NODE_PATH="$root" node -e "require.resolve('${p%@*}')" >/dev/null 2>&1; then
+      gloss_log "installing npm package $p"
+      $sudo npm install -g --no-fund --no-audit "$p" >/dev/null
+    fi
+  done
 }
 
 # gloss_build DIR [cmake options...]: configure (once) and build.

@@ -45,6 +45,7 @@ struct ModelFileMaterial {
   float metallic = 1.0f, roughness = 1.0f;
   std::string alpha_mode;  // glTF: "OPAQUE", "MASK", "BLEND"
   float alpha_cutoff = 0.5f;
+  bool gloss_exact = false;  // the Phong constants came exactly from gloss's extras
 };
 
 // An image inside the file (a .glb's buffer, a data: URI).
@@ -67,6 +68,7 @@ struct Model {
   std::vector<Material> materials;
   std::vector<ModelFileMaterial> file_materials;  // parallel to materials
   std::vector<ModelEmbeddedImage> embedded;
+  int exact_materials = 0;  // materials read exactly from gloss's glTF extras
   std::uint64_t map_bytes = 0;  // what the maps read took (textures already in memory not counted)
   std::vector<std::string> warnings;  // e.g. degenerate triangles dropped, a map missing
   // What the file asks for that gloss cannot use (an unknown map option, alpha blending, a

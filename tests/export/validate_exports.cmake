@@ -1,0 +1,50 @@
+# The Khronos glTF-Validator (npm package gltf-validator, run by node) on gloss-cli export-gltf's
+# files: the shipped scenes as .gltf and .glb, and spheres.json with a spot, a directional light
+# and a PNG diffuse map. Fails on any validator error; without node it says SKIPPED and passes
+# (scripts/common.sh installs node and the validator with the other packages).
+# cmake -DCLI=gloss-cli -DNODE=node -DROOT=source -DOUT=folder -P validate_exports.cmake
+if(NOT NODE OR NOT EXISTS "${NODE}")
+  message("SKIPPED: node not found; install nodejs and `npm install -g gltf-validator` "
+          "(scripts/start does) to validate the glTF exports")
+  return()
+endif()
+file(REMOVE_RECURSE "${OUT}")
+file(MAKE_DIRECTORY "${OUT}")
+
+# Where npm puts global packages, for require('gltf-validator').
+find_program(NPM npm)
+set(node_path "/usr/lib/node_modules:/usr/local/lib/node_modules")
+if(NPM)
+  execute_process(COMMAND ${NPM} root -g OUTPUT_VARIABLE npm_root OUTPUT_STRIP_TRAILING_WHITESPACE)
+  set(node_path "${npm_root}:${node_path}")
+endif()
+
+# spheres.json with more lights and a map.
+file(READ "${ROOT}/assets/scenes/spheres.json" scene)
+string(JSON scene SET "${scene}" lights 1
+  "{\"type\": \"spot\", \"position\": [0, 4, 1], \"direction\": [0, -1, 0], \"cutoff\": 30, \"inner\": 20}")
+string(JSON scene SET "${scene}" lights 2
+  "{\"type\": \"directional\", \"direction\": [1, -1, -1], \"diffuse\": [0.3, 0.3, 0.3]}")
+string(JSON scene SET "${scene}" materials floor diffuse_map "\"${ROOT}/assets/icon/gloss.png\"")
+file(WRITE "${OUT}/textured.json" "${scene}")
+
+set(scenes "${ROOT}/assets/scenes/spheres.json" "${ROOT}/assets/scenes/cornell-teapot.json"
+           "${ROOT}/assets/scenes/studio-metals.json" "${OUT}/textured.json")
+foreach(path IN LISTS scenes)
+  get_filename_component(stem "${path}" NAME_WE)
+  foreach(ext gltf glb)
+    set(file "${OUT}/${stem}.${ext}")
+    execute_process(COMMAND "${CLI}" export-gltf "${path}" "${file}"
+                    RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT status EQUAL 0)
+      message(FATAL_ERROR "gloss-cli export-gltf ${path} ${file}: exit ${status}\n${out}${err}")
+    endif()
+    execute_process(COMMAND ${CMAKE_COMMAND} -E env "NODE_PATH=${node_path}"
+                            "${NODE}" "${ROOT}/tests/export/validate_gltf.js" "${file}"
+                    RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    message("${out}${err}")
+    if(NOT status EQUAL 0)
+      message(FATAL_ERROR "glTF-Validator reports errors for ${file} (exit ${status})")
+    endif()
+  endforeach()
+endforeach()
