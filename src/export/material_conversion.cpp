@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include <glm/common.hpp>
+
 #include <tbb/parallel_for.h>
 #include <nlohmann/json.hpp>
 
@@ -48,7 +50,14 @@ MaterialConversion convert_material(const std::string& name, const Material& mat
   const LobeSamples fit_samples = make_lobe_samples(grid_for_phong(out.source, coarse));
   const SampledLobe fit_source = sample_phong(out.source, fit_samples);
   out.gltf = fit_metal_rough_lobe(fit_samples, fit_source, LobeMetric::l2);
-  out.threejs = fit_threejs_phong_lobe(fit_samples, fit_source, LobeMetric::l2);
+  if (out.source.ks == glm::dvec3(0.0)) {
+    // No highlight: at shininess 0 three.js's specular term is n.l F / 4, a second diffuse
+    // term, so color + specular can match kd in many ways (the fit finds specular 1); the one a
+    // user expects is specular 0 (its Fresnel still adds a faint grazing term, in the residual).
+    out.threejs.material = {glm::clamp(out.source.kd, 0.0, 1.0), glm::dvec3(0.0), 0.0};
+  } else {
+    out.threejs = fit_threejs_phong_lobe(fit_samples, fit_source, LobeMetric::l2);
+  }
   FitOptions options;
   options.model = model;
   options.energy_normalize = energy_normalize;

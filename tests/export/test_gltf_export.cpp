@@ -10,8 +10,8 @@
 
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
-#include <assimp/Importer.hpp>
 #include <gtest/gtest.h>
+#include <assimp/Importer.hpp>
 #include <nlohmann/json.hpp>
 
 #include "base/error.h"

@@ -1,8 +1,9 @@
 #pragma once
-// The exact Phong constants gloss writes into a glTF material's extras.gloss (export/gltf_export.h),
-// read back so that gloss -> glTF -> gloss loses nothing. Private to io. assimp does not hand
-// material extras over, so the file's JSON (a .gltf, or a .glb's JSON chunk) is read here with
-// nlohmann-json; a file it cannot read gives no extras (assimp's reader reports real errors).
+// The exact Phong constants gloss writes into a glTF material's extras.gloss
+// (export/gltf_export.h), read back so that gloss -> glTF -> gloss loses nothing. Private to io.
+// assimp does not hand material extras over, so the file's JSON (a .gltf, or a .glb's JSON chunk)
+// is read here with nlohmann-json; a file it cannot read gives no extras (assimp's reader reports
+// real errors).
 #include <optional>
 #include <string>
 #include <vector>

@@ -416,9 +416,9 @@ Model load_model(const std::string& path, const ModelOptions& options) {
     if (mesh.tangents.size() != mesh.positions.size()) mesh.tangents.clear();
   }
   model.file_materials.resize(model.materials.size());
-  model.exact_materials = static_cast<int>(
-      std::count_if(model.file_materials.begin(), model.file_materials.end(),
-                    [](const ModelFileMaterial& m) { return m.gloss_exact; }));
+  model.exact_materials =
+      static_cast<int>(std::count_if(model.file_materials.begin(), model.file_materials.end(),
+                                     [](const ModelFileMaterial& m) { return m.gloss_exact; }));
   if (options.read_maps) read_model_maps(path, model, options);
   return model;
 }
