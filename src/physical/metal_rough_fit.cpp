@@ -176,4 +176,34 @@ MetalRoughFit fit_metal_rough(const PhongLobe& source, LobeMetric metric, LobeGr
   return fit_metal_rough_lobe(samples, sample_phong(source, samples), metric);
 }
 
+namespace {
+
+LobeGrid grid_for_metal_rough(const MetalRough& material, LobeGrid grid = {}) {
+  const double r = std::max(material.roughness, kMinFitRoughness);
+  grid.width = lobe_width_for_ggx(r * r);
+  return grid;
+}
+
+}  // namespace
+
+PhongFit fit_phong_to_metal_rough(const MetalRough& material, const FitOptions& options) {
+  LobeGrid coarse = options.grid;
+  coarse.per_decade = 10;
+  coarse.even = 8;
+  coarse.theta_d = 10;
+  coarse.phi_d = 10;
+  const LobeSamples fit_samples = make_lobe_samples(grid_for_metal_rough(material, coarse));
+  PhongFit fit = fit_phong_lobe(fit_samples, sample_metal_rough(material, fit_samples), options);
+  const LobeSamples samples = make_lobe_samples(grid_for_metal_rough(material, options.grid));
+  fit.residual = lobe_residual(samples, sample_metal_rough(material, samples),
+                               sample_phong(fit.lobe, samples));
+  fit.pairs = static_cast<int>(samples.pairs.size());
+  return fit;
+}
+
+LobeResidual residual_to_metal_rough(const PhongLobe& lobe, const MetalRough& material) {
+  const LobeSamples samples = make_lobe_samples(grid_for_metal_rough(material));
+  return lobe_residual(samples, sample_metal_rough(material, samples), sample_phong(lobe, samples));
+}
+
 }  // namespace gloss

@@ -17,6 +17,7 @@
 #include "physical/lobe_metrics.h"
 #include "physical/lobe_models.h"
 #include "physical/lobe_samples.h"
+#include "physical/phong_fit.h"
 
 namespace gloss {
 
@@ -48,6 +49,16 @@ MetalRoughFit fit_metal_rough(const PhongLobe& source, LobeMetric metric = LobeM
 // The same over given samples and target (tests, and callers that sample once).
 MetalRoughFit fit_metal_rough_lobe(const LobeSamples& samples, const SampledLobe& target,
                                    LobeMetric metric);
+
+// Import the other way: the Phong or Blinn-Phong lobe closest to a metallic-roughness
+// material (the Phong fit of physical/phong_fit.h with the glTF lobe as its target; ka and ke
+// are not part of it). The fit runs on a coarser grid (an eighth of the pairs), its residual is
+// measured on the full grid of width from the material's GGX a.
+PhongFit fit_phong_to_metal_rough(const MetalRough& material, const FitOptions& options = {});
+
+// How far a given Phong lobe is from a metallic-roughness material, on that full grid (what an
+// importer's rule of thumb costs).
+LobeResidual residual_to_metal_rough(const PhongLobe& lobe, const MetalRough& material);
 
 // The grid a Phong or Blinn-Phong lobe is compared on (width from its exponent: a Phong lobe of
 // exponent alpha is about as wide as a Blinn-Phong lobe of 4 alpha).

@@ -419,6 +419,7 @@ Model load_model(const std::string& path, const ModelOptions& options) {
   model.exact_materials =
       static_cast<int>(std::count_if(model.file_materials.begin(), model.file_materials.end(),
                                      [](const ModelFileMaterial& m) { return m.gloss_exact; }));
+  fit_metal_rough_materials(model);
   if (options.read_maps) read_model_maps(path, model, options);
   return model;
 }
