@@ -25,13 +25,15 @@ const char* title(BrowsePurpose purpose) {
       return "Save materials";
     case BrowsePurpose::export_glsl:
       return "Export GLSL";
+    case BrowsePurpose::export_gltf:
+      return "Export glTF";
   }
   return "File";
 }
 
 bool is_save(BrowsePurpose purpose) {
   return purpose == BrowsePurpose::save_scene || purpose == BrowsePurpose::save_materials ||
-         purpose == BrowsePurpose::export_glsl;
+         purpose == BrowsePurpose::export_glsl || purpose == BrowsePurpose::export_gltf;
 }
 
 std::vector<std::string> extensions(BrowsePurpose purpose) {
@@ -47,6 +49,8 @@ std::vector<std::string> extensions(BrowsePurpose purpose) {
       return {".json", ".mtl"};
     case BrowsePurpose::export_glsl:
       return {".frag", ".glsl"};
+    case BrowsePurpose::export_gltf:
+      return {".glb", ".gltf"};
   }
   return {};
 }
@@ -61,6 +65,7 @@ RecentKind recent_kind(BrowsePurpose purpose) {
     case BrowsePurpose::open_scene:
     case BrowsePurpose::save_scene:
     case BrowsePurpose::export_glsl:
+    case BrowsePurpose::export_gltf:
       break;
   }
   return RecentKind::scene;

@@ -17,6 +17,7 @@ enum class BrowsePurpose {
   save_scene,
   save_materials,
   export_glsl,  // issue 12: the selected object's material as a fragment shader
+  export_gltf,  // issue 26: the scene as glTF 2.0 (.gltf, .glb)
 };
 // The recent list the panel offers for purpose (scenes for scenes, models for Add model, ...).
 RecentKind recent_kind(BrowsePurpose purpose);

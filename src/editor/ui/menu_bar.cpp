@@ -61,6 +61,9 @@ void file_menu(Commands& commands, const ViewSettings& view, Session& session, F
   if (ImGui::MenuItem("Export GLSL...")) {
     browser.show(BrowsePurpose::export_glsl, scene_folder(path, view.screenshot_dir), "gloss.frag");
   }
+  if (ImGui::MenuItem("Export glTF...")) {
+    browser.show(BrowsePurpose::export_gltf, scene_folder(path, view.screenshot_dir), "scene.glb");
+  }
   ImGui::Separator();
   if (ImGui::MenuItem("Screenshot", "Ctrl+S")) exports.start(view.screenshot_kind);
   if (ImGui::MenuItem("Screenshot: viewport render")) exports.start(ScreenshotKind::viewport);

@@ -88,6 +88,12 @@ struct ExportGlslAction {
   int object = -1;  // -1: the host's selected object
 };
 
+// `export gltf PATH` (issue 26): the scene as glTF 2.0 (.gltf or .glb, export/gltf_export.h),
+// each material's conversion error printed and shown as a notice.
+struct ExportGltfAction {
+  std::string path;
+};
+
 // ---- The physical reference (issue 23) ----
 // `reference METAL ROUGHNESS`, `reference dielectric R G B ROUGHNESS`, `reference none`: gives
 // the selected object's material a physical reference (or removes it), one undo step.
@@ -135,7 +141,7 @@ using ScriptAction =
                  ExposureAction, SelectAction, StatsAction, SleepAction, AnimateAction, QuitAction,
                  QualityAction, InspectAction, ClippedOverlayAction, SnapshotAction, MemoryAction,
                  ExportGlslAction, RendererAction, ShadingAction, ShadowMapAction, ShadowBiasAction,
-                 MouseAction, ReferenceAction, FitAction>;
+                 MouseAction, ReferenceAction, FitAction, ExportGltfAction>;
 
 struct ScriptLine {
   int line = 0;  // 1-based line number in the file

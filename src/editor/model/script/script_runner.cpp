@@ -6,6 +6,7 @@
 #include "base/overloaded.h"
 #include "editor/model/document/reference_fit.h"
 #include "editor/model/export/glsl_export.h"
+#include "editor/model/export/gltf_file.h"
 #include "editor/model/measure/memory_report.h"
 #include "editor/model/measure/pixel_report.h"
 #include "reference/pixel_inspection.h"
@@ -54,6 +55,22 @@ LineResult export_glsl_line(ScriptHost& host, const ExportGlslAction& a, const s
   }
   std::printf("export glsl: %s (material %d of object %d)\n", a.path.c_str(), material, object);
   std::fflush(stdout);
+  return LineResult::go_on();
+}
+
+// `export gltf PATH` (issue 26): the same for both hosts; the conversions' errors printed, the
+// summary as a notice.
+LineResult export_gltf_line(ScriptHost& host, const ExportGltfAction& a, const std::string& where) {
+  std::string summary;
+  try {
+    summary = write_gltf_file(host.layer().scene(), a.path, true);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s%s\n", where.c_str(), e.what());
+    return LineResult::stop(1);
+  }
+  std::printf("export gltf: %s\n", summary.c_str());
+  std::fflush(stdout);
+  host.notify(summary);
   return LineResult::go_on();
 }
 
@@ -153,6 +170,7 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
             [&](const MemoryAction&) { return host.memory(); },
             [&](const MouseAction& a) { return host.mouse(a); },
             [&](const ExportGlslAction& a) { return export_glsl_line(host, a, where); },
+            [&](const ExportGltfAction& a) { return export_gltf_line(host, a, where); },
             [&](const ReferenceAction& a) { return reference_line(host, a); },
             [&](const FitAction& a) { return fit_line(host, a); },
             [&](const RendererAction& a) {

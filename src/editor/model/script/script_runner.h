@@ -51,6 +51,9 @@ class ScriptHost {
   virtual LineResult memory();
   // A viewport gesture (script.h, MouseAction); nothing without a display.
   virtual LineResult mouse(const MouseAction&) { return LineResult::go_on(); }
+  // A message for the user beside what the line prints (the editor's notices and status bar);
+  // nothing without a window.
+  virtual void notify(const std::string&) {}
 
   // The snapshot `snapshot` takes and `view ab snapshot` compares with. Kept here by default
   // (headless runs, tests); the editor keeps it in its App so the panel's button shares it.

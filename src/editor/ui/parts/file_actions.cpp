@@ -11,6 +11,7 @@
 #include "base/error.h"
 #include "editor/model/document/document.h"
 #include "editor/model/export/glsl_export.h"
+#include "editor/model/export/gltf_file.h"
 #include "editor/ui/parts/commands.h"
 #include "editor/ui/parts/material_library.h"
 #include "editor/ui/parts/open_windows.h"
@@ -168,6 +169,10 @@ void FileActions::export_glsl_shader(const std::string& path) {
   m_commands.info("exported the GLSL shader of " + object_label(scene, selected) + " to " + path);
 }
 
+void FileActions::export_gltf_scene(const std::string& path) {
+  m_commands.info(write_gltf_file(m_document.scene(), path, false));
+}
+
 void FileActions::browser_action(const std::string& path) {
   FileBrowser& browser = m_session.browser;
   try {
@@ -189,6 +194,9 @@ void FileActions::browser_action(const std::string& path) {
         break;
       case BrowsePurpose::export_glsl:
         export_glsl_shader(path);
+        break;
+      case BrowsePurpose::export_gltf:
+        export_gltf_scene(path);
         break;
     }
     browser.open = false;

@@ -41,6 +41,8 @@ class FileActions {
   // Writes the selected object's material as a GLSL fragment shader
   // (editor/model/export/glsl_export.h).
   void export_glsl_shader(const std::string& path);
+  // The scene as glTF; the notice (status bar) gives each material's fit and its error.
+  void export_gltf_scene(const std::string& path);
   // Runs the file browser's chosen action, keeping the browser open with the error on failure.
   void browser_action(const std::string& path);
   void remember_recent(RecentKind kind, const std::string& path);
