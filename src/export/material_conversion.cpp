@@ -41,7 +41,7 @@ MaterialConversion convert_material(const std::string& name, const Material& mat
   out.source = phong_lobe(material, model, energy_normalize);
   // The fits run over a coarser grid than the residuals are measured on (an eighth of the
   // pairs: about 4000); on gold's lobe the fitted material's error on the full grid moved by
-  // 2e-5 of 0.119 (notes/export.md), at a seventh of the time.
+  // 2e-5 of 0.119 (docs/export.md), at a seventh of the time.
   LobeGrid coarse;
   coarse.per_decade = 10;
   coarse.even = 8;
