@@ -117,6 +117,8 @@ void FileActions::add_model(const std::string& path) {
   m_selection.object = first_new;
   remember_recent(RecentKind::model, path);
   for (const std::string& w : model.warnings) m_commands.info("warning: " + w);
+  // glTF materials read as the fitted Phong (or assimp's rule), with both errors.
+  for (const std::string& n : model.notes) m_commands.info(n);
   m_commands.info("added " + std::to_string(model.parts.size()) + " object(s) from " + path);
 }
 
