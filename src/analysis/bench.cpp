@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/image_metrics.h"
+#include "analysis/paired_timing.h"
 #include "analysis/ray_baseline.h"
 #include "analysis/texture_bench.h"
 #include "base/timing.h"
@@ -32,43 +33,6 @@ namespace gloss {
 
 namespace {
 using Clock = std::chrono::steady_clock;
-
-// Median wall time of f over runs repetitions (after one warm-up run).
-double time_median(int runs, const std::function<void()>& f) {
-  f();
-  std::vector<double> t;
-  for (int i = 0; i < runs; ++i) {
-    const Clock::time_point start = Clock::now();
-    f();
-    t.push_back(ms_since(start));
-  }
-  return median(t);
-}
-
-// f timed against a baseline g: medians of each, and the median of the ratios f / g within
-// pairs. The runs alternate (f, g, f, g ... after one warm-up of each), so the two of a pair
-// see the same state of a noisy machine (a shared machine's speed drifts over minutes:
-// docs/engine.md, "Benchmark timing"); the median of the paired ratios is the report's ratio,
-// less disturbed by that drift than the ratio of the two medians.
-struct Paired {
-  double f_ms, g_ms, ratio;
-};
-
-Paired time_paired(int runs, const std::function<void()>& f, const std::function<void()>& g) {
-  f();
-  g();
-  std::vector<double> tf, tg, ratios;
-  for (int i = 0; i < runs; ++i) {
-    Clock::time_point start = Clock::now();
-    f();
-    tf.push_back(ms_since(start));
-    start = Clock::now();
-    g();
-    tg.push_back(ms_since(start));
-    ratios.push_back(tf.back() / tg.back());
-  }
-  return {median(tf), median(tg), median(ratios)};
-}
 
 // A full 1-spp render through the engine's stages, BVH already built: trace, light factors,
 // per-pixel factors and the total image in one fused pass, as the engine's first
@@ -162,8 +126,8 @@ void measure_aa_quality(const Scene& base, const BenchOptions& options, BenchRep
   adaptive.refined = &refined;
   report.aa_rmse = compare_images(render(scene, adaptive).total, reference).rmse;
   report.aa_rmse_ratio = report.aa_rmse / report.uniform_rmse;
-  report.aa_refined_share =
-      static_cast<double>(refined.size()) / (static_cast<double>(base.render.width) * base.render.height);
+  report.aa_refined_share = static_cast<double>(refined.size()) /
+                            (static_cast<double>(base.render.width) * base.render.height);
 }
 
 }  // namespace
@@ -254,9 +218,9 @@ BenchReport run_benchmark(const Scene& input, const BenchOptions& options) {
   report.first_preview_ms = uniform.first_ms;
   report.converge_16spp_ms = uniform.converged_ms;
   // Paired with the 1-spp full render, as the retrace ratio is: a shared machine's speed drifts.
-  const EngineTimes adaptive =
-      measure_engine(scene, options, Sampling::adaptive,
-                     [&] { full_render(scene, embree, cache, factors, out, false); });
+  const EngineTimes adaptive = measure_engine(scene, options, Sampling::adaptive, [&] {
+    full_render(scene, embree, cache, factors, out, false);
+  });
   report.aa_ms = adaptive.converged_ms;
   report.aa_ratio = adaptive.ratio;
   measure_aa_quality(scene, options, report);
@@ -336,6 +300,21 @@ std::string format_bench_table(const BenchReport& r) {
       s += line;
     }
   }
+  if (!r.scaling.empty()) {
+    s += "  scaling, one factor at a time (own process per row): lights, triangles, size,\n"
+         "  retrace_ms, embree_raw_ms, ratio, peak_rss_mb\n";
+    for (const ScalingPoint& p : r.scaling) {
+      if (!p.skipped.empty()) {
+        std::snprintf(line, sizeof line, "    %3d %10lld %5dx%-5d skipped: %s\n", p.setup.lights,
+                      p.triangles, p.setup.width, p.setup.height, p.skipped.c_str());
+      } else {
+        std::snprintf(line, sizeof line, "    %3d %10lld %5dx%-5d %9.2f %9.2f %7.3f %8.1f\n",
+                      p.setup.lights, p.triangles, p.setup.width, p.setup.height, p.retrace_ms,
+                      p.embree_raw_ms, p.ratio, p.peak_rss_mb);
+      }
+      s += line;
+    }
+  }
   return s;
 }
 
@@ -385,6 +364,13 @@ std::string bench_to_json(const BenchReport& r) {
                     {"build_ms", p.build_ms}});
   }
   j["tessellation"] = tess;
+  if (!r.scaling.empty()) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const ScalingPoint& p : r.scaling) {
+      rows.push_back(nlohmann::json::parse(scaling_point_json_text(p)));
+    }
+    j["scaling"] = rows;
+  }
   return j.dump(2) + "\n";
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/bench_scaling.h"
 #include "scene/scene.h"
 
 namespace gloss {
@@ -51,6 +52,7 @@ struct BenchReport {
   double peak_rss_mb = 0;        // of a plain render at this size in its own process (the CLI's)
   double bench_peak_rss_mb = 0;  // of this benchmark's process
   std::vector<TessellationPoint> tessellation;
+  std::vector<ScalingPoint> scaling;  // `--scaling` (bench_scaling.h), else empty
 };
 
 BenchReport run_benchmark(const Scene& scene, const BenchOptions& options);

@@ -32,10 +32,13 @@ struct Config {
   Path path = Path::fast;
   int divisor = 1;
   bool shadows = true;
+  MapFilter map_filter = MapFilter::trilinear;
+  int map_divisor = 1;  // maps at 1/map_divisor of their size
 
   bool operator<(const Config& o) const {
-    return std::tie(spp, aa_threshold, tessellation, pow, path, divisor, shadows) <
-           std::tie(o.spp, o.aa_threshold, o.tessellation, o.pow, o.path, o.divisor, o.shadows);
+    return std::tie(spp, aa_threshold, tessellation, pow, path, divisor, shadows, map_filter,
+                    map_divisor) < std::tie(o.spp, o.aa_threshold, o.tessellation, o.pow, o.path,
+                                            o.divisor, o.shadows, o.map_filter, o.map_divisor);
   }
   bool operator==(const Config& o) const { return !(*this < o) && !(o < *this); }
 };
@@ -65,6 +68,11 @@ void check_options(const TradeoffOptions& o) {
   }
   for (int d : o.resolution_divisors) {
     if (d < 1) throw std::invalid_argument("tradeoff: resolution divisors must be >= 1");
+  }
+  for (int d : o.map_divisors) {
+    if (d < 1 || (d & (d - 1)) != 0) {
+      throw std::invalid_argument("tradeoff: map divisors must be powers of 2");
+    }
   }
 }
 
@@ -136,6 +144,12 @@ class Session {
   }
 
   int finest() const { return m_finest; }
+  bool textured() const {
+    for (const Material& m : m_scenes.at(m_finest).materials) {
+      if (m.textured()) return true;
+    }
+    return false;
+  }
   // The configuration every row changes one knob of.
   const Config& base() const { return m_base; }
 
@@ -149,9 +163,35 @@ class Session {
     return it->second;
   }
 
+  // The scene of c's tessellation with its maps at 1/map_divisor of their size: each pyramid
+  // from the level of that size (made once, shared by the rows).
+  const Scene& scene_for(const Config& c) {
+    if (c.map_divisor == 1) return scene_for(c.tessellation);
+    const auto key = std::make_pair(c.tessellation, c.map_divisor);
+    auto it = m_map_scenes.find(key);
+    if (it == m_map_scenes.end()) {
+      Scene s = scene_for(c.tessellation);
+      int drop = 0;
+      while ((1 << drop) < c.map_divisor) ++drop;
+      for (Material& m : s.materials) {
+        for (int i = 0; i < kMapSlots; ++i) {
+          TextureMap& map = m.map(static_cast<MapSlot>(i));
+          if (!map.present() || map.texture->level_count() <= 1) continue;
+          auto smaller = std::make_shared<Texture>(*map.texture);
+          const int from = std::min(drop, smaller->level_count() - 1);
+          smaller->levels.erase(smaller->levels.begin(), smaller->levels.begin() + from);
+          map.texture = std::move(smaller);
+        }
+      }
+      it = m_map_scenes.emplace(key, std::move(s)).first;
+    }
+    return it->second;
+  }
+
   // One render of c at full size (reduced sizes are upsampled), total image only.
   Image render_config(const Config& c) {
-    Scene s = scene_for(c.tessellation);
+    Scene s = scene_for(c);
+    s.render.map_filter = c.map_filter;
     s.render.width = std::max(1, (m_width + c.divisor / 2) / c.divisor);
     s.render.height = std::max(1, (m_height + c.divisor / 2) / c.divisor);
     s.render.spp = c.spp;
@@ -179,6 +219,7 @@ class Session {
   int m_finest = 0;  // 0: no teapot
   Config m_base;
   std::map<int, Scene> m_scenes;
+  std::map<std::pair<int, int>, Scene> m_map_scenes;  // (tessellation, map divisor)
   Image m_reference;
   std::map<Config, ImageMetrics> m_errors;
 };
@@ -247,6 +288,20 @@ std::vector<Setting> settings_of(Knob knob, const Session& session, const Tradeo
         "on", [](Config& c) { c.shadows = true; }, base.shadows);
     add(
         "off", [](Config& c) { c.shadows = false; }, !base.shadows);
+  } else if (knob == Knob::map_filter) {
+    if (!session.textured()) return out;  // tradeoff_notes says so
+    add(
+        "nearest", [](Config& c) { c.map_filter = MapFilter::nearest; }, false);
+    add(
+        "bilinear", [](Config& c) { c.map_filter = MapFilter::bilinear; }, false);
+    add(
+        "trilinear", [](Config&) {}, true);
+  } else if (knob == Knob::map_resolution) {
+    if (!session.textured()) return out;
+    for (int d : o.map_divisors) {
+      add(
+          divisor_name(d), [d](Config& c) { c.map_divisor = d; }, d == 1);
+    }
   }
   return out;
 }

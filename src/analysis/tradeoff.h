@@ -17,7 +17,18 @@
 namespace gloss {
 
 // The accuracy knobs, in the order run_tradeoff measures them.
-enum class Knob { spp, adaptive, tessellation, pow, precision, shading, resolution, shadows };
+enum class Knob {
+  spp,
+  adaptive,
+  tessellation,
+  pow,
+  precision,
+  shading,
+  resolution,
+  shadows,
+  map_filter,      // how maps are read: nearest, bilinear at level 0, trilinear (the contract)
+  map_resolution,  // every map at 1/2^k of its size (its pyramid from level k)
+};
 
 // Every knob, in measuring order.
 const std::vector<Knob>& tradeoff_knobs();
@@ -31,12 +42,13 @@ struct TradeoffOptions {
   int runs = 5;               // timed renders per row; the median is reported
   int reference_spp = 256;    // samples per pixel of the reference
   int base_spp = 4;           // samples per pixel of every row whose knob is not spp
-  std::vector<int> spp_levels{1, 2, 4, 8, 16, 32, 64};    // spp knob, uniform sampling
-  int adaptive_spp = 16;                                   // adaptive knob: its spp and
+  std::vector<int> spp_levels{1, 2, 4, 8, 16, 32, 64};  // spp knob, uniform sampling
+  int adaptive_spp = 16;                                // adaptive knob: its spp and
   std::vector<float> adaptive_thresholds{1.0f / 16, 1.0f / 32, 1.0f / 64, 1.0f / 128,
-                                         1.0f / 256};  // refine thresholds
+                                         1.0f / 256};     // refine thresholds
   std::vector<int> tessellation_levels{2, 4, 8, 16, 32};  // teapot segments per patch side
   std::vector<int> resolution_divisors{8, 4, 2, 1};       // preview at 1/d, upsampled
+  std::vector<int> map_divisors{8, 4, 2, 1};              // maps at 1/d (a power of 2)
   std::vector<Knob> knobs;                                // the knobs to measure; empty: all
   const std::atomic<bool>* cancel = nullptr;  // checked between renders and inside references
 };
@@ -56,7 +68,8 @@ struct TradeoffRow {
   std::string setting;  // spp: "1".."64"; adaptive: "uniform" (the base), "16 t=1/64" (spp and
                         // refine threshold); tessellation: "2".."32"; pow: "exact", "fast";
                         // precision: "float", "double"; shading: "per-pixel", "gouraud";
-                        // resolution: "1/8".."1"; shadows: "on", "off"
+                        // resolution: "1/8".."1"; shadows: "on", "off"; map_filter:
+                        // "nearest", "bilinear", "trilinear"; map_resolution: "1/8".."1"
   double time_ms = 0;   // median wall time of one render: BVH build, trace, shade (resolution:
                         // the reduced render plus the bilinear upsampling to full size); the
                         // base's own time differs a little from knob to knob (timed with each)

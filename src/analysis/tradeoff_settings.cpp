@@ -69,6 +69,12 @@ std::vector<std::string> tradeoff_notes(const Scene& scene, const TradeoffOption
   notes.push_back(
       "resolution: rendered at 1/d of the width and height, upsampled bilinearly "
       "(upsampling included in the time)");
+  bool textured = false;
+  for (const Material& m : scene.materials) textured = textured || m.textured();
+  notes.push_back(textured ? "maps: map_filter reads every map nearest, bilinear at level 0 or "
+                             "trilinear; map_resolution reads each from its pyramid's level k "
+                             "(1/2^k of its size), trilinear"
+                           : "map_filter, map_resolution: skipped, the scene has no maps");
   if (!scene.render.shadows) {
     notes.push_back(
         "shadows: off in the scene, so the reference has none and 'off' is its "
@@ -78,9 +84,9 @@ std::vector<std::string> tradeoff_notes(const Scene& scene, const TradeoffOption
 }
 
 const std::vector<Knob>& tradeoff_knobs() {
-  static const std::vector<Knob> knobs{Knob::spp,        Knob::adaptive,  Knob::tessellation,
-                                       Knob::pow,        Knob::precision, Knob::shading,
-                                       Knob::resolution, Knob::shadows};
+  static const std::vector<Knob> knobs{
+      Knob::spp,     Knob::adaptive,   Knob::tessellation, Knob::pow,        Knob::precision,
+      Knob::shading, Knob::resolution, Knob::shadows,      Knob::map_filter, Knob::map_resolution};
   return knobs;
 }
 
@@ -102,6 +108,10 @@ const char* to_string(Knob knob) {
       return "resolution";
     case Knob::shadows:
       return "shadows";
+    case Knob::map_filter:
+      return "map_filter";
+    case Knob::map_resolution:
+      return "map_resolution";
   }
   return "?";
 }

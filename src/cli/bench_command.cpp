@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "analysis/bench.h"
+#include "analysis/bench_scaling.h"
 #include "base/assets.h"
 #include "base/atomic_file.h"
 #include "cli/commands.h"
@@ -25,27 +26,14 @@ namespace {
 struct BenchArgs {
   std::string scene;
   std::string json;
+  bool scaling = false;     // --scaling: the rows of bench_scaling.h, each in its own process
+  std::string scaling_row;  // hidden --scaling-row L,T,W,H: measure that row alone (the child)
   BenchOptions options;
 };
 
-// Peak resident memory (MB) of `gloss-cli render` of scene at the bench's size and 1 spp, run
-// as a child process so that nothing of the benchmark counts; 0 when it cannot be measured.
-double plain_render_peak_rss_mb(const std::string& scene, const BenchOptions& options) {
-  namespace fs = std::filesystem;
-  char dir_template[] = "/tmp/gloss-bench-XXXXXX";
-  if (::mkdtemp(dir_template) == nullptr) return 0;
-  const std::string out = std::string(dir_template) + "/render.png";
-  std::vector<std::string> words = {"gloss-cli",
-                                    "render",
-                                    scene,
-                                    "-o",
-                                    out,
-                                    "--width",
-                                    std::to_string(options.width),
-                                    "--height",
-                                    std::to_string(options.height),
-                                    "--spp",
-                                    "1"};
+// Runs this program with `words` as its arguments, stdout to /dev/null, and waits. Returns its
+// peak resident memory (MB) when it exited 0, else -1.
+double run_child(std::vector<std::string> words) {
   std::vector<char*> argv;
   for (std::string& w : words) argv.push_back(w.data());
   argv.push_back(nullptr);
@@ -55,28 +43,83 @@ double plain_render_peak_rss_mb(const std::string& scene, const BenchOptions& op
   pid_t pid = 0;
   const int spawned = posix_spawn(&pid, "/proc/self/exe", &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
-  double mb = 0;
-  if (spawned == 0) {
-    int status = 0;
-    rusage usage{};
-    if (::wait4(pid, &status, 0, &usage) == pid && WIFEXITED(status) && WEXITSTATUS(status) == 0) {
-      mb = static_cast<double>(usage.ru_maxrss) / 1024.0;  // KiB on Linux
-    }
+  if (spawned != 0) return -1;
+  int status = 0;
+  rusage usage{};
+  if (::wait4(pid, &status, 0, &usage) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    return -1;
   }
-  std::error_code ec;
-  fs::remove_all(dir_template, ec);
-  return mb;
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // KiB on Linux
+}
+
+// A scratch folder for a child's output, removed with the object.
+struct ScratchFolder {
+  std::string path;
+  ScratchFolder() {
+    char dir_template[] = "/tmp/gloss-bench-XXXXXX";
+    if (::mkdtemp(dir_template) != nullptr) path = dir_template;
+  }
+  ~ScratchFolder() {
+    std::error_code ec;
+    if (!path.empty()) std::filesystem::remove_all(path, ec);
+  }
+};
+
+// Peak resident memory (MB) of `gloss-cli render` of scene at the bench's size and 1 spp, run
+// as a child process so that nothing of the benchmark counts; 0 when it cannot be measured.
+double plain_render_peak_rss_mb(const std::string& scene, const BenchOptions& options) {
+  const ScratchFolder dir;
+  if (dir.path.empty()) return 0;
+  const double mb = run_child({"gloss-cli", "render", scene, "-o", dir.path + "/render.png",
+                               "--width", std::to_string(options.width), "--height",
+                               std::to_string(options.height), "--spp", "1"});
+  return std::max(mb, 0.0);
+}
+
+// Each scaling row measured in a child process (`bench SCENE --scaling-row ...`), so the peak
+// resident memory it reports is that row's alone.
+std::vector<ScalingPoint> scaling_rows(const std::string& scene, const BenchOptions& options) {
+  std::vector<ScalingPoint> rows;
+  for (const ScalingSetup& setup : scaling_setups()) {
+    std::cerr << "scaling row " << scaling_setup_text(setup) << " ...\n";
+    const ScratchFolder dir;
+    const std::string json = dir.path + "/row.json";
+    const double mb =
+        dir.path.empty()
+            ? -1
+            : run_child({"gloss-cli", "bench", scene, "--scaling-row", scaling_setup_text(setup),
+                         "--runs", std::to_string(options.runs), "--json", json});
+    ScalingPoint point;
+    point.setup = setup;
+    if (mb < 0) {
+      point.skipped = "the row's process failed";
+    } else {
+      point = parse_scaling_point(read_text_file(json));
+      point.peak_rss_mb = mb;
+    }
+    rows.push_back(point);
+  }
+  return rows;
 }
 
 void run_bench(const BenchArgs& args) {
   const std::string path =
       args.scene.empty() ? asset_path("scenes/cornell-teapot.json") : args.scene;
   const Scene scene = load_scene(path);
+  if (!args.scaling_row.empty()) {  // a child of --scaling: one row, written as JSON
+    const ScalingPoint point =
+        run_scaling_row(scene, parse_scaling_setup(args.scaling_row), args.options.runs);
+    write_text_atomically(args.json, scaling_point_json_text(point));
+    return;
+  }
   // First, while this process is small: a spawned child's peak counts the parent's pages it
   // started from.
   const double render_peak_mb = plain_render_peak_rss_mb(path, args.options);
+  std::vector<ScalingPoint> scaling;
+  if (args.scaling) scaling = scaling_rows(path, args.options);
   BenchReport report = run_benchmark(scene, args.options);
   report.peak_rss_mb = render_peak_mb;
+  report.scaling = std::move(scaling);
   std::cout << format_bench_table(report);
   // Which build of the pixel code ran: native, the baseline, or a variant the loader chose.
   std::cout << "  pixel code: " << pixel_code_isa() << "\n";
@@ -99,6 +142,10 @@ void add_bench_command(CLI::App& app) {
       ->check(CLI::Range(1, 16384));
   cmd->add_option("--runs", args->options.runs, "Repetitions per figure")
       ->check(CLI::Range(1, 1000));
+  cmd->add_flag("--scaling", args->scaling,
+                "Also time how cost grows: 1-64 lights, 10 k-10 M triangles, 720p-4K (minutes)");
+  // The child process of --scaling for one row; not for users (no group: hidden from --help).
+  cmd->add_option("--scaling-row", args->scaling_row)->group("");
   cmd->callback([args] { run_bench(*args); });
 }
 

@@ -38,6 +38,7 @@ constexpr const char* kPython = "/usr/bin/python3";
 
 struct TradeoffArgs {
   std::string scene, csv, plot;
+  std::vector<std::string> knobs;  // --knobs: only these (names as tables print them)
   int width = 0, height = 0, runs = 0, reference_spp = 0, base_spp = 0;
   bool quick = false;
 };
@@ -124,6 +125,11 @@ void run_tradeoff_command(const TradeoffArgs& args) {
   if (args.runs > 0) options.runs = args.runs;
   if (args.reference_spp > 0) options.reference_spp = args.reference_spp;
   if (args.base_spp > 0) options.base_spp = args.base_spp;
+  for (const std::string& name : args.knobs) {
+    Knob knob;
+    if (!parse_knob(name, knob)) throw InputError("--knobs", "unknown knob '" + name + "'");
+    options.knobs.push_back(knob);
+  }
 
   const std::string script = plot_script();
   if (!args.csv.empty()) check_writable(args.csv);
@@ -217,6 +223,10 @@ void add_tradeoff_command(CLI::App& app) {
   cmd->add_option("--base-spp", args->base_spp, "Samples per pixel of the non-spp rows (4)")
       ->check(CLI::Range(1, kMaxSpp));
   cmd->add_flag("--quick", args->quick, "The editor's quick settings: 256 wide, 3 runs, 64 spp");
+  cmd->add_option("--knobs", args->knobs,
+                  "Only these knobs (spp, adaptive, tessellation, pow, precision, shading, "
+                  "resolution, shadows, map_filter, map_resolution)")
+      ->delimiter(',');
   cmd->callback([args] { run_tradeoff_command(*args); });
 }
 

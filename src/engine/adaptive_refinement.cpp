@@ -53,6 +53,15 @@ void mark_curvature(const Image& total, int y, int w, float threshold,
 
 std::vector<std::uint32_t> choose_refined_pixels(const SampleCache& cache, const Image& total,
                                                  float threshold, int row_begin, int row_end) {
+  std::vector<std::uint32_t> out;
+  choose_refined_pixels(cache, total, threshold, row_begin, row_end, nullptr, out);
+  return out;
+}
+
+bool choose_refined_pixels(const SampleCache& cache, const Image& total, float threshold,
+                           int row_begin, int row_end, const std::atomic<bool>* cancel,
+                           std::vector<std::uint32_t>& out) {
+  out.clear();
   const int w = cache.width, h = cache.height;
   const SamplePlane& plane = cache.planes.at(0);
   // Edge flags of rows [k0, k1), the rows the chosen rows look at; index (y - k0) * w + x.
@@ -60,7 +69,7 @@ std::vector<std::uint32_t> choose_refined_pixels(const SampleCache& cache, const
   const auto at = [&](int x, int y) { return static_cast<std::size_t>(y - k0) * w + x; };
   const auto pixel = [&](int x, int y) { return static_cast<std::size_t>(y) * w + x; };
   std::vector<std::uint8_t> edges(static_cast<std::size_t>(k1 - k0) * w, 0);
-  parallel_rows(w, k1 - k0, nullptr, [&](int r0, int r1) {
+  const bool marked = parallel_rows(w, k1 - k0, cancel, [&](int r0, int r1) {
     for (int y = k0 + r0; y < k0 + r1; ++y) {
       std::uint8_t* e = &edges[at(0, y)];
       auto mark = [&](int xa, int xb, int yb, int n, std::uint8_t bit, std::uint8_t* out) {
@@ -80,34 +89,36 @@ std::vector<std::uint32_t> choose_refined_pixels(const SampleCache& cache, const
   const int rows = band_rows(w), chosen = row_end - row_begin;
   std::vector<std::vector<std::uint32_t>> bands(
       static_cast<std::size_t>(std::max(0, (chosen + rows - 1) / rows)));
-  parallel_rows(w, chosen, nullptr, [&](int r0, int r1) {
-    std::vector<std::uint32_t>& out = bands[static_cast<std::size_t>(r0 / rows)];
-    std::vector<std::uint8_t> refine(static_cast<std::size_t>(w));
-    for (int y = row_begin + r0; y < row_begin + r1; ++y) {
-      const std::uint8_t* e = &edges[at(0, y)];
-      for (int x = 0; x < w; ++x) refine[static_cast<std::size_t>(x)] = e[x];
-      for (int x = 1; x < w; ++x) refine[static_cast<std::size_t>(x)] |= e[x - 1] & kRight;
-      if (y > k0) {
-        const std::uint8_t* up = &edges[at(0, y - 1)];
-        for (int x = 0; x < w; ++x) refine[static_cast<std::size_t>(x)] |= up[x] & kDown;
-        for (int x = 1; x < w; ++x) refine[static_cast<std::size_t>(x)] |= up[x - 1] & kDownRight;
-        for (int x = 0; x + 1 < w; ++x)
-          refine[static_cast<std::size_t>(x)] |= up[x + 1] & kDownLeft;
-      }
-      if (y > 0 && y + 1 < h) mark_curvature(total, y, w, threshold * kCurvatureShare, refine);
-      const int row = cache.row0 + y;  // image row
-      const bool border_row = row == 0 || row == cache.image_height - 1;
-      const std::size_t base = static_cast<std::size_t>(y) * w;
-      for (int x = 0; x < w; ++x) {
-        if (border_row || x == 0 || x == w - 1 || refine[static_cast<std::size_t>(x)] != 0) {
-          out.push_back(static_cast<std::uint32_t>(base + x));
+  const bool chose =
+      marked && parallel_rows(w, chosen, cancel, [&](int r0, int r1) {
+        std::vector<std::uint32_t>& band = bands[static_cast<std::size_t>(r0 / rows)];
+        std::vector<std::uint8_t> refine(static_cast<std::size_t>(w));
+        for (int y = row_begin + r0; y < row_begin + r1; ++y) {
+          const std::uint8_t* e = &edges[at(0, y)];
+          for (int x = 0; x < w; ++x) refine[static_cast<std::size_t>(x)] = e[x];
+          for (int x = 1; x < w; ++x) refine[static_cast<std::size_t>(x)] |= e[x - 1] & kRight;
+          if (y > k0) {
+            const std::uint8_t* up = &edges[at(0, y - 1)];
+            for (int x = 0; x < w; ++x) refine[static_cast<std::size_t>(x)] |= up[x] & kDown;
+            for (int x = 1; x < w; ++x)
+              refine[static_cast<std::size_t>(x)] |= up[x - 1] & kDownRight;
+            for (int x = 0; x + 1 < w; ++x)
+              refine[static_cast<std::size_t>(x)] |= up[x + 1] & kDownLeft;
+          }
+          if (y > 0 && y + 1 < h) mark_curvature(total, y, w, threshold * kCurvatureShare, refine);
+          const int row = cache.row0 + y;  // image row
+          const bool border_row = row == 0 || row == cache.image_height - 1;
+          const std::size_t base = static_cast<std::size_t>(y) * w;
+          for (int x = 0; x < w; ++x) {
+            if (border_row || x == 0 || x == w - 1 || refine[static_cast<std::size_t>(x)] != 0) {
+              band.push_back(static_cast<std::uint32_t>(base + x));
+            }
+          }
         }
-      }
-    }
-  });
-  std::vector<std::uint32_t> out;
+      });
+  if (!chose) return false;
   for (const auto& band : bands) out.insert(out.end(), band.begin(), band.end());
-  return out;
+  return true;
 }
 
 }  // namespace gloss

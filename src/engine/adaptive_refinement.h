@@ -15,6 +15,7 @@
 // Both sides of an edge are refined. What it cannot see: detail that falls between pixel
 // centres (geometry thinner than a pixel, a highlight smaller than one) leaves no trace in the
 // centre image and stays unrefined (docs/accuracy.md, "Where adaptive sampling misses").
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -28,5 +29,9 @@ namespace gloss {
 // samples; total is the region's total image made from them.
 std::vector<std::uint32_t> choose_refined_pixels(const SampleCache& cache, const Image& total,
                                                  float threshold, int row_begin, int row_end);
+// The same into out, stopping soon after cancel turns true: false then (out is incomplete).
+bool choose_refined_pixels(const SampleCache& cache, const Image& total, float threshold,
+                           int row_begin, int row_end, const std::atomic<bool>* cancel,
+                           std::vector<std::uint32_t>& out);
 
 }  // namespace gloss

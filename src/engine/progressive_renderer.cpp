@@ -1,103 +1,16 @@
 #include "engine/progressive_renderer.h"
 
-#include <algorithm>
-#include <chrono>
-#include <condition_variable>
-#include <mutex>
-#include <thread>
+#include <pthread.h>
 
-#include "engine/adaptive_refinement.h"
-#include "engine/environment/environment_estimate.h"
-#include "engine/environment/environment_stage.h"
-#include "engine/frame_pool.h"
-#include "engine/render_context.h"
+#include "engine/progressive_state.h"
 #include "engine/render_plan.h"
-#include "engine/shade/pixel_factors.h"
-#include "engine/trace/embree_scene.h"
-#include "engine/trace/refined_samples.h"
-#include "engine/trace/sample_cache.h"
-#include "engine/trace/single_sample_pass.h"
-#include "engine/trace/texture_lanes.h"
 #include "scene/fields/scene_diff.h"
 
 namespace gloss {
 
 namespace {
 using Clock = std::chrono::steady_clock;
-
-double ms_between(Clock::time_point a, Clock::time_point b) {
-  return std::chrono::duration<double, std::milli>(b - a).count();
-}
-
 }  // namespace
-
-struct ProgressiveRenderer::Impl {
-  explicit Impl(ProgressiveOptions o) : options(o), terms(o.terms) {}
-
-  ProgressiveOptions options;
-
-  // Inbox, guarded by mutex: the newest scene handed in and what the worker should know of it.
-  std::mutex mutex;
-  std::condition_variable wake;
-  std::shared_ptr<const Scene> last_set;  // the caller's newest scene
-  std::shared_ptr<const Scene> pending;   // not yet taken by the worker
-  std::uint64_t generation = 0;
-  Clock::time_point changed_at;
-  ChangeClass pending_change = ChangeClass::none;  // accumulated since the worker last looked
-  bool terms;
-  bool stop = false;
-  bool paused = false;  // pause(): no work until the next set_scene()
-  std::atomic<bool> cancel{false};
-
-  // Published frame, guarded by publish_mutex.
-  mutable std::mutex publish_mutex;
-  mutable std::condition_variable published_cv;
-  std::shared_ptr<const RenderedFrame> published;
-  std::function<void()> on_publish;
-
-  // Worker-only state: the scene the cache belongs to and how far the cache lags behind it.
-  std::shared_ptr<const Scene> scene;
-  std::unique_ptr<EmbreeScene> embree;
-  RenderContext ctx;
-  SampleCache cache;
-  PixelFactors factors;
-  EnvironmentEstimates environment;  // the environment's exact terms, pass by pass
-  std::shared_ptr<FramePool> frame_pool = std::make_shared<FramePool>();
-  int level = 0;                  // 0 .. preview_levels - 1: coarse passes; preview_levels: full
-  double last_full_pass_ms = -1;  // the last full-resolution 1-spp pass (preview_budget_ms)
-  ChangeClass dirty = ChangeClass::none;
-  int pass = 0;
-  std::uint64_t worker_generation = 0;
-  Clock::time_point worker_changed_at;
-  ChangeClass cause = ChangeClass::full;
-  bool worker_terms = true;
-
-  std::thread worker;
-
-  void run();
-  bool take_inbox();
-  bool step();
-  void start_level(int new_level);
-  // Publishes frame, its images made from the current factors.
-  void publish(std::shared_ptr<RenderedFrame> frame, double pass_ms, long long rays,
-               bool converged);
-  // spp > 1 spent adaptively: the full-resolution cache holds centres plus refined samples.
-  bool adaptive() const {
-    return scene->render.spp > 1 && scene->render.sampling == Sampling::adaptive;
-  }
-  // Samples per pixel the cache stands for (adaptive: per refined pixel, once refined).
-  int cached_spp() const { return cache.refined.spp > 0 ? cache.refined.spp : cache.samples(); }
-  // Every sample traced at full resolution (the environment's passes come after).
-  bool samples_done() const {
-    return level == options.preview_levels && cached_spp() >= scene->render.spp;
-  }
-  bool converged_state() const {
-    return dirty == ChangeClass::none && samples_done() &&
-           next_environment_steps(ctx, environment) == 0;
-  }
-  // Traces the refined samples the centre image asks for; false when cancelled.
-  bool refine();
-};
 
 void ProgressiveRenderer::Impl::run() {
   for (;;) {
@@ -145,6 +58,8 @@ bool ProgressiveRenderer::Impl::take_inbox() {
       scene == nullptr ? ChangeClass::full : classify_change(*scene, *next, diff);
   cause = change;
   pass = 0;
+  published_centres = false;  // the published frame shows an older scene
+  adaptive_state.edit(change, cache);
   if (embree == nullptr || scene == nullptr || diff.geometry) {
     embree = std::make_unique<EmbreeScene>(*next);
   }
@@ -155,147 +70,36 @@ bool ProgressiveRenderer::Impl::take_inbox() {
   return true;
 }
 
-void ProgressiveRenderer::Impl::start_level(int new_level) {
-  level = new_level;
-  const RenderSettings& r = scene->render;
-  const int shift = options.preview_levels - level;  // 3, 2, 1 -> 1/8, 1/4, 1/2
-  const int w = std::max(1, r.width >> shift), h = std::max(1, r.height >> shift);
-  const int target = level == options.preview_levels && !adaptive() ? r.spp : 1;
-  reset_sample_cache(cache, *scene, w, h, target);  // keeps the memory of the last image
-}
-
-// One unit of work, then a publication; false when cancelled by a newer scene. A cancelled
-// stage leaves `dirty` at the class that redoes it, so the caches never mix two scenes.
-bool ProgressiveRenderer::Impl::step() {
-  const Clock::time_point start = Clock::now();
-  std::atomic<long long> rays{0};
-  ctx.rays = &rays;
-  ChangeClass redo = ChangeClass::none;  // what a cancellation leaves to do
-  bool ok = true;
-  bool factors_done = false;  // the fused first pass builds the pixel factors too
-  bool total_done = false;    // ... and, when only the total is shown, the frame's total image
-  // The image size first (a restart or the next preview level), then the frame to fill.
-  const bool restart = dirty == ChangeClass::full;
-  const bool next_level = dirty == ChangeClass::none && level < options.preview_levels;
-  SampleCache previous;  // next_level: the current resolution, kept until the next is complete
-  const int previous_level = level;
-  if (restart) {
-    start_level(options.preview_levels > 0 ? 0 : options.preview_levels);
-  } else if (next_level) {
-    previous = std::move(cache);
-    const bool skip = last_full_pass_ms >= 0 && last_full_pass_ms <= options.preview_budget_ms;
-    // Its spare planes and refined buffers hold no data: the new image takes them now, its
-    // planes in use once the new image is complete (reclaim_planes below).
-    cache.spare = std::move(previous.spare);
-    previous.spare.clear();
-    cache.refined.plane = std::move(previous.refined.plane);
-    start_level(skip ? options.preview_levels : level + 1);
-  }
-  const std::shared_ptr<RenderedFrame> frame =
-      FramePool::make(frame_pool, cache.width, cache.height, worker_terms);
-  // The first pass makes the total itself unless a term view wants the terms or the
-  // environment is the background (its sky comes after the factors: combine_terms adds it).
-  const bool sky_shown = ctx.plan.sky && scene->environment.as_background;
-  Image* const total = worker_terms || sky_shown ? nullptr : &frame->images.total;
-  // The environment's estimates belong to the cache's samples and slots as they are: an edit
-  // that rewrites the slots (environment, light) or the samples (full) starts them again, from
-  // the fast path. Edits below keep them (a material edit only recombines).
-  if (dirty >= ChangeClass::environment) environment.reset();
-  const int environment_steps =
-      dirty == ChangeClass::none && samples_done() ? next_environment_steps(ctx, environment) : 0;
-  if (restart) {
-    redo = ChangeClass::full;
-    ok = trace_single_sample(cache, ctx, factors, total);
-    factors_done = total_done = true;
-  } else if (dirty == ChangeClass::environment) {
-    redo = ChangeClass::environment;  // its factors from the cached hits, no rays
-    ok = recompute_environment_factors(cache, ctx);
-  } else if (dirty == ChangeClass::texture) {
-    redo = ChangeClass::texture;  // the maps at the cached hits, no rays
-    ok = resample_textures(cache, ctx) &&
-         (!ctx.plan.environment || recompute_environment_factors(cache, ctx));
-  } else if (dirty == ChangeClass::light) {
-    redo = ChangeClass::light;
-    if (cache.samples() == 1 && cache.refined.spp == 0) {  // one pass: light and pixel factors
-      ok = relight_single_sample(cache, ctx, factors, total);
-      factors_done = total_done = true;
-    } else {
-      ok = recompute_light_factors(cache, ctx);
-    }
-  } else if (next_level) {
-    // The next resolution is traced aside; the current one stays until it is complete.
-    redo = ChangeClass::exponent;  // cancelled: the factors must be rebuilt from `previous`
-    ok = trace_single_sample(cache, ctx, factors, total);
-    factors_done = total_done = true;
-    if (ok) {
-      reclaim_planes(cache, std::move(previous));
-    } else {
-      SampleCache traced = std::move(cache);
-      cache = std::move(previous);
-      level = previous_level;
-      reclaim_planes(cache, std::move(traced));
-    }
-  } else if (environment_steps > 0) {
-    redo = ChangeClass::environment;  // cancelled: back to the fast path, estimates anew
-    ok = add_environment_steps(cache, ctx, environment, environment_steps);
-  } else if (dirty == ChangeClass::none && adaptive()) {
-    redo = ChangeClass::exponent;  // cancelled: the factors are rebuilt from the centres
-    ok = refine() && refine_pixel_factors(cache, ctx, factors);
-    factors_done = true;
-  } else if (dirty == ChangeClass::none) {
-    // Double the samples each pass: 1, 2, 4, 8 ... up to the target.
-    const int have = cache.samples();
-    ok = add_samples(cache, ctx, std::min(have, scene->render.spp - have));
-  }
-  if (ok && dirty != ChangeClass::shade && !factors_done) {
-    redo = std::max(redo, ChangeClass::exponent);
-    ok = build_pixel_factors(cache, ctx, factors);
-  }
-  // The sky follows the camera, the samples and the environment's map and rotation.
-  if (ok && ctx.plan.sky && dirty != ChangeClass::shade && dirty != ChangeClass::exponent) {
-    ok = environment_sky(cache, ctx, factors);
-  }
-  ctx.rays = nullptr;
-  if (!ok) {
-    dirty = std::max(dirty, redo);
-    if (cache.samples() == 0) dirty = ChangeClass::full;
-    return false;
-  }
-  dirty = ChangeClass::none;
-  if (!total_done || total == nullptr) combine_terms(factors, ctx, frame->images, worker_terms);
-  const double pass_ms = ms_between(start, Clock::now());
-  if ((restart || next_level) && level == options.preview_levels) last_full_pass_ms = pass_ms;
-  publish(frame, pass_ms, rays.load(), converged_state());
-  return true;
-}
-
-bool ProgressiveRenderer::Impl::refine() {
-  // The total the centre samples make, what the rule looks at: the frame published last.
-  std::shared_ptr<const RenderedFrame> centres;
-  {
-    std::lock_guard<std::mutex> lock(publish_mutex);
-    centres = published;
-  }
-  std::vector<std::uint32_t> pixels = choose_refined_pixels(
-      cache, centres->images.total, scene->render.aa_threshold, 0, cache.height);
-  return trace_refined_samples(cache, ctx, std::move(pixels), scene->render.spp);
-}
-
 void ProgressiveRenderer::Impl::publish(std::shared_ptr<RenderedFrame> frame, double pass_ms,
                                         long long rays, bool converged) {
+  frame->refined = factors.refined_pixel;
+  frame->info.refined_traced = refined_traced;
+  published_centres = adaptive() && level == options.preview_levels && factors.samples == 1 &&
+                      factors.refined_pixel.empty();
+  publish_frame(std::move(frame), cache.width, cache.height, factors_spp(), pass_ms, rays,
+                converged);
+}
+
+void ProgressiveRenderer::Impl::publish_frame(std::shared_ptr<RenderedFrame> frame, int width,
+                                              int height, int spp, double pass_ms, long long rays,
+                                              bool converged) {
   FrameInfo& info = frame->info;
   info.generation = worker_generation;
   info.pass = pass++;
-  info.width = cache.width;
-  info.height = cache.height;
-  info.spp = cached_spp();
-  frame->refined = cache.refined.pixels;
+  info.width = width;
+  info.height = height;
+  info.spp = spp;
   info.target_spp = scene->render.spp;
   info.pass_ms = pass_ms;
-  info.since_change_ms = ms_between(worker_changed_at, Clock::now());
+  info.since_change_ms = Impl::ms_between(worker_changed_at, Clock::now());
   info.rays = rays;
   info.converged = converged;
   info.cause = cause;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    first_in_flight = false;
+    published_at = Clock::now();
+  }
   std::function<void()> callback;
   {
     std::lock_guard<std::mutex> lock(publish_mutex);
@@ -311,6 +115,9 @@ ProgressiveRenderer::ProgressiveRenderer(ProgressiveOptions options)
     : m_impl(std::make_unique<Impl>(options)) {
   m_impl->worker_terms = options.terms;
   m_impl->worker = std::thread([impl = m_impl.get()] { impl->run(); });
+  // Named by the creating thread before the constructor returns, so a caller that sets thread
+  // priorities by name (the editor's background_priority.h) sees the name from the start.
+  pthread_setname_np(m_impl->worker.native_handle(), kEngineThreadName);
 }
 
 ProgressiveRenderer::~ProgressiveRenderer() {
@@ -341,7 +148,13 @@ std::uint64_t ProgressiveRenderer::set_scene(const Scene& scene) {
       m_impl->pending = std::move(copy);
       generation = ++m_impl->generation;
       m_impl->changed_at = Clock::now();
-      m_impl->cancel.store(true);  // work in flight is for an older scene
+      // Work in flight is for an older scene and stops, unless it is a first image and nothing
+      // was published for max_publish_gap_ms: then it completes and is shown before the newest
+      // scene is taken, so edits faster than a pass (a drag, an animation) still move the image.
+      const bool starved =
+          m_impl->first_in_flight && Impl::ms_between(m_impl->published_at, m_impl->changed_at) >=
+                                         m_impl->options.max_publish_gap_ms;
+      if (!starved || was_paused) m_impl->cancel.store(true);
     }
   }
   m_impl->wake.notify_all();  // also resumes a paused worker on the same scene

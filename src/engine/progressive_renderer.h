@@ -2,6 +2,7 @@
 // The interactive engine: renders a scene progressively on oneTBB workers, coarse to fine, and
 // publishes each finished pass whole. set_scene() never blocks on rendering; it classifies the
 // edit (change_class.h) and restarts at the cheapest stage the edit invalidates.
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -22,6 +23,7 @@ struct FrameInfo {
   double pass_ms = 0;                     // compute time of this pass
   double since_change_ms = 0;             // from the set_scene() of this generation to publication
   long long rays = 0;                     // primary + shadow rays traced for this pass
+  std::size_t refined_traced = 0;         // adaptive: pixels whose refined samples it traced anew
   bool converged = false;                 // nothing more will be computed for this scene
   ChangeClass cause = ChangeClass::full;  // what the edit that led here invalidated
 };
@@ -41,7 +43,21 @@ struct ProgressiveOptions {
   // coarsest preview straight to full resolution: the finer previews would only delay it.
   // 0: always every preview.
   double preview_budget_ms = 25.0;
+  // An edit cancels the pass in flight, unless that pass is the first image of its generation
+  // and nothing was published for this long: then the pass completes first. Under edits that
+  // come faster than a pass (a drag, an animation on a loaded machine) images keep coming, each
+  // at most one pass behind the newest edit. 0: first images are never cancelled.
+  double max_publish_gap_ms = 50.0;
+  // An edit (shade, exponent, light) whose full-resolution first pass is expected to take longer
+  // than this (the last of its class did, or ran that long before it was cancelled) first shows
+  // a coarse preview traced afresh at the finest of 1/2, 1/4, 1/8 of the size expected within it
+  // (edit_preview.h), then the full image. 0: never.
+  double edit_preview_budget_ms = 25.0;
 };
+
+// The name of each engine's own thread (the one that takes edits in and publishes frames), as
+// the kernel shows it (/proc/self/task/TID/comm).
+inline constexpr char kEngineThreadName[] = "gloss-engine";
 
 class ProgressiveRenderer {
  public:

@@ -13,6 +13,7 @@
 
 #include "io/scene/scene_loader.h"
 #include "support/scene_fixtures.h"
+#include "texture/mip_pyramid.h"
 
 namespace gloss {
 namespace {
@@ -109,10 +110,9 @@ TEST_F(Tradeoff, BaseRowsAreTheReferenceSettingsButFloatAndTheBaseSpp) {
   for (const TradeoffRow& r : *rows) {
     if (r.base_setting) base.push_back(std::string(to_string(r.knob)) + "=" + r.setting);
   }
-  EXPECT_EQ(base,
-            (std::vector<std::string>{"spp=16", "adaptive=uniform", "tessellation=8", "pow=exact",
-                                      "precision=float", "shading=per-pixel", "resolution=1",
-                                      "shadows=on"}));
+  EXPECT_EQ(base, (std::vector<std::string>{"spp=16", "adaptive=uniform", "tessellation=8",
+                                            "pow=exact", "precision=float", "shading=per-pixel",
+                                            "resolution=1", "shadows=on"}));
 }
 
 // Each knob turned away from the reference costs accuracy: clearly more error than its
@@ -181,6 +181,45 @@ TEST(TradeoffControl, OptionsOutOfRangeAreRefused) {
   o = small_options();
   o.tessellation_levels = {0};
   EXPECT_THROW(run_tradeoff(scene, o), std::invalid_argument);
+}
+
+// The map knobs on a sphere under a fine checker seen whole (minified): reading the maps nearest
+// or bilinear at level 0 aliases, so both cost accuracy against trilinear (the contract's and the
+// base's setting); maps at 1/8 of their size lose the detail the reference shows. A scene
+// without maps has no map rows and says so.
+TEST(TradeoffControl, MapKnobsWeighFilteringAndMapResolution) {
+  Scene scene = test::head_on_sphere_scene();
+  scene.render.shadows = false;
+  FloatImage image;
+  image.width = image.height = 256;
+  image.channels = 1;
+  for (int j = 0; j < 256; ++j) {
+    for (int i = 0; i < 256; ++i) image.samples.push_back(((i / 2 + j / 2) % 2) ? 0.9f : 0.1f);
+  }
+  TextureMap& map = scene.materials[0].map(MapSlot::diffuse);
+  map.file = "checker";
+  map.texture = std::make_shared<Texture>(make_texture(std::move(image)));
+  TradeoffOptions o = small_options();
+  o.knobs = {Knob::map_filter, Knob::map_resolution};
+  const std::vector<TradeoffRow> rows = run_tradeoff(scene, o);
+  std::map<std::string, const TradeoffRow*> by;
+  for (const TradeoffRow& r : rows) by[std::string(to_string(r.knob)) + " " + r.setting] = &r;
+  ASSERT_EQ(rows.size(), 3u + 4u);
+  const TradeoffRow& trilinear = *by.at("map_filter trilinear");
+  EXPECT_TRUE(trilinear.reference_setting);
+  EXPECT_TRUE(trilinear.base_setting);
+  EXPECT_GT(by.at("map_filter nearest")->error.rmse, 2.0 * trilinear.error.rmse);
+  EXPECT_GT(by.at("map_filter bilinear")->error.rmse, 2.0 * trilinear.error.rmse);
+  EXPECT_TRUE(by.at("map_resolution 1")->base_setting);
+  EXPECT_GT(by.at("map_resolution 1/8")->error.rmse, by.at("map_resolution 1")->error.rmse);
+
+  const Scene plain = test::head_on_sphere_scene();
+  EXPECT_TRUE(run_tradeoff(plain, o).empty());
+  bool said = false;
+  for (const std::string& note : tradeoff_notes(plain, o)) {
+    said = said || note.find("map_filter, map_resolution: skipped") != std::string::npos;
+  }
+  EXPECT_TRUE(said);
 }
 
 // The names tables, CSV files and the Quality window print are the knobs' only spelling.

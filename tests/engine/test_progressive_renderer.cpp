@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/renderer.h"
+#include "support/progressive_frames.h"
 #include "support/scene_fixtures.h"
 
 namespace gloss {
@@ -18,25 +19,16 @@ namespace {
 
 constexpr double kWaitMs = 60000;
 
-double max_abs_diff(const Image& a, const Image& b) {
-  if (a.width != b.width || a.height != b.height) return INFINITY;
-  double worst = 0;
-  for (std::size_t i = 0; i < a.pixels.size(); ++i)
-    for (int c = 0; c < 3; ++c)
-      worst = std::max(worst, std::abs(double(a.pixels[i][c]) - double(b.pixels[i][c])));
-  return worst;
-}
-
 // A fresh render with the frame's sample placement (adaptive sampling's refined pixels).
 void expect_matches_fresh_render(const RenderedFrame& frame, const Scene& scene) {
   RenderOptions options;
   options.placement = &frame.refined;
   const TermImages fresh = render(scene, options);
-  EXPECT_LE(max_abs_diff(frame.images.total, fresh.total), 1e-6);
-  EXPECT_LE(max_abs_diff(frame.images.emissive, fresh.emissive), 1e-6);
-  EXPECT_LE(max_abs_diff(frame.images.ambient, fresh.ambient), 1e-6);
-  EXPECT_LE(max_abs_diff(frame.images.diffuse, fresh.diffuse), 1e-6);
-  EXPECT_LE(max_abs_diff(frame.images.specular, fresh.specular), 1e-6);
+  EXPECT_LE(test::max_abs_diff(frame.images.total, fresh.total), 1e-6);
+  EXPECT_LE(test::max_abs_diff(frame.images.emissive, fresh.emissive), 1e-6);
+  EXPECT_LE(test::max_abs_diff(frame.images.ambient, fresh.ambient), 1e-6);
+  EXPECT_LE(test::max_abs_diff(frame.images.diffuse, fresh.diffuse), 1e-6);
+  EXPECT_LE(test::max_abs_diff(frame.images.specular, fresh.specular), 1e-6);
 }
 
 std::shared_ptr<const RenderedFrame> converge(ProgressiveRenderer& engine, const Scene& scene) {
@@ -105,7 +97,7 @@ TEST(ProgressiveRenderer, TotalOnlyFramesEachCarryTheirTotal) {
   for (const auto& [info_width, total_width] : sizes) EXPECT_EQ(total_width, info_width);
   RenderOptions fresh_options;
   fresh_options.placement = &frame->refined;
-  EXPECT_LE(max_abs_diff(frame->images.total, render(scene, fresh_options).total), 1e-6);
+  EXPECT_LE(test::max_abs_diff(frame->images.total, render(scene, fresh_options).total), 1e-6);
 }
 
 // The widths of the frames published for a camera change after a first convergence.
@@ -134,6 +126,29 @@ TEST(ProgressiveRenderer, AFastFullPassSkipsTheFinerPreviews) {
   EXPECT_EQ(widths_after_camera_change(0.0), (std::vector<int>{10, 20, 40, 80, 80}));
 }
 
+// An edit that keeps the primary hits: its first image is made without primary rays (none at
+// all for constants and exponents), and the converged one is the fresh render's, placement and
+// all (the rule runs again on the new centre image: test_progressive_convergence.cpp).
+void expect_cached_edit(ProgressiveRenderer& engine, const Scene& scene, ChangeClass cause) {
+  const auto frames = test::frames_of(engine, scene);
+  ASSERT_FALSE(frames.empty());
+  const FrameInfo& first = frames.front()->info;
+  EXPECT_EQ(first.cause, cause);
+  if (cause == ChangeClass::light) {
+    EXPECT_GT(first.rays, 0);
+    EXPECT_LT(first.rays, 80LL * 60);  // primary rays alone would be one per pixel
+  } else {
+    EXPECT_EQ(first.rays, 0);
+  }
+  EXPECT_EQ(frames.back()->info.spp, 4);
+  std::vector<std::uint32_t> placement;
+  RenderOptions options;
+  options.refined = &placement;
+  render(scene, options);
+  EXPECT_EQ(frames.back()->refined, placement);
+  expect_matches_fresh_render(*frames.back(), scene);
+}
+
 TEST(ProgressiveRenderer, MaterialConstantEditReshadesWithoutRaysAndMatchesFreshRender) {
   ProgressiveRenderer engine;
   Scene scene = test::sphere_on_floor_scene();
@@ -142,11 +157,7 @@ TEST(ProgressiveRenderer, MaterialConstantEditReshadesWithoutRaysAndMatchesFresh
   scene.materials[1].emission = {0.05f, 0.0f, 0.0f};
   scene.lights[0].specular = {0.3f, 0.6f, 0.9f};
   scene.ambient = glm::vec3(0.4f);
-  const auto frame = converge(engine, scene);
-  EXPECT_EQ(frame->info.cause, ChangeClass::shade);
-  EXPECT_EQ(frame->info.rays, 0);
-  EXPECT_EQ(frame->info.spp, 4);
-  expect_matches_fresh_render(*frame, scene);
+  expect_cached_edit(engine, scene, ChangeClass::shade);
 }
 
 TEST(ProgressiveRenderer, ShininessAndModelEditsReshadeWithoutRays) {
@@ -154,15 +165,9 @@ TEST(ProgressiveRenderer, ShininessAndModelEditsReshadeWithoutRays) {
   Scene scene = test::sphere_on_floor_scene();
   converge(engine, scene);
   scene.materials[0].shininess = 500;
-  auto frame = converge(engine, scene);
-  EXPECT_EQ(frame->info.cause, ChangeClass::exponent);
-  EXPECT_EQ(frame->info.rays, 0);
-  expect_matches_fresh_render(*frame, scene);
+  expect_cached_edit(engine, scene, ChangeClass::exponent);
   scene.render.model = ShadingModel::blinn_phong;
-  frame = converge(engine, scene);
-  EXPECT_EQ(frame->info.cause, ChangeClass::exponent);
-  EXPECT_EQ(frame->info.rays, 0);
-  expect_matches_fresh_render(*frame, scene);
+  expect_cached_edit(engine, scene, ChangeClass::exponent);
 }
 
 TEST(ProgressiveRenderer, LightMoveTracesOnlyShadowRays) {
@@ -170,12 +175,7 @@ TEST(ProgressiveRenderer, LightMoveTracesOnlyShadowRays) {
   Scene scene = test::sphere_on_floor_scene();
   converge(engine, scene);
   scene.lights[0].position = {-2, 3, 1};
-  const auto frame = converge(engine, scene);
-  EXPECT_EQ(frame->info.cause, ChangeClass::light);
-  const long long samples = 80LL * 60 * 4;
-  EXPECT_GT(frame->info.rays, 0);
-  EXPECT_LT(frame->info.rays, samples);  // primary rays alone would be `samples`
-  expect_matches_fresh_render(*frame, scene);
+  expect_cached_edit(engine, scene, ChangeClass::light);
 }
 
 TEST(ProgressiveRenderer, CameraEditRestartsFromTheCoarsestPass) {

@@ -10,6 +10,7 @@
 #include "base/process_memory.h"
 #include "editor/model/session/config_paths.h"
 #include "editor/model/view/camera_controller.h"
+#include "editor/model/view/light_gizmo.h"
 #include "editor/ui/panels/quality_parts.h"
 #include "editor/ui/script_player.h"
 #include "editor/ui/shortcuts.h"
@@ -38,11 +39,18 @@ void animate_light(App& app, double now_s) {
   light_index = std::clamp(light_index, 0, static_cast<int>(scene.lights.size()) - 1);
   // Steps longer than 0.1 s (a stalled frame) are cut so the light never jumps.
   const float dt = static_cast<float>(std::min(now_s - app.frame.last_frame_s, 0.1));
-  const PointLight light = scene.lights[light_index];  // a copy: commands replace the vector
-  const glm::vec3 centre(scene.camera.target.x, light.position.y, scene.camera.target.z);
-  app.commands.execute(
-      SetField{FieldPart::light, light_index, "position",
-               vec3_value(rotate_about_y(light.position, centre, app.view.orbit_speed * dt))});
+  const Light light = scene.lights[light_index];  // a copy: commands replace the vector
+  // A point light's position, a spot's position and direction, a directional light's direction
+  // turn about the vertical axis through the target (light_gizmo.h).
+  const Light turned = orbited_light(light, scene.camera.target, app.view.orbit_speed * dt);
+  if (turned.position != light.position) {
+    app.commands.execute(
+        SetField{FieldPart::light, light_index, "position", vec3_value(turned.position)});
+  }
+  if (turned.direction != light.direction) {
+    app.commands.execute(
+        SetField{FieldPart::light, light_index, "direction", vec3_value(turned.direction)});
+  }
 }
 
 void update_title(App& app) {

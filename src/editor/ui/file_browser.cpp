@@ -27,6 +27,10 @@ const char* title(BrowsePurpose purpose) {
       return "Export GLSL";
     case BrowsePurpose::export_gltf:
       return "Export glTF";
+    case BrowsePurpose::open_environment:
+      return "Environment map";
+    case BrowsePurpose::load_map:
+      return "Load map";
   }
   return "File";
 }
@@ -51,6 +55,10 @@ std::vector<std::string> extensions(BrowsePurpose purpose) {
       return {".frag", ".glsl"};
     case BrowsePurpose::export_gltf:
       return {".glb", ".gltf"};
+    case BrowsePurpose::open_environment:
+      return {".hdr", ".exr", ".png"};
+    case BrowsePurpose::load_map:
+      return {".png", ".jpg", ".jpeg", ".exr", ".hdr"};
   }
   return {};
 }
@@ -58,10 +66,13 @@ std::vector<std::string> extensions(BrowsePurpose purpose) {
 RecentKind recent_kind(BrowsePurpose purpose) {
   switch (purpose) {
     case BrowsePurpose::add_model:
+    case BrowsePurpose::open_environment:  // files added to a scene (the list is not extended)
       return RecentKind::model;
     case BrowsePurpose::load_materials:
     case BrowsePurpose::save_materials:
       return RecentKind::materials;
+    case BrowsePurpose::load_map:
+      return RecentKind::maps;
     case BrowsePurpose::open_scene:
     case BrowsePurpose::save_scene:
     case BrowsePurpose::export_glsl:

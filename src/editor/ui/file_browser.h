@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "editor/model/session/recent_files.h"
+#include "scene/texture_map.h"
 
 namespace gloss {
 
@@ -16,8 +17,10 @@ enum class BrowsePurpose {
   load_materials,
   save_scene,
   save_materials,
-  export_glsl,  // issue 12: the selected object's material as a fragment shader
-  export_gltf,  // issue 26: the scene as glTF 2.0 (.gltf, .glb)
+  export_glsl,       // issue 12: the selected object's material as a fragment shader
+  open_environment,  // an environment map (HDR, EXR, PNG)
+  load_map,          // an image into a map slot of a material (map_target says which)
+  export_gltf,       // issue 26: the scene as glTF 2.0 (.gltf, .glb)
 };
 // The recent list the panel offers for purpose (scenes for scenes, models for Add model, ...).
 RecentKind recent_kind(BrowsePurpose purpose);
@@ -45,6 +48,11 @@ struct FileBrowser {
   std::vector<Entry> entries;
   bool stale = true;        // entries need re-reading
   bool focus_name = false;  // put the keyboard in the path field on the next draw
+  // For load_map: the object whose material gets the image, and the slot.
+  struct MapTarget {
+    int object = 0;
+    MapSlot slot = MapSlot::diffuse;
+  } map_target;
 
   void show(BrowsePurpose what, const std::filesystem::path& start_folder,
             const std::string& suggested_name);

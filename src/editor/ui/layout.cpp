@@ -66,7 +66,7 @@ void draw_layout(App& app) {
   const float lights_h = std::floor(height * layout.lights_share);
   const float material_h = std::floor(height * layout.material_share);
   draw_material_panel(app.commands, app.selection, app.view, app.material_panel, app.library,
-                      ImVec2(left, top), ImVec2(side, material_h));
+                      app.session.browser, ImVec2(left, top), ImVec2(side, material_h));
   draw_reference_panel(app.commands, app.selection, app.view, app.reference_panel,
                        ImVec2(left, top + material_h), ImVec2(side, height - material_h));
   draw_lights_panel(app.commands, app.selection, app.view, app.session.browser,

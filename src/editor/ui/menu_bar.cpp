@@ -68,6 +68,7 @@ void file_menu(Commands& commands, const ViewSettings& view, Session& session, F
   if (ImGui::MenuItem("Screenshot", "Ctrl+S")) exports.start(view.screenshot_kind);
   if (ImGui::MenuItem("Screenshot: viewport render")) exports.start(ScreenshotKind::viewport);
   if (ImGui::MenuItem("Screenshot: term sheet")) exports.start(ScreenshotKind::terms);
+  if (ImGui::MenuItem("Screenshot: frame as shown")) exports.start(ScreenshotKind::shown);
   if (ImGui::MenuItem("Screenshot: whole window")) exports.start(ScreenshotKind::window);
   ImGui::Separator();
   if (ImGui::MenuItem("Quit", "Ctrl+Q")) files.request_quit();

@@ -50,6 +50,15 @@ std::string stats_text(App& app) {
                   app.viewport.shown_raster_b() ? "gl" : "cpu", app.viewport.max_difference());
     line += text;
   }
+  // New images on screen since the last `stats` and the delay of the edits they showed
+  // (image_cadence.h): what continuous edits (an animation, a drag) look like.
+  const ImageCadence::Window w = app.viewport.cadence().window(app.now_s());
+  std::snprintf(text, sizeof text,
+                " | window_s=%.2f new_images=%d image_gap_ms max=%.1f median=%.1f | "
+                "edit_delay_ms median=%.1f max=%.1f edits_shown=%d",
+                w.seconds, w.images, w.max_gap_ms, w.median_gap_ms, w.median_delay_ms,
+                w.max_delay_ms, w.delays);
+  line += text;
   return line;
 }
 
@@ -125,6 +134,7 @@ class ScriptPlayer::Host : public ScriptHost {
     std::printf("stats: %s\n", stats_text(m_app).c_str());
     std::fflush(stdout);
     m_app.frame.times = FrameTimes{};
+    m_app.viewport.restart_cadence(m_app.now_s());
     return LineResult::go_on();
   }
   LineResult memory() override {

@@ -131,11 +131,48 @@ void single_sample_light(const MaterialExponents& exponents, PowMode mode,
   }
 }
 
+bool build_centre_factors(const SampleCache& cache, const RenderContext& ctx, PixelFactors& out) {
+  const std::size_t pixels = cache.pixel_count();
+  const std::size_t lights = ctx.plan.slots();
+  size_pixel_factors(out, cache.width, cache.height, 1, lights);
+  const ShadingModel model = ctx.scene->render.model;
+  const PowMode pow_mode = ctx.scene->render.pow;
+  const MaterialExponents exponents = material_exponents(*ctx.scene);
+  const std::vector<std::int32_t> materials = object_materials(*ctx.scene);
+  const SamplePlane& plane = cache.planes.at(0);
+  const int alpha_channel = ctx.plan.textures.alpha_channel();
+  borrow_texels(plane, ctx.plan, out);  // one sample: the texel channels multiply the terms
+  // No grouping: the lane helpers the fused first pass uses, a run of kLanes pixels at a time.
+  return parallel_rows(cache.width, cache.height, ctx.cancel, [&](int y0, int y1) {
+    for (int y = y0; y < y1; ++y) {
+      for (int x = 0; x < cache.width; x += kLanes) {
+        const std::size_t idx = static_cast<std::size_t>(y) * cache.width + x;
+        const int m = std::min(kLanes, cache.width - x);
+        single_sample_coverage(materials, &plane.object[idx], m, &out.material[idx]);
+        ScaledExponent storage;
+        const ScaledExponent* scaled = scaled_exponents(
+            ctx, alpha_channel >= 0 ? plane.texels[alpha_channel].data() + idx : nullptr, m,
+            storage);
+        for (std::size_t li = 0; li < lights; ++li) {
+          const LightFactorPlane& f = plane.lights[li];
+          single_sample_light(exponents, pow_mode, &out.material[idx], &f.diffuse_weight[idx],
+                              &f.spec_weight[idx], f.cosine(model) + idx, m,
+                              &out.diffuse[li * pixels + idx], &out.specular[li * pixels + idx],
+                              scaled);
+        }
+      }
+    }
+  });
+}
+
 bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, PixelFactors& out) {
+  const int n = cache.samples();
+  if (n == 1) {  // adaptive sampling: the centres as one sample, then the refined pixels
+    return build_centre_factors(cache, ctx, out) && refine_pixel_factors(cache, ctx, out);
+  }
   const Scene& scene = *ctx.scene;
   const std::size_t pixels = cache.pixel_count();
   const std::size_t lights = ctx.plan.slots();
-  const int n = cache.samples();
   size_pixel_factors(out, cache.width, cache.height, n, lights);
   const int rows = band_rows(cache.width);
   std::vector<FactorExtras> extras(static_cast<std::size_t>((cache.height + rows - 1) / rows));
@@ -143,37 +180,9 @@ bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pix
   const ShadingModel model = scene.render.model;
   const PowMode pow_mode = scene.render.pow;
   const MaterialExponents exponents = material_exponents(scene);
-  const std::vector<std::int32_t> materials = object_materials(scene);
   constexpr int kRun = kLanes;  // pixels of a row handled together
 
-  // One sample: no grouping, the lane helpers the fused first pass uses, row by row.
   const int alpha_channel = ctx.plan.textures.alpha_channel();
-  auto single = [&](std::size_t idx, int m) {
-    const SamplePlane& plane = cache.planes[0];
-    single_sample_coverage(materials, &plane.object[idx], m, &out.material[idx]);
-    ScaledExponent storage;
-    const ScaledExponent* scaled = scaled_exponents(
-        ctx, alpha_channel >= 0 ? plane.texels[alpha_channel].data() + idx : nullptr, m, storage);
-    for (std::size_t li = 0; li < lights; ++li) {
-      const LightFactorPlane& f = plane.lights[li];
-      single_sample_light(exponents, pow_mode, &out.material[idx], &f.diffuse_weight[idx],
-                          &f.spec_weight[idx], f.cosine(model) + idx, m,
-                          &out.diffuse[li * pixels + idx], &out.specular[li * pixels + idx],
-                          scaled);
-    }
-  };
-
-  if (n == 1) {  // adaptive sampling: the centres as one sample, then the refined pixels
-    borrow_texels(cache.planes[0], ctx.plan, out);
-    const bool done = parallel_rows(cache.width, cache.height, ctx.cancel, [&](int y0, int y1) {
-      for (int y = y0; y < y1; ++y) {
-        for (int x = 0; x < cache.width; x += kRun) {
-          single(static_cast<std::size_t>(y) * cache.width + x, std::min(kRun, cache.width - x));
-        }
-      }
-    });
-    return done && refine_pixel_factors(cache, ctx, out);
-  }
   const bool textured = has_colour_texels(ctx.plan.textures);
   if (textured) {
     out.textured_stride = textured_stride(lights);

@@ -63,6 +63,11 @@ struct PixelFactors {
 // false when cancelled (the factors are then incomplete).
 bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, PixelFactors& out);
 
+// Adaptive sampling's centre image alone: the factors of plane 0 as one sample per pixel, with
+// no refined pixels (what build_pixel_factors makes of a cache without refined samples).
+// false when cancelled (the factors are then incomplete).
+bool build_centre_factors(const SampleCache& cache, const RenderContext& ctx, PixelFactors& out);
+
 // Adaptive sampling: turns out, the factors of the cache's centre samples (one sample per
 // pixel), into those of centres plus refined samples, summing only the refined pixels (none
 // when the cache has no refined samples). false when cancelled (out is then incomplete).

@@ -2,6 +2,7 @@
 // The samples of one pixel summed by the material they hit (pixel_factors.h): the first
 // material goes to the dense arrays, further ones (silhouettes) to a pass's extras. Shared by
 // uniform sampling's planes and adaptive sampling's refined pixels.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -45,7 +46,9 @@ class PixelGroups {
     while (g < m_groups.size() && m_groups[g].material != material) ++g;
     if (g == m_groups.size()) {
       m_groups.push_back({material, 0});
-      m_sums.resize(m_sums.size() + 2 * m_lights, 0.0f);
+      // At least one float, so that a hit returns non-null without lights (no slots: an
+      // ambient-only scene) and its textured record still gets its samples.
+      m_sums.resize(m_sums.size() + std::max<std::size_t>(2 * m_lights, 1), 0.0f);
       m_records.resize(m_records.size() + m_textured, 0.0f);
     }
     ++m_groups[g].count;

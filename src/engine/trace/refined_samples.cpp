@@ -1,7 +1,9 @@
 #include "engine/trace/refined_samples.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
+#include <utility>
 
 #include "engine/parallel_loops.h"
 #include "engine/trace/sample_packet.h"
@@ -100,6 +102,117 @@ bool trace_refined_samples(SampleCache& cache, const RenderContext& ctx,
     refined.spp = 0;
     refined.pixels.clear();
   }
+  return done;
+}
+
+namespace {
+// A run of entries [begin, end) of the new refined plane, whose samples are traced afresh
+// (pixels newly refined) or kept (pixels refined before).
+struct EntryRun {
+  std::size_t begin, end;
+  bool traced;
+};
+
+// Copies the samples of kept pixels from `from` into `to`: the hits, and the light factors when
+// they are current. copies[i] = (entry in from, entry in to) of a kept pixel's first sample.
+// false when cancelled.
+bool copy_kept_samples(const SamplePlane& from, SamplePlane& to,
+                       const std::vector<std::pair<std::size_t, std::size_t>>& copies,
+                       std::size_t spp, bool with_lights, const std::atomic<bool>* cancel) {
+  constexpr std::size_t kPixelsPerChunk = 256;
+  const int chunks = static_cast<int>((copies.size() + kPixelsPerChunk - 1) / kPixelsPerChunk);
+  return parallel_chunks(chunks, cancel, [&](int chunk) {
+    const std::size_t k0 = static_cast<std::size_t>(chunk) * kPixelsPerChunk;
+    const std::size_t k1 = std::min(copies.size(), k0 + kPixelsPerChunk);
+    for (std::size_t k = k0; k < k1; ++k) {
+      const std::size_t a = copies[k].first, b = copies[k].second;
+      auto copy = [&](const auto& src, auto& dst) { std::copy(&src[a], &src[a] + spp, &dst[b]); };
+      copy(from.object, to.object);
+      copy(from.prim, to.prim);
+      copy(from.t, to.t);
+      copy(from.u, to.u);
+      copy(from.v, to.v);
+      if (!with_lights) continue;
+      for (std::size_t li = 0; li < to.lights.size(); ++li) {
+        copy(from.lights[li].diffuse_weight, to.lights[li].diffuse_weight);
+        copy(from.lights[li].spec_weight, to.lights[li].spec_weight);
+        copy(from.lights[li].cos_phong, to.lights[li].cos_phong);
+        copy(from.lights[li].cos_blinn, to.lights[li].cos_blinn);
+      }
+    }
+  });
+}
+}  // namespace
+
+bool update_refined_samples(SampleCache& cache, const RenderContext& ctx,
+                            std::vector<std::uint32_t> pixels, bool lights_stale,
+                            SamplePlane& spare, RefinedUpdate* counts) {
+  RefinedSamples& old = cache.refined;
+  const auto spp = static_cast<std::size_t>(old.spp);
+  // Which entries of the new placement are kept and which traced: both lists ascend.
+  std::vector<std::pair<std::size_t, std::size_t>> copies;
+  std::vector<EntryRun> runs;
+  std::size_t j = 0;
+  for (std::size_t k = 0; k < pixels.size(); ++k) {
+    while (j < old.pixels.size() && old.pixels[j] < pixels[k]) ++j;
+    const bool kept = j < old.pixels.size() && old.pixels[j] == pixels[k];
+    if (kept) copies.emplace_back(j * spp, k * spp);
+    if (!runs.empty() && runs.back().traced == !kept) {
+      runs.back().end += spp;
+    } else {
+      runs.push_back({k * spp, (k + 1) * spp, !kept});
+    }
+  }
+  RefinedUpdate update;
+  update.kept = copies.size();
+  update.traced = pixels.size() - copies.size();
+  update.dropped = old.pixels.size() - copies.size();
+  if (counts != nullptr) *counts = update;
+
+  RefinedSamples next;
+  next.spp = old.spp;
+  next.pixels = std::move(pixels);
+  next.plane = std::move(spare);
+  size_plane(next.plane, next.entries(), ctx.plan.slots());
+  // The light factors of kept samples are copied when current (the same plan), else made anew.
+  const bool copy_lights = !lights_stale && old.plane.lights.size() == next.plane.lights.size();
+  const bool copied =
+      copy_kept_samples(old.plane, next.plane, copies, spp, copy_lights, ctx.cancel);
+  // Packets over the runs: traced entries get primary rays, kept ones with stale light factors
+  // shadow rays from their kept hits; a packet never spans two runs.
+  std::vector<EntryRun> packets;
+  for (const EntryRun& run : runs) {
+    if (!run.traced && copy_lights) continue;
+    for (std::size_t e = run.begin; e < run.end; e += kLanes) {
+      packets.push_back({e, std::min(e + kLanes, run.end), run.traced});
+    }
+  }
+  const SamplePattern pattern = make_sample_pattern(cache.seed, next.spp);
+  const int width = static_cast<int>(next.entries());
+  const int chunks = static_cast<int>((packets.size() + kPacketsPerChunk - 1) / kPacketsPerChunk);
+  // The directions read the new placement: cache.refined is swapped for the duration (and back
+  // on cancellation).
+  std::swap(cache.refined, next);
+  const bool done = copied && parallel_chunks(chunks, ctx.cancel, [&](int chunk) {
+                      long long rays = 0;
+                      const std::size_t p0 = static_cast<std::size_t>(chunk) * kPacketsPerChunk;
+                      const std::size_t p1 = std::min(packets.size(), p0 + kPacketsPerChunk);
+                      for (std::size_t p = p0; p < p1; ++p) {
+                        SamplePacket packet = entry_packet(packets[p].begin, packets[p].end);
+                        entry_directions(packet, cache, pattern);
+                        if (packets[p].traced) {
+                          rays += trace_primary(packet, cache, ctx);
+                          store_hits(packet, width, cache.refined.plane);
+                        } else {
+                          load_hits(packet, width, cache.refined.plane);
+                        }
+                        rays += shade_sample(packet, cache, ctx, cache.refined.plane, no_consumer);
+                      }
+                      finish_streaming_stores();
+                      if (ctx.rays != nullptr) ctx.rays->fetch_add(rays, std::memory_order_relaxed);
+                    });
+  if (!done) std::swap(cache.refined, next);  // the old placement, as it was
+  spare = std::move(next.plane);              // the memory of whichever plane is not in use
   return done;
 }
 

@@ -19,6 +19,22 @@ struct SamplePacket;
 bool trace_refined_samples(SampleCache& cache, const RenderContext& ctx,
                            std::vector<std::uint32_t> pixels, int spp);
 
+// What update_refined_samples did, in pixels.
+struct RefinedUpdate {
+  std::size_t kept = 0, traced = 0, dropped = 0;
+};
+
+// Moves cache.refined (spp > 0) to the placement `pixels` (region indices, ascending) at the same
+// spp: the samples of pixels refined before are kept (their hits, and their light factors unless
+// lights_stale, when they get shadow rays from the kept hits), newly refined pixels are traced,
+// and pixels no longer refined are dropped. The samples equal trace_refined_samples' for the
+// same placement. spare: a plane whose memory the new samples take; it receives the plane no
+// longer in use. false when cancelled (cache.refined is then as it was). counts, when given,
+// receives what was kept, traced and dropped.
+bool update_refined_samples(SampleCache& cache, const RenderContext& ctx,
+                            std::vector<std::uint32_t> pixels, bool lights_stale,
+                            SamplePlane& spare, RefinedUpdate* counts = nullptr);
+
 // Recomputes the refined samples' light factors (shadow rays included) for the context's scene
 // and plan from their cached hits. false when cancelled (the factors are then stale).
 bool recompute_refined_light_factors(SampleCache& cache, const RenderContext& ctx);

@@ -6,13 +6,16 @@
 // not flipped, bilinear weights swapped, the handedness ignored) must fail.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include "editor/gl/egl_context.h"
 #include "editor/gl/glsl_harness.h"
 #include "editor/gl/raster_renderer.h"
+#include "editor/model/export/glsl_export.h"
 #include "io/image/image_io.h"
 #include "io/scene/scene_loader.h"
 #include "reference/reference_renderer.h"
@@ -47,7 +50,7 @@ Scene mapped_scene(const std::string& which) {
        "material": "b"},
       {"type": "box", "min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5], "position": [-1.9, -0.5, 0.6],
        "rotate_y": 25, "material": "a"}],
-    "render": {"width": 180, "height": 135, "spp": 1, "shadows": false}})",
+    "render": {"width": 128, "height": 96, "spp": 1, "shadows": false}})",
                   "raster-maps-" + which + ".json");
   for (Material& m : scene.materials) {
     if (which == "diffuse" || which == "bilinear") {
@@ -158,6 +161,35 @@ TEST_F(RasterMaps, PlantedLookupErrorsFail) {
     const Figures f = agreement(planted, scene, std::string("planted: ") + to);
     EXPECT_LT(f.worst_share, 0.99) << "the planted error went unnoticed: " << to;
   }
+}
+
+// Export GLSL with maps (editor/model/export/glsl_export_maps.h): the shader of a material with
+// every kind of map compiles in GL 3.3 core, and the level files beside it hold the pyramid's
+// levels texel for texel (level 0's top-left texel is the map's first).
+TEST_F(RasterMaps, ExportedShaderWithMapsCompilesAndWritesItsLevels) {
+  for (const char* which : {"colours", "normal", "bump", "cutout"}) {
+    const Scene scene = mapped_scene(which);
+    const std::string source = export_glsl(scene, 0, "environment.pfm", "/tmp/x/shader.glsl");
+    EXPECT_NE(source.find("gloss_map_values"), std::string::npos) << which;
+    std::string log;
+    glDeleteShader(test::compile_shader(GL_FRAGMENT_SHADER, source, log));
+    EXPECT_TRUE(log.empty()) << which << ": " << log;
+  }
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("gloss-export-maps-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const Scene scene = mapped_scene("colours");
+  write_glsl_export((dir / "shader.glsl").string(), scene, 0);
+  const Texture& ramp = *scene.materials[0].map(MapSlot::diffuse).texture;
+  for (int l = 0; l < ramp.level_count(); ++l) {
+    const Image level =
+        read_pfm((dir / ("shader-diffuse_map-L" + std::to_string(l) + ".pfm")).string());
+    ASSERT_EQ(level.width, ramp.levels[static_cast<std::size_t>(l)].width);
+    ASSERT_EQ(level.height, ramp.levels[static_cast<std::size_t>(l)].height);
+    EXPECT_EQ(level.at(0, 0).x, ramp.levels[static_cast<std::size_t>(l)].texels[0]);
+  }
+  EXPECT_TRUE(std::filesystem::exists(dir / "shader-emission_map-L0.pfm"));
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -92,7 +92,8 @@ TEST(Script, BadLinesNameTheLine) {
   expect_error_on_line("set x shininess 5\n", 1, "object index");
   expect_error_on_line("model lambert\n", 1, "phong or blinn-phong");
   expect_error_on_line("quit\nquit now\n", 2, "unexpected 'now'");
-  expect_error_on_line("screenshot a.png movie\n", 1, "viewport, terms or window");
+  expect_error_on_line("screenshot a.png movie\n", 1, "viewport, terms, window or shown");
+  expect_error_on_line("screenshot a.jpg shown\n", 1, ".png or .pfm");
   expect_error_on_line("camera orbit 10\n", 1, "missing");
   expect_error_on_line("light 0 colour 1 1 1\n", 1, "unknown light field");
 }

@@ -1,13 +1,16 @@
 #include "editor/model/document/command.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 
+#include "base/assets.h"
 #include "base/error.h"
 #include "base/overloaded.h"
 #include "base/text_distance.h"
 #include "io/material/preset_table.h"
+#include "io/scene/environment_reader.h"
 #include "io/scene/material_maps.h"
 #include "io/scene/scene_loader.h"
 #include "scene/fields/validation.h"
@@ -100,6 +103,11 @@ void set_field(const SetField& c, Scene& scene) {
       return set_in(scene_fields(), c.part, scene, c);
     case FieldPart::reference:
       return set_in(reference_fields(), c.part, object_reference(scene, c.index), c);
+    case FieldPart::environment:
+      if (!scene.environment.present()) {
+        throw CommandError("the scene has no environment light (give it a map first)");
+      }
+      return set_in(environment_fields(), c.part, scene.environment, c);
   }
 }
 
@@ -126,6 +134,8 @@ std::string describe(const SetField& c) {
     case FieldPart::reference:
       return "reference " + describe(reference_fields(), c) + " (object " +
              std::to_string(c.index) + ")";
+    case FieldPart::environment:
+      return "environment " + describe(environment_fields(), c);
   }
   return c.key;
 }
@@ -151,6 +161,8 @@ bool continuous(const SetField& c) {
       return of(scene_fields());
     case FieldPart::reference:
       return of(reference_fields());
+    case FieldPart::environment:
+      return of(environment_fields());
   }
   return false;
 }
@@ -172,7 +184,43 @@ void set_tessellation(int level, Scene& scene) {
   if (!any) throw CommandError("the scene has no teapot to tessellate");
 }
 
+// The map of a SetEnvironment read into scene's environment (file: scene/environment.h's
+// `file`, relative to the scene's folder when the scene has one).
+void set_environment(const SetEnvironment& c, Scene& scene) {
+  namespace fs = std::filesystem;
+  if (c.file.empty()) {
+    scene.environment.map = nullptr;
+    scene.environment.file.clear();
+    return;
+  }
+  const fs::path scene_folder =
+      scene.path.empty() ? fs::path() : fs::path(scene.path).parent_path();
+  fs::path path(c.file);
+  std::error_code error;
+  const std::vector<std::string>& shipped = shipped_environments();
+  if (std::find(shipped.begin(), shipped.end(), c.file) != shipped.end()) {
+    path = asset_path("environments/" + c.file + ".exr");
+  } else if (!path.is_absolute() && !fs::exists(path, error) && !scene_folder.empty()) {
+    path = scene_folder / path;
+  }
+  try {
+    scene.environment.map = read_environment_map(path.string());
+  } catch (const InputError& e) {
+    throw CommandError(e.what());
+  }
+  const fs::path absolute = fs::absolute(path, error).lexically_normal();
+  const fs::path relative = scene_folder.empty()
+                                ? fs::path()
+                                : absolute.lexically_relative(fs::absolute(scene_folder, error));
+  scene.environment.file = relative.empty() ? absolute.string() : relative.generic_string();
+}
+
 }  // namespace
+
+const std::vector<std::string>& shipped_environments() {
+  static const std::vector<std::string> names = {"studio", "sunset", "city"};
+  return names;
+}
 
 std::string reference_text(const PhysicalReference& r) {
   char text[96];
@@ -199,6 +247,8 @@ const char* to_string(FieldPart part) {
       return "scene";
     case FieldPart::reference:
       return "reference";
+    case FieldPart::environment:
+      return "environment";
   }
   return "?";
 }
@@ -250,6 +300,7 @@ void apply_command(const Command& command, Scene& scene) {
             object_material(next, c.object) = c.material;
             if (c.model) next.render.model = *c.model;
           },
+          [&](const SetEnvironment& c) { set_environment(c, next); },
       },
       command);
   try {
@@ -293,6 +344,10 @@ std::string command_label(const Command& command) {
                    reference_text(*c.reference);
           },
           [](const ApplyFit& c) { return c.label + " (object " + std::to_string(c.object) + ")"; },
+          [](const SetEnvironment& c) {
+            return c.file.empty() ? std::string("remove the environment")
+                                  : "set the environment to " + c.file;
+          },
       },
       command);
 }

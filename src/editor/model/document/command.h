@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "editor/model/document/document.h"
 #include "scene/fields/fields.h"
@@ -20,12 +21,13 @@ class CommandError : public std::runtime_error {
 
 // The struct a field edit targets, and how SetField::index names it.
 enum class FieldPart {
-  material,   // the material object `index` uses (shared materials change on every user)
-  light,      // light `index`
-  render,     // the render settings
-  camera,     // the camera
-  scene,      // the scene's own fields: background, ambient
-  reference,  // the physical reference of the material object `index` uses (it must have one)
+  material,     // the material object `index` uses (shared materials change on every user)
+  light,        // light `index`
+  render,       // the render settings
+  camera,       // the camera
+  scene,        // the scene's own fields: background, ambient
+  reference,    // the physical reference of the material object `index` uses (it must have one)
+  environment,  // the environment light's numbers (intensity, rotation, as_background)
 };
 const char* to_string(FieldPart part);
 
@@ -77,6 +79,12 @@ struct RemoveLight {
 struct SetCamera {
   Camera camera;
 };
+// Gives the scene the environment map `file` (read when the command applies: a path, relative to
+// the working folder or else to the scene's folder, or a shipped map's name such as "studio"),
+// keeping intensity, rotation and background; an empty file removes the environment light.
+struct SetEnvironment {
+  std::string file;
+};
 // Orbits the current camera about its target (camera.h's orbit_camera), degrees.
 struct OrbitCamera {
   float yaw_deg = 0.0f;
@@ -93,9 +101,9 @@ struct ReplaceScene {
   std::string label;
 };
 
-using Command =
-    std::variant<SetField, ApplyPreset, SetMaterial, SetModel, AddLight, RemoveLight, SetCamera,
-                 OrbitCamera, SetTessellation, ReplaceScene, SetReference, ApplyFit>;
+using Command = std::variant<SetField, ApplyPreset, SetMaterial, SetModel, AddLight, RemoveLight,
+                             SetCamera, OrbitCamera, SetTessellation, ReplaceScene, SetReference,
+                             ApplyFit, SetEnvironment>;
 
 // Applies command to scene and validates the result (scene/fields/validation.h, the document's one
 // validator). Throws CommandError naming the bad argument or field; scene is then unchanged.
@@ -112,6 +120,9 @@ std::optional<Command> field_command(FieldPart part, int index, const FieldTable
   }
   return std::nullopt;
 }
+
+// The shipped environment maps (assets/environments/NAME.exr), by name: studio, sunset, city.
+const std::vector<std::string>& shipped_environments();
 
 // A reference as labels and scripts write it: "gold r 0.2", "dielectric 0.6 0.1 0.1 r 0.5".
 std::string reference_text(const PhysicalReference& reference);

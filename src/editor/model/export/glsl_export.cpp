@@ -10,6 +10,7 @@
 #include "base/atomic_file.h"
 #include "base/printable_text.h"
 #include "editor/model/export/environment_atlas.h"
+#include "editor/model/export/glsl_export_maps.h"
 #include "io/image/image_io.h"
 #include "shading/light_source.h"
 
@@ -106,7 +107,8 @@ std::string environment_atlas_name(const std::string& shader_path) {
   return p.stem().string() + "-environment.pfm";
 }
 
-std::string export_glsl(const Scene& scene, int material, const std::string& atlas) {
+std::string export_glsl(const Scene& scene, int material, const std::string& atlas,
+                        const std::string& shader_path) {
   if (material < 0 || material >= static_cast<int>(scene.materials.size())) {
     throw std::out_of_range("no material " + std::to_string(material));
   }
@@ -193,12 +195,18 @@ std::string export_glsl(const Scene& scene, int material, const std::string& atl
            : "// The scene has shadows off (render.shadows).\n";
   s += "float gloss_visibility(int light, vec3 p, vec3 n_g) {\n  return 1.0;\n}\n\n";
   s += environment_part(scene, atlas);
+  s += map_declarations(m, scene.render.map_filter, shader_path);
   s += "// ---- shaders/phong_contract.glsl ----\n";
   s += kPhongContractGlsl;
   s += "// ---- end of shaders/phong_contract.glsl ----\n\n";
+  s += map_lookup_part(m);
   s += "void main() {\n";
-  s += "  vec3 n = normalize(gloss_normal);\n";
-  s += "  GlossTerms t = gloss_shade(gloss_position, n, n, gloss_eye);\n";
+  if (m.textured()) {
+    s += map_main_body();
+  } else {
+    s += "  vec3 n = normalize(gloss_normal);\n";
+    s += "  GlossTerms t = gloss_shade(gloss_position, n, n, gloss_eye);\n";
+  }
   s += "  gloss_total = vec4(t.total, 1.0);\n";
   s += "  gloss_emissive = vec4(t.emissive, 1.0);\n";
   s += "  gloss_ambient = vec4(t.ambient, 1.0);\n";
@@ -217,7 +225,8 @@ void write_glsl_export(const std::string& path, const Scene& scene, int material
         (std::filesystem::path(path).parent_path() / atlas).string(),
         make_environment_atlas(*prefiltered_environment(scene.environment.map, settings)).image);
   }
-  write_text_atomically(path, export_glsl(scene, material, atlas));
+  write_map_levels(path, scene.materials.at(static_cast<std::size_t>(material)));
+  write_text_atomically(path, export_glsl(scene, material, atlas, path));
 }
 
 }  // namespace gloss

@@ -17,15 +17,19 @@ namespace gloss {
 // one line to change for GLSL ES 3.00 / WebGL 2). Throws std::out_of_range for a bad index.
 // With an environment, the shader carries its fast path (shaders/environment.glsl) and reads
 // the prefiltered levels from a sampler the host fills from the file `atlas`.
+// With maps, it carries their samplers, settings and lookups (glsl_export_maps.h), naming the
+// level files written beside shader_path.
 std::string export_glsl(const Scene& scene, int material,
-                        const std::string& atlas = "environment.pfm");
+                        const std::string& atlas = "environment.pfm",
+                        const std::string& shader_path = "material.glsl");
 
 // The atlas file written beside a shader exported to shader_path: STEM-environment.pfm.
 std::string environment_atlas_name(const std::string& shader_path);
 
 // Writes export_glsl(scene, material) to path atomically (base/atomic_file.h) and, with an
-// environment, its levels to environment_atlas_name(path) beside it (PFM, linear float); throws
-// RuntimeFailure when a file cannot be written.
+// environment, its levels to environment_atlas_name(path) beside it (PFM, linear float), and the
+// levels of the material's maps (glsl_export_maps.h); throws RuntimeFailure when a file cannot
+// be written.
 void write_glsl_export(const std::string& path, const Scene& scene, int material);
 
 // The contract source, shaders/phong_contract.glsl, the environment's fast path,

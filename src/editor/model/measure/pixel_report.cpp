@@ -40,6 +40,23 @@ std::string pixel_report(const PixelBreakdown& b) {
   add_rgb(out, "ambient", b.ambient);
   add_rgb(out, "diffuse", b.diffuse);
   add_rgb(out, "specular", b.specular);
+  if (b.textured) {  // the maps: the hit's (u, v), footprints, each map's level and texel
+    char line[200];
+    std::snprintf(line, sizeof line, "uv0 %.9g %.9g\nuv1 %.9g %.9g\n", b.uv[0].x, b.uv[0].y,
+                  b.uv[1].x, b.uv[1].y);
+    out += line;
+    add_value(out, "footprint0", b.footprint[0]);
+    add_value(out, "footprint1", b.footprint[1]);
+    for (int s = 0; s < kMapSlots; ++s) {
+      const MapReading& m = b.maps[s];
+      if (!m.present) continue;
+      const std::string name = std::string("map.") + to_string(static_cast<MapSlot>(s));
+      add_value(out, name + ".level", m.level);
+      std::snprintf(line, sizeof line, "%s.texel %.9g %.9g %.9g %.9g\n", name.c_str(), m.texel.x,
+                    m.texel.y, m.texel.z, m.texel.w);
+      out += line;
+    }
+  }
   if (b.environment.present) {
     // Exact integrals with their error bounds (shadows off) or estimates with their standard
     // errors (shadows on: then also the terms without shadows and the visible share).

@@ -14,6 +14,12 @@ namespace gloss {
 
 namespace {
 
+// The map knobs have rows only for a scene with maps (tradeoff.h).
+bool has_maps(const Scene& scene) {
+  return std::any_of(scene.materials.begin(), scene.materials.end(),
+                     [](const Material& m) { return m.textured(); });
+}
+
 bool has_teapot(const Scene& scene) {
   return std::any_of(scene.objects.begin(), scene.objects.end(),
                      [](const Object& o) { return o.type == ObjectType::teapot; });
@@ -66,7 +72,10 @@ void QualityMeasurement::start(const Scene& scene, TradeoffOptions options) {
     const bool chosen =
         options.knobs.empty() ||
         std::find(options.knobs.begin(), options.knobs.end(), knob) != options.knobs.end();
-    if (chosen && (knob != Knob::tessellation || has_teapot(scene))) m_knobs.push_back(knob);
+    const bool maps = knob == Knob::map_filter || knob == Knob::map_resolution;
+    if (chosen && (knob != Knob::tessellation || has_teapot(scene)) && (!maps || has_maps(scene))) {
+      m_knobs.push_back(knob);
+    }
   }
   m_rows.clear();
   m_incoming.clear();

@@ -36,6 +36,8 @@ class HeadlessHost : public ScriptHost {
   LineResult screenshot(const ScreenshotAction& a, const std::string& where) override {
     if (a.kind == ScreenshotKind::window)
       return failed(where, "a window screenshot needs a display");
+    if (a.kind == ScreenshotKind::shown)
+      return failed(where, "a shown screenshot needs a display (no viewport shows a frame)");
     try {
       const Scene& scene = m_layer.scene();
       // Without a window there is no GL: every renderer choice exports the ray tracer's image,

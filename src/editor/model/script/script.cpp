@@ -6,6 +6,7 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "editor/model/export/shown_image.h"
 #include "editor/model/script/script_tokens.h"
 
 namespace gloss {
@@ -147,6 +148,20 @@ ScriptAction parse_light(Tokens& t) {
   }
   const int light = t.index("light index");
   return parse_field(t, light_fields(), FieldPart::light, light, t.word("light field"));
+}
+
+// `environment FILE|NAME|off`, `environment rotation DEG`, `environment intensity X`,
+// `environment background on|off` (or any key of the environment's table).
+ScriptAction parse_environment(Tokens& t) {
+  const std::string& what = t.word("environment file, name, off or field");
+  if (what == "off" || what == "none") return Command(SetEnvironment{});
+  if (what == "background") {
+    return parse_field(t, environment_fields(), FieldPart::environment, 0, "as_background");
+  }
+  if (find_field(environment_fields(), what) != nullptr) {
+    return parse_field(t, environment_fields(), FieldPart::environment, 0, what);
+  }
+  return Command(SetEnvironment{what});
 }
 
 // Older spellings of render fields, kept working: `shadows on`, `energy on`, `spp 16`,
@@ -324,6 +339,7 @@ ScriptAction parse_line(Tokens& t) {
     return Command(c);
   }
   if (verb == "light") return parse_light(t);
+  if (verb == "environment") return parse_environment(t);
   if (verb == "tessellation") {  // every teapot's segments per patch side; the command checks it
     return Command(SetTessellation{static_cast<int>(t.whole("segments per patch side"))});
   }
@@ -351,9 +367,15 @@ ScriptAction parse_line(Tokens& t) {
     if (!t.done()) {
       const std::string& kind = t.word("kind");
       if (!parse_screenshot_kind(kind, s.kind)) {
-        throw std::runtime_error("screenshot kind must be viewport, terms or window, got '" + kind +
-                                 "'");
+        throw std::runtime_error("screenshot kind must be viewport, terms, window or shown, got '" +
+                                 kind + "'");
       }
+    }
+    if (s.kind == ScreenshotKind::shown && !shown_path_ok(s.path)) {
+      throw std::runtime_error(
+          "a shown screenshot is written as .png or .pfm (or into a folder), "
+          "got '" +
+          s.path + "'");
     }
     return s;
   }

@@ -42,12 +42,24 @@ const char* recent_file_name(RecentKind kind) {
       return "recent-models.txt";
     case RecentKind::materials:
       return "recent-materials.txt";
+    case RecentKind::maps:
+      return "recent-maps.txt";
   }
   return "recent.txt";
 }
 
 RecentFiles& RecentLists::of(RecentKind kind) {
-  return kind == RecentKind::model ? models : kind == RecentKind::materials ? materials : scenes;
+  switch (kind) {
+    case RecentKind::model:
+      return models;
+    case RecentKind::materials:
+      return materials;
+    case RecentKind::maps:
+      return maps;
+    case RecentKind::scene:
+      break;
+  }
+  return scenes;
 }
 
 const RecentFiles& RecentLists::of(RecentKind kind) const {
@@ -56,7 +68,8 @@ const RecentFiles& RecentLists::of(RecentKind kind) const {
 
 RecentLists load_recent_lists(const std::filesystem::path& folder) {
   RecentLists lists;
-  for (RecentKind kind : {RecentKind::scene, RecentKind::model, RecentKind::materials}) {
+  for (RecentKind kind :
+       {RecentKind::scene, RecentKind::model, RecentKind::materials, RecentKind::maps}) {
     lists.of(kind) = load_recent_files(folder / recent_file_name(kind));
   }
   return lists;

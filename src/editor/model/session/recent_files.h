@@ -18,13 +18,13 @@ struct RecentFiles {
 };
 
 // What was opened: each kind has its own list and file in the config folder.
-enum class RecentKind { scene, model, materials };
+enum class RecentKind { scene, model, materials, maps };
 // "recent.txt" (scenes, the name the list had before models had their own), "recent-models.txt",
-// "recent-materials.txt".
+// "recent-materials.txt", "recent-maps.txt" (images loaded into a material's map slots).
 const char* recent_file_name(RecentKind kind);
 
 struct RecentLists {
-  RecentFiles scenes, models, materials;
+  RecentFiles scenes, models, materials, maps;
   RecentFiles& of(RecentKind kind);
   const RecentFiles& of(RecentKind kind) const;
 };

@@ -75,13 +75,15 @@ const char* to_string(ScreenshotKind kind) {
       return "terms";
     case ScreenshotKind::window:
       return "window";
+    case ScreenshotKind::shown:
+      return "shown";
   }
   return "?";
 }
 
 bool parse_screenshot_kind(const std::string& name, ScreenshotKind& kind) {
   const ScreenshotKind all[] = {ScreenshotKind::viewport, ScreenshotKind::terms,
-                                ScreenshotKind::window};
+                                ScreenshotKind::window, ScreenshotKind::shown};
   return parse_name(name, all, kind);
 }
 

@@ -29,7 +29,9 @@ bool parse_term_view(const std::string& name, TermView& term);
 // (docs/spec/physical-reference.md), both at 1 spp.
 enum class AbSource { models, snapshot, cpu_gl, pixel_vertex, reference };
 
-enum class ScreenshotKind { viewport, terms, window };
+// viewport and terms render the document again at its size; window reads the window back; shown
+// writes the frame the viewport shows as it is (shown_image.h).
+enum class ScreenshotKind { viewport, terms, window, shown };
 const char* to_string(ScreenshotKind kind);
 bool parse_screenshot_kind(const std::string& name, ScreenshotKind& kind);
 

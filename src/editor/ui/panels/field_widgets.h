@@ -65,8 +65,7 @@ bool field_widget(const Field<S>& field, S& value, bool link_channels = false,
       break;
     }
     case FieldKind::map:  // the material panel's map slots draw these (map_slots.cpp)
-      ImGui::Text("%s: %s", label, v.map.named() ? v.map.file.c_str() : "none");
-      break;
+      return false;
     case FieldKind::choice: {
       int index = static_cast<int>(v.x);
       ImGui::TextUnformatted(label);

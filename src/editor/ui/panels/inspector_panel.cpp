@@ -129,6 +129,20 @@ void draw_table(const PixelBreakdown& a, const PixelBreakdown* b, const std::str
   rgb_row("ambient", a.ambient, b != nullptr ? &b->ambient : nullptr);
   rgb_row("diffuse", a.diffuse, b != nullptr ? &b->diffuse : nullptr);
   rgb_row("specular", a.specular, b != nullptr ? &b->specular : nullptr);
+  if (a.textured) {  // the maps: (u, v), and per map the level read and the texel it gave
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+    ImGui::TextDisabled("maps  (u, v) %.5g, %.5g", a.uv[0].x, a.uv[0].y);
+    for (int s = 0; s < kMapSlots; ++s) {
+      const MapReading& m = a.maps[s];
+      if (!m.present) continue;
+      const std::string name = std::string("  ") + to_string(static_cast<MapSlot>(s));
+      const MapReading* mb = b != nullptr && b->textured ? &b->maps[s] : nullptr;
+      const std::string bt = mb != nullptr ? rgb_text(glm::dvec3(mb->texel)) : std::string();
+      row(name.c_str(), rgb_text(glm::dvec3(m.texel)), mb != nullptr ? &bt : nullptr);
+      value_row("    level", m.level, mb != nullptr ? &mb->level : nullptr);
+    }
+  }
   for (std::size_t i = 0; i < a.lights.size(); ++i) {
     const LightBreakdown& l = a.lights[i];
     const LightBreakdown* lb = b != nullptr && i < b->lights.size() ? &b->lights[i] : nullptr;

@@ -1,7 +1,9 @@
-// The Lights & Scene panel: point lights (add, remove, position, colours, attenuation, the
-// orbit-light animation), the scene's ambient, background and shadows, and opening files.
+// The Lights & Scene panel: lights of every type (add, add a headlight, remove, the fields the
+// type uses, the orbit-light animation), the environment light (a shipped map or a file,
+// intensity, rotation, background), the scene's ambient, background and shadows, opening files.
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 
 #include <imgui.h>
@@ -33,9 +35,23 @@ void draw_lights(Commands& commands, Selection& selection, ViewSettings& view) {
       return;
     }
   }
+  ImGui::SameLine();
+  if (ImGui::Button("Add headlight")) {
+    // A directional light that follows the camera, straight ahead: VRML's headlight.
+    Light light;
+    light.type = LightType::directional;
+    light.direction = glm::vec3(0.0f, 0.0f, -1.0f);
+    light.follow_camera = true;
+    if (commands.execute(AddLight{light})) {
+      selection.light = count;
+      return;
+    }
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("a directional light from the eye that turns with the camera");
+  }
   if (count == 0) {
-    ImGui::SameLine();
-    ImGui::TextDisabled("no lights: only ambient and emission show");
+    ImGui::TextDisabled("no lights: only ambient, emission and the environment show");
     return;
   }
   selection.light = std::clamp(selection.light, 0, count - 1);
@@ -48,19 +64,33 @@ void draw_lights(Commands& commands, Selection& selection, ViewSettings& view) {
                     ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * std::min(count, 4) + 8.0f),
                     true);
   for (int i = 0; i < count; ++i) {
-    const glm::vec3& p = scene.lights[i].position;
-    char label[96];
-    std::snprintf(label, sizeof label, "light %d at (%.2f, %.2f, %.2f)", i, p.x, p.y, p.z);
+    const Light& l = scene.lights[i];
+    const glm::vec3& p = l.type == LightType::directional ? l.direction : l.position;
+    char label[112];
+    std::snprintf(label, sizeof label, "%s %d %s (%.2f, %.2f, %.2f)%s", to_string(l.type), i,
+                  l.type == LightType::directional ? "towards" : "at", p.x, p.y, p.z,
+                  l.type == LightType::directional && l.follow_camera ? " headlight" : "");
     if (ImGui::Selectable(label, i == selection.light)) selection.light = i;
   }
   ImGui::EndChild();
 
   const PointLight light = scene.lights[selection.light];  // a copy: commands replace the vector
   PointLight edited = light;
-  for (const Field<PointLight>& field : light_fields()) field_widget(field, edited);
+  // The fields the light's type uses (the others are kept, not shown).
+  for (const Field<PointLight>& field : light_fields()) {
+    if (field.applies_to(light)) field_widget(field, edited);
+  }
   if (auto command =
           field_command(FieldPart::light, selection.light, light_fields(), light, edited)) {
     commands.execute(*command);
+  }
+  if (light.type != LightType::point) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("%s",
+                       light.type == LightType::spot
+                           ? "viewport: drag the marker to move it, the cone's handle to aim it"
+                           : "viewport: drag the arrow's handle to turn it");
+    ImGui::PopStyleColor();
   }
   ImGui::Checkbox("orbit light", &view.orbit_light);
   ImGui::SameLine();
@@ -87,6 +117,44 @@ void draw_scene(Commands& commands, const ViewSettings& view, FileBrowser& brows
   if (ImGui::Button("Add model...")) browser.show(BrowsePurpose::add_model, folder, "");
 }
 
+// The environment light: a shipped map or a file, none; its table's fields (intensity,
+// rotation, background). Ctrl+drag in the viewport turns it too.
+void draw_environment(Commands& commands, const ViewSettings& view, FileBrowser& browser) {
+  const Scene& scene = commands.scene();
+  const Environment& environment = scene.environment;
+  const std::string shown = environment.present()
+                                ? std::filesystem::path(environment.file).filename().string()
+                                : std::string("none");
+  if (ImGui::BeginCombo("map", shown.c_str())) {
+    if (ImGui::Selectable("none", !environment.present())) commands.execute(SetEnvironment{});
+    for (const std::string& name : shipped_environments()) {
+      const bool current =
+          environment.present() && std::filesystem::path(environment.file).stem().string() == name;
+      if (ImGui::Selectable((name + " (shipped)").c_str(), current)) {
+        commands.execute(SetEnvironment{name});
+      }
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("File...")) {
+    browser.show(BrowsePurpose::open_environment, scene_folder(scene.path, view.screenshot_dir),
+                 "");
+  }
+  if (!environment.present()) {
+    ImGui::TextDisabled("no environment: HDR, EXR or PNG, equirectangular");
+    return;
+  }
+  Environment edited = environment;
+  for (const Field<Environment>& field : environment_fields()) field_widget(field, edited);
+  if (auto command =
+          field_command(FieldPart::environment, 0, environment_fields(), environment, edited)) {
+    commands.execute(*command);
+  }
+  ImGui::TextDisabled("%d x %d; Ctrl+drag the image to turn it", environment.map->radiance.width,
+                      environment.map->radiance.height);
+}
+
 }  // namespace
 
 void draw_lights_panel(Commands& commands, Selection& selection, ViewSettings& view,
@@ -100,8 +168,10 @@ void draw_lights_panel(Commands& commands, Selection& selection, ViewSettings& v
     return;
   }
   ImGui::PushItemWidth(-110.0f);
-  section_title("Point lights");
+  section_title("Lights");
   draw_lights(commands, selection, view);
+  section_title("Environment");
+  draw_environment(commands, view, browser);
   section_title("Scene");
   draw_scene(commands, view, browser);
   ImGui::PopItemWidth();

@@ -8,7 +8,9 @@
 #include <imgui.h>
 
 #include "editor/model/document/preset_status.h"
+#include "editor/ui/file_browser.h"
 #include "editor/ui/panels/field_widgets.h"
+#include "editor/ui/panels/map_slots.h"
 #include "editor/ui/panels/panel_state.h"
 #include "editor/ui/panels/panel_widgets.h"
 #include "editor/ui/panels/panels.h"
@@ -103,8 +105,8 @@ void draw_library(Commands& commands, const MaterialLibrary& library, int object
 }  // namespace
 
 void draw_material_panel(Commands& commands, Selection& selection, ViewSettings& view,
-                         MaterialPanelState& state, const MaterialLibrary& library, ImVec2 pos,
-                         ImVec2 size) {
+                         MaterialPanelState& state, const MaterialLibrary& library,
+                         FileBrowser& browser, ImVec2 pos, ImVec2 size) {
   ImGui::SetNextWindowPos(pos);
   ImGui::SetNextWindowSize(size);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
@@ -145,6 +147,8 @@ void draw_material_panel(Commands& commands, Selection& selection, ViewSettings&
   // The exponent's label names the model it is the exponent of.
   const bool blinn = scene.render.model == ShadingModel::blinn_phong;
   for (const Field<Material>& field : material_fields()) {
+    // Maps have their rows below (map_slots.h); a map's scale shows once there is that map.
+    if (field.kind == FieldKind::map || !field.applies_to(edited)) continue;
     const bool exponent = std::string(field.key) == "shininess";
     field_widget(
         field, edited, state.link_channels,
@@ -161,6 +165,8 @@ void draw_material_panel(Commands& commands, Selection& selection, ViewSettings&
           field_command(FieldPart::material, object, material_fields(), material, edited)) {
     commands.execute(*command);
   }
+  draw_map_slots(commands, browser, state.thumbnails, object, material,
+                 scene_folder(scene.path, view.screenshot_dir).string());
 
   section_title("Presets");
   if (!material.preset.empty()) {

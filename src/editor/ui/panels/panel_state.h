@@ -12,6 +12,7 @@
 #include "editor/model/document/reference_fit.h"
 #include "editor/model/measure/quality_measurement.h"
 #include "editor/model/view/view_settings.h"
+#include "editor/ui/panels/map_thumbnails.h"
 #include "reference/pixel_inspection.h"
 
 namespace gloss {
@@ -19,6 +20,7 @@ namespace gloss {
 // The Material panel.
 struct MaterialPanelState {
   bool link_channels = false;  // colour editors move R, G, B together
+  MapThumbnails thumbnails;    // the map slots' previews
 };
 
 // The Reference panel: a fit in flight on a worker (a fraction of a second; the UI keeps drawing)

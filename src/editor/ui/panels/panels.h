@@ -36,9 +36,10 @@ struct Session;
 void draw_menu_bar(Commands& commands, ViewSettings& view, std::optional<Snapshot>& snapshot,
                    Session& session, FileActions& files, Exports& exports, OpenWindows& windows);
 // The Material panel: the selected object's material, the presets, the shading model.
+// Loading a map opens the file browser.
 void draw_material_panel(Commands& commands, Selection& selection, ViewSettings& view,
-                         MaterialPanelState& state, const MaterialLibrary& library, ImVec2 pos,
-                         ImVec2 size);
+                         MaterialPanelState& state, const MaterialLibrary& library,
+                         FileBrowser& browser, ImVec2 pos, ImVec2 size);
 // The Reference panel: the selected object's material against a physical reference, the
 // material | reference A/B view, Fit Phong / Fit Blinn-Phong (on a worker, applied in one step).
 void draw_reference_panel(Commands& commands, Selection& selection, ViewSettings& view,

@@ -244,6 +244,11 @@ void draw_screenshot(ViewSettings& view, Exports& exports) {
   ImGui::RadioButton("term sheet", &kind, static_cast<int>(ScreenshotKind::terms));
   ImGui::SameLine();
   ImGui::RadioButton("window", &kind, static_cast<int>(ScreenshotKind::window));
+  ImGui::SameLine();
+  ImGui::RadioButton("as shown", &kind, static_cast<int>(ScreenshotKind::shown));
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("the frame on screen as it is, at its own size (not rendered again)");
+  }
   view.screenshot_kind = static_cast<ScreenshotKind>(kind);
   ImGui::InputText("folder", &view.screenshot_dir);
   if (ImGui::Button("Save screenshot (Ctrl+S)")) {

@@ -7,6 +7,7 @@
 #include <glad/gl.h>
 
 #include "editor/model/export/export_image.h"
+#include "editor/model/export/shown_image.h"
 #include "editor/ui/parts/commands.h"
 #include "editor/ui/shortcuts.h"
 #include "editor/ui/viewport/viewport.h"
@@ -17,6 +18,20 @@ void Exports::start(ScreenshotKind kind, const std::string& path, bool from_scri
   if (kind == ScreenshotKind::window) {
     m_capture = {true, path, from_script, from_script ? 0 : 1};
     if (!from_script) close_menus();
+    return;
+  }
+  if (kind == ScreenshotKind::shown) {
+    // The frame on screen as it is, written on a worker (shown_image.h).
+    PendingExport job;
+    job.from_script = from_script;
+    job.path = std::async(std::launch::async,
+                          [frame = m_viewport.shown_images(), scene = m_commands.scene(),
+                           view = m_view, raster = m_viewport.shown_raster_a(), path] {
+                            if (frame == nullptr) throw std::runtime_error("no frame is shown yet");
+                            return write_shown(path.empty() ? view.screenshot_dir + "/" : path,
+                                               *frame, scene, view, raster);
+                          });
+    m_pending.push_back(std::move(job));
     return;
   }
   const Scene scene = m_commands.scene();

@@ -19,6 +19,7 @@
 #include "editor/ui/parts/selection.h"
 #include "editor/ui/parts/session.h"
 #include "io/model/model_loader.h"
+#include "io/scene/material_maps.h"
 #include "io/scene/scene_loader.h"
 
 namespace gloss {
@@ -175,6 +176,25 @@ void FileActions::export_gltf_scene(const std::string& path) {
   m_commands.info(write_gltf_file(m_document.scene(), path, false));
 }
 
+void FileActions::load_map(int object, MapSlot slot, const std::string& path) {
+  const Scene& scene = m_document.scene();
+  if (object < 0 || object >= static_cast<int>(scene.objects.size())) {
+    throw std::runtime_error("select an object to load a map into its material");
+  }
+  const Material& material = scene.materials.at(
+      static_cast<std::size_t>(scene.objects[static_cast<std::size_t>(object)].material));
+  TextureMap map = material.map(slot);  // its settings stay
+  map.file = std::filesystem::absolute(path).lexically_normal().string();
+  map.texture = nullptr;
+  read_map(map, slot, MapReadContext{});                  // throws InputError naming the file
+  const std::string label = object_label(scene, object);  // before the scene changes
+  if (!m_commands.execute(SetField{FieldPart::material, object, map_key(slot), map_value(map)})) {
+    throw std::runtime_error("the map could not be set (see the notices)");
+  }
+  remember_recent(RecentKind::maps, path);
+  m_commands.info("loaded " + path + " as the " + to_string(slot) + " map of " + label);
+}
+
 void FileActions::browser_action(const std::string& path) {
   FileBrowser& browser = m_session.browser;
   try {
@@ -199,6 +219,15 @@ void FileActions::browser_action(const std::string& path) {
         break;
       case BrowsePurpose::export_gltf:
         export_gltf_scene(path);
+        break;
+      case BrowsePurpose::load_map:
+        load_map(browser.map_target.object, browser.map_target.slot, path);
+        break;
+      case BrowsePurpose::open_environment:
+        // The command reads the map; a bad file throws (the panel shows why) and the scene
+        // keeps what it had.
+        m_document.execute(SetEnvironment{path});
+        m_commands.info("environment " + path);
         break;
     }
     browser.open = false;

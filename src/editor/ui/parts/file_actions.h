@@ -43,6 +43,9 @@ class FileActions {
   void export_glsl_shader(const std::string& path);
   // The scene as glTF; the notice (status bar) gives each material's fit and its error.
   void export_gltf_scene(const std::string& path);
+  // Reads the image at path into the map slot of object's material (keeping the slot's wrap,
+  // scale and offset), as one command; throws InputError naming the file when it cannot be read.
+  void load_map(int object, MapSlot slot, const std::string& path);
   // Runs the file browser's chosen action, keeping the browser open with the error on failure.
   void browser_action(const std::string& path);
   void remember_recent(RecentKind kind, const std::string& path);

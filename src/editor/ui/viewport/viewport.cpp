@@ -108,30 +108,35 @@ void Viewport::upload_frames(double now_s) {
   if (new_a && m_frame_a->images.total.width > 0) m_image_a = m_frame_a;
   if (new_b && m_frame_b->images.total.width > 0) m_image_b = m_frame_b;
   if (new_a || new_b) max_difference_of_shown();
-  if (new_a && m_latency.edit_s >= 0.0 && m_frame_a->info.generation > m_latency.generation) {
-    if (!m_latency.first_shown) {
-      m_latency.first_shown = true;
-      m_latency.pending_first_s = now_s;
-    }
-    if (m_frame_a->info.width == m_render_width && m_frame_a->info.height == m_render_height) {
-      m_latency.pending_full_s = now_s;
-    }
+  if (new_a) {
+    m_show_pending = true;
+    m_show_generation = m_frame_a->info.generation;
+    m_show_full =
+        m_frame_a->info.width == m_render_width && m_frame_a->info.height == m_render_height;
+  } else if (new_b && !m_show_pending) {
+    m_show_pending = true;  // a new image too, of no edit the A side has not shown
+    m_show_generation = 0;
+    m_show_full = false;
   }
+  (void)now_s;
 }
 
 void Viewport::frame_shown(double now_s) {
-  if (m_latency.edit_s < 0.0) return;
-  if (m_latency.pending_first_s >= 0.0) {
-    m_latency.first_image_ms = (now_s - m_latency.edit_s) * 1000.0;
-    m_latency.pending_first_s = -1.0;
-  }
-  if (m_latency.pending_full_s >= 0.0) {
-    m_latency.full_image_ms = (now_s - m_latency.edit_s) * 1000.0;
-    if (m_latency.drag) {
-      m_automatic.drag_image(m_latency.setup, m_shown_raster_a, m_latency.full_image_ms);
+  if (!m_show_pending) return;
+  m_show_pending = false;
+  const ImageCadence::Delays d = m_cadence.shown(m_show_generation, m_show_full, now_s);
+  if (d.first_ms >= 0.0) m_latency.first_image_ms = d.first_ms;
+  if (d.full_ms >= 0.0) {
+    m_latency.full_image_ms = d.full_ms;
+    // A drag's delay goes to Automatic under the setup of its own edit.
+    for (const EditTag& tag : m_edit_tags) {
+      if (tag.generation == d.generation && tag.drag) {
+        m_automatic.drag_image(tag.setup, m_shown_raster_a, d.full_ms);
+      }
     }
-    m_latency.pending_full_s = -1.0;
-    m_latency.edit_s = -1.0;
+  }
+  while (!m_edit_tags.empty() && m_edit_tags.front().generation <= d.generation) {
+    m_edit_tags.pop_front();
   }
 }
 
@@ -265,17 +270,16 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
   }
   if (new_edit) {
     // now_s is the start of the frame in which the edit happened. Frames of the generation the
-    // ray tracer was handed with it, or later, show it; without that, frames newer than its
-    // newest.
-    const std::shared_ptr<const RenderedFrame> newest = m_a ? m_a->latest() : nullptr;
-    m_latency.edit_s = now_s;
-    m_latency.drag = moving_gesture(now_s);
-    m_latency.setup = m_setup;
-    m_latency.generation = pushed_generation > 0 ? pushed_generation - 1
-                           : newest              ? newest->info.generation
-                                                 : 0;
-    m_latency.first_shown = false;
-    m_latency.pending_first_s = m_latency.pending_full_s = -1.0;
+    // ray tracer was handed with it, or later, show it; an edit the raster path draws (no
+    // generation) is shown by its raster frame (kNewest).
+    if (pushed_generation > 0) m_edit_generation = pushed_generation;
+    m_cadence.edit(m_edit_generation, now_s);
+    if (m_edit_tags.empty() || m_edit_tags.back().generation < m_edit_generation) {
+      m_edit_tags.push_back({m_edit_generation, moving_gesture(now_s), m_setup});
+      if (m_edit_tags.size() > 4096) m_edit_tags.pop_front();  // frames that never come
+    } else {
+      m_edit_tags.back() = {m_edit_generation, moving_gesture(now_s), m_setup};
+    }
   }
   if (raster_dirty) {
     m_raster_key = key;

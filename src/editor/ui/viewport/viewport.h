@@ -5,6 +5,7 @@
 // The raster path (issue 12, editor/gl/raster_renderer.h) renders synchronously on the UI thread
 // when view.renderer picks it (viewport_raster.cpp); its frames take the same way to the screen.
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <string>
 
@@ -15,6 +16,7 @@
 #include "editor/gl/raster_renderer.h"
 #include "editor/gl/render_target.h"
 #include "editor/model/measure/exposure_histogram.h"
+#include "editor/model/measure/image_cadence.h"
 #include "editor/model/view/ab_compare.h"
 #include "editor/model/view/automatic_choice.h"
 #include "editor/model/view/reference_preview.h"
@@ -27,17 +29,11 @@ class Commands;
 struct InputState;
 struct Selection;
 
-// Timing of the path edit -> renderer -> pixels on screen, for the status bar and `stats`.
+// Timing of the path edit -> renderer -> pixels on screen, for the status bar and `stats`: the
+// newest delays the image cadence completed (image_cadence.h), animations and drags included.
 struct LatencyProbe {
-  double edit_s = -1.0;           // frame time of the newest edit not yet shown, -1 when none
-  std::uint64_t generation = 0;   // renderer generation before that edit was pushed
-  bool first_shown = false;       // some frame of the edit has been uploaded
-  double first_image_ms = 0.0;    // edit -> first frame of it on screen (any resolution)
-  double full_image_ms = 0.0;     // edit -> first full-resolution frame on screen
-  double pending_first_s = -1.0;  // upload time waiting for the swap that shows it
-  double pending_full_s = -1.0;
-  bool drag = false;  // the edit came from a gesture that moves the camera or a light
-  DragSetup setup;    // the viewport's setup when the edit was made (automatic_choice.h)
+  double first_image_ms = 0.0;  // edit -> first frame of it on screen (any resolution)
+  double full_image_ms = 0.0;   // edit -> first full-resolution frame of it on screen
 };
 
 // One pane of the viewport in screen coordinates (ImGui's, y down).
@@ -84,6 +80,8 @@ class Viewport {
   }
 
   const RenderedFrame* shown_frame() const { return m_frame_a.get(); }
+  // The frame whose images the viewport's (A side's) textures hold, kept alive for a writer.
+  std::shared_ptr<const RenderedFrame> shown_images() const { return m_image_a; }
   const RenderedFrame* shown_frame_b() const { return m_frame_b.get(); }
   // Which renderer drew the frame shown on each side: true for the raster path.
   bool shown_raster_a() const { return m_shown_raster_a; }
@@ -107,6 +105,9 @@ class Viewport {
   };
   AutomaticReport automatic_report() const;
   const LatencyProbe& latency() const { return m_latency; }
+  // New images on screen and the edit delays, per window (`stats` restarts it).
+  const ImageCadence& cadence() const { return m_cadence; }
+  void restart_cadence(double now_s) { m_cadence.restart(now_s); }
   // The pixel of the document's render size under the cursor as of the last draw (the pixel
   // inspector's), -1 when the cursor is over no image pane.
   int hover_x() const { return m_hover_x; }
@@ -131,6 +132,13 @@ class Viewport {
                     const InputState& input, double now_s);
   void draw_light_markers(const Scene& scene, const ViewSettings& view, const Selection& selection,
                           ImDrawList* list) const;
+  // viewport_gizmos.cpp: directional and spot lights' arrows, cones and aim handles; the
+  // environment turned by Ctrl+drag.
+  void draw_light_gizmos(const Scene& scene, const ViewSettings& view, const Selection& selection,
+                         ImDrawList* list) const;
+  int aim_handle_at(const Scene& scene, ImVec2 press) const;  // light index or -1
+  void drag_aim_handle(Commands& commands, ImVec2 mouse) const;
+  void turn_environment(Commands& commands, float dx_px) const;
   int pane_at(ImVec2 screen) const;
   // The pixel of the document's render size (width x height) under screen point p in an image
   // pane (not the A/B legend); false outside them.
@@ -241,6 +249,21 @@ class Viewport {
   TargetKey m_target_key;
   std::uint64_t m_uploads = 0;  // counts texture uploads
   LatencyProbe m_latency;
+  ImageCadence m_cadence;
+  // An image uploaded this frame, for the swap that shows it: its generation (kNewest: the
+  // raster path's, of the newest edit) and whether it has the render's size.
+  bool m_show_pending = false;
+  std::uint64_t m_show_generation = 0;
+  bool m_show_full = false;
+  // The edits not shown yet: whether each came from a drag, and its setup (Automatic files a
+  // drag's delay under the setup of its edit).
+  struct EditTag {
+    std::uint64_t generation;
+    bool drag;
+    DragSetup setup;
+  };
+  std::deque<EditTag> m_edit_tags;
+  std::uint64_t m_edit_generation = 0;  // the cadence's generation of the newest edit
 
   // The last histogram (histogram()) and what it was computed from.
   struct HistogramKey {
@@ -257,9 +280,11 @@ class Viewport {
   ExposureHistogram m_histogram;
 
   // Gesture state (viewport_input.cpp).
-  int m_drag_button = -1;         // ImGuiMouseButton being dragged in the viewport, -1 none
-  int m_drag_light = -1;          // light being dragged, -1 none
-  bool m_marker_pressed = false;  // the press hit a light marker (no orbit, no pick)
+  int m_drag_button = -1;           // ImGuiMouseButton being dragged in the viewport, -1 none
+  int m_drag_light = -1;            // light being dragged, -1 none
+  int m_drag_aim = -1;              // light whose aim handle is dragged, -1 none
+  bool m_drag_environment = false;  // Ctrl+drag: turning the environment
+  bool m_marker_pressed = false;    // the press hit a light marker (no orbit, no pick)
   int m_drag_pane = 0;
   float m_drag_distance = 0.0f;  // farthest the cursor went from the press, pixels
   ImVec2 m_drag_press{0, 0};     // where the drag's button went down (screen)

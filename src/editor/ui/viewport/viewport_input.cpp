@@ -102,7 +102,8 @@ void Viewport::draw_inspected_pixel(const ViewSettings& view, const RenderSettin
 
 bool Viewport::moving_gesture(double now_s) const {
   if (m_drag_button < 0) return gesture_active(now_s);  // a recent wheel zoom
-  return m_drag_light >= 0 || (m_drag_distance > kClickSlop && !m_marker_pressed);
+  return m_drag_light >= 0 || m_drag_aim >= 0 || m_drag_environment ||
+         (m_drag_distance > kClickSlop && !m_marker_pressed);
 }
 
 void Viewport::draw(Commands& commands, ViewSettings& view, Selection& selection,
@@ -159,6 +160,7 @@ void Viewport::draw(Commands& commands, ViewSettings& view, Selection& selection
   ImDrawList* list = ImGui::GetWindowDrawList();
   draw_labels(view, list);
   if (view.mode == ViewMode::ab) draw_legend(view, list, m_panes[3]);
+  draw_light_gizmos(commands.scene(), view, selection, list);
   draw_light_markers(commands.scene(), view, selection, list);
   draw_inspected_pixel(view, commands.scene().render, list);
   if (!m_frame_a) {
@@ -200,6 +202,7 @@ void Viewport::draw_light_markers(const Scene& scene, const ViewSettings& view,
       }
     }
     for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i) {
+      if (scene.lights[i].type == LightType::directional) continue;  // no position: its arrow
       const EdgeMarker m =
           edge_marker(scene.camera, w, h, scene.lights[i].position, kMarkerRadius + 6.0f);
       // Off-screen arrows at the top edge sit below the pane's label.
@@ -260,10 +263,19 @@ void Viewport::handle_input(Commands& commands, ViewSettings& view, Selection& s
     m_drag_distance = 0.0f;
     m_drag_pane = pane_at(press);
     m_drag_light = -1;
+    m_drag_aim = -1;
     m_marker_pressed = false;
-    if (m_drag_button == ImGuiMouseButton_Left && !io.KeyShift) {
+    m_drag_environment =
+        m_drag_button == ImGuiMouseButton_Left && io.KeyCtrl && scene.environment.present();
+    if (m_drag_button == ImGuiMouseButton_Left && !io.KeyShift && !m_drag_environment) {
       const Pane& pane = m_panes[m_drag_pane];
-      for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i) {
+      m_drag_aim = aim_handle_at(scene, press);
+      if (m_drag_aim >= 0) {
+        m_marker_pressed = true;
+        selection.light = m_drag_aim;
+      }
+      for (int i = 0; i < static_cast<int>(scene.lights.size()) && m_drag_aim < 0; ++i) {
+        if (scene.lights[i].type == LightType::directional) continue;
         const EdgeMarker m =
             edge_marker(scene.camera, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
                         scene.lights[i].position, kMarkerRadius + 6.0f);
@@ -287,7 +299,12 @@ void Viewport::handle_input(Commands& commands, ViewSettings& view, Selection& s
                                                            io.MousePos.y - m_drag_press.y));
     const Pane& pane = m_panes[m_drag_pane];
     const bool pan = m_drag_button != ImGuiMouseButton_Left || io.KeyShift;
-    if (m_drag_light >= 0 && m_drag_light < static_cast<int>(scene.lights.size())) {
+    if (m_drag_environment) {
+      m_marker_pressed = true;  // no pick at the release
+      turn_environment(commands, d.x);
+    } else if (m_drag_aim >= 0) {
+      drag_aim_handle(commands, io.MousePos);
+    } else if (m_drag_light >= 0 && m_drag_light < static_cast<int>(scene.lights.size())) {
       const glm::vec2 local(io.MousePos.x - pane.min.x, io.MousePos.y - pane.min.y);
       const glm::vec3 moved =
           point_at_depth(scene.camera, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
@@ -324,6 +341,8 @@ void Viewport::handle_input(Commands& commands, ViewSettings& view, Selection& s
     }
     m_drag_button = -1;
     m_drag_light = -1;
+    m_drag_aim = -1;
+    m_drag_environment = false;
   }
 
   if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {

@@ -110,10 +110,11 @@ bool Viewport::show_raster(const AbScenes& scenes, const AbSides& sides,
   m_raster_last_error.clear();
   m_raster_shown = true;
   max_difference_of_shown();
-  if (m_latency.edit_s >= 0.0) {  // the edit's first image is also its full-size one
-    m_latency.first_shown = true;
-    m_latency.pending_first_s = m_latency.pending_full_s = now_s;
-  }
+  // The newest edit's first image, also its full-size one.
+  m_show_pending = true;
+  m_show_generation = ImageCadence::kNewest;
+  m_show_full = true;
+  (void)now_s;
   glfwPostEmptyEvent();  // the next frame draws the new textures
   return true;
 }
