@@ -3,13 +3,21 @@
 # and a PNG diffuse map. Fails on any validator error; without node it says SKIPPED and passes
 # (scripts/common.sh installs node and the validator with the other packages).
 # cmake -DCLI=gloss-cli -DNODE=node -DROOT=source -DOUT=folder -P validate_exports.cmake
+# Bad input first (no node needed): an output that is not .gltf/.glb is one error line naming
+# it, exit 2, and nothing written.
+file(REMOVE_RECURSE "${OUT}")
+file(MAKE_DIRECTORY "${OUT}")
+execute_process(COMMAND "${CLI}" export-gltf "${ROOT}/assets/scenes/spheres.json" "${OUT}/x.obj"
+                RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT status EQUAL 2 OR NOT err MATCHES "^error: [^\n]*x\.obj[^\n]*\n$" OR EXISTS "${OUT}/x.obj")
+  message(FATAL_ERROR "export-gltf to x.obj: exit ${status}, stderr '${err}' (want 2 and one line)")
+endif()
+
 if(NOT NODE OR NOT EXISTS "${NODE}")
   message("SKIPPED: node not found; install nodejs and `npm install -g gltf-validator` "
           "(scripts/start does) to validate the glTF exports")
   return()
 endif()
-file(REMOVE_RECURSE "${OUT}")
-file(MAKE_DIRECTORY "${OUT}")
 
 # Where npm puts global packages, for require('gltf-validator').
 find_program(NPM npm)
