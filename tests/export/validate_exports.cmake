@@ -9,7 +9,7 @@ file(REMOVE_RECURSE "${OUT}")
 file(MAKE_DIRECTORY "${OUT}")
 execute_process(COMMAND "${CLI}" export-gltf "${ROOT}/assets/scenes/spheres.json" "${OUT}/x.obj"
                 RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT status EQUAL 2 OR NOT err MATCHES "^error: [^\n]*x\.obj[^\n]*\n$" OR EXISTS "${OUT}/x.obj")
+if(NOT status EQUAL 2 OR NOT err MATCHES "^error: [^\n]*x[.]obj[^\n]*\n$" OR EXISTS "${OUT}/x.obj")
   message(FATAL_ERROR "export-gltf to x.obj: exit ${status}, stderr '${err}' (want 2 and one line)")
 endif()
 
