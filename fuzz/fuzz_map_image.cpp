@@ -1,6 +1,6 @@
 // libFuzzer target: the map readers (io/image/image_reader.h, read_image) on one format's files:
-// PNG of every colour type and depth, Radiance HDR (stb_image, truncation checked) or OpenEXR
-// (the OpenEXR library). read_image picks the reader from the first bytes, so each target's
+// PNG of every colour type and depth, Radiance HDR (stb_image, truncation checked), OpenEXR
+// (the OpenEXR library) or JPEG (stb_image, baseline and progressive). read_image picks the reader from the first bytes, so each target's
 // seeds decide what it mostly explores; GLOSS_FUZZ_EXTENSION names the file it writes. The
 // memory budget is 256 MB, so a header claiming a huge image must be refused before it is
 // allocated (the fuzzer's limit is 512 MB for one allocation).

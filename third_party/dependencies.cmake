@@ -20,6 +20,13 @@ find_package(nlohmann_json 3 REQUIRED)
 find_package(assimp 5.2 REQUIRED)
 # PNG with text chunks (io only). Debian 12: libpng 1.6.39.
 find_package(PNG REQUIRED)
+# OpenEXR (io only, private to gloss_io): the linear image as 32-bit float EXR beside the PFM.
+# Debian 12: libopenexr-dev 3.1.5 (with Imath 3.1.6).
+find_package(OpenEXR 3 REQUIRED)
+# Numerical integration (analysis only, private, header only): Boost.Math's adaptive
+# Gauss-Kronrod quadrature with its error estimate, for the lobe view's directional albedo.
+# Debian 12: libboost-dev 1.74.
+find_package(Boost 1.74 REQUIRED)
 # Command lines of gloss-cli and gloss. Debian 12: 2.1.2.
 find_package(CLI11 REQUIRED)
 # stb_easy_font.h from libstb-dev (header only, public domain): the tiny bitmap font that labels

@@ -32,13 +32,15 @@ struct Config {
   Path path = Path::fast;
   int divisor = 1;
   bool shadows = true;
+  int env_samples = 0, env_resolution = 2;  // the environment's knobs (render_settings.h)
   MapFilter map_filter = MapFilter::trilinear;
   int map_divisor = 1;  // maps at 1/map_divisor of their size
 
   bool operator<(const Config& o) const {
-    return std::tie(spp, aa_threshold, tessellation, pow, path, divisor, shadows, map_filter,
-                    map_divisor) < std::tie(o.spp, o.aa_threshold, o.tessellation, o.pow, o.path,
-                                            o.divisor, o.shadows, o.map_filter, o.map_divisor);
+    return std::tie(spp, aa_threshold, tessellation, pow, path, divisor, shadows, env_samples,
+                    env_resolution, map_filter, map_divisor) <
+           std::tie(o.spp, o.aa_threshold, o.tessellation, o.pow, o.path, o.divisor, o.shadows,
+                    o.env_samples, o.env_resolution, o.map_filter, o.map_divisor);
   }
   bool operator==(const Config& o) const { return !(*this < o) && !(o < *this); }
 };
@@ -69,6 +71,12 @@ void check_options(const TradeoffOptions& o) {
   for (int d : o.resolution_divisors) {
     if (d < 1) throw std::invalid_argument("tradeoff: resolution divisors must be >= 1");
   }
+  for (int n : o.env_sample_levels) {
+    if (n < 0 || n > 65536) throw std::invalid_argument("tradeoff: env_samples is 0..65536");
+  }
+  for (int r : o.env_resolution_levels) {
+    if (r < 1 || r > 16) throw std::invalid_argument("tradeoff: env_resolution is 1..16");
+  }
   for (int d : o.map_divisors) {
     if (d < 1 || (d & (d - 1)) != 0) {
       throw std::invalid_argument("tradeoff: map divisors must be powers of 2");
@@ -90,6 +98,9 @@ class Session {
     m_base.spp = options.base_spp;
     m_base.tessellation = m_finest;
     m_base.shadows = scene.render.shadows;
+    m_base.env_samples = scene.render.env_samples;
+    m_base.env_resolution = scene.render.env_resolution;
+    m_environment = scene.environment.present();
     Scene& full = m_scenes.at(m_finest);
     full.render.width = m_width;
     full.render.height = m_height;
@@ -144,6 +155,7 @@ class Session {
   }
 
   int finest() const { return m_finest; }
+  bool environment() const { return m_environment; }
   bool textured() const {
     for (const Material& m : m_scenes.at(m_finest).materials) {
       if (m.textured()) return true;
@@ -199,6 +211,8 @@ class Session {
     s.render.aa_threshold = std::max(0.0f, c.aa_threshold);
     s.render.pow = c.pow;
     s.render.shadows = c.shadows;
+    s.render.env_samples = c.env_samples;
+    s.render.env_resolution = c.env_resolution;
     Image image;
     if (c.path == Path::fast) {
       RenderOptions options;
@@ -217,6 +231,7 @@ class Session {
   const TradeoffOptions& m_options;
   int m_width = 0, m_height = 0;
   int m_finest = 0;  // 0: no teapot
+  bool m_environment = false;
   Config m_base;
   std::map<int, Scene> m_scenes;
   std::map<std::pair<int, int>, Scene> m_map_scenes;  // (tessellation, map divisor)
@@ -288,6 +303,23 @@ std::vector<Setting> settings_of(Knob knob, const Session& session, const Tradeo
         "on", [](Config& c) { c.shadows = true; }, base.shadows);
     add(
         "off", [](Config& c) { c.shadows = false; }, !base.shadows);
+  } else if (knob == Knob::env_samples) {
+    if (!session.environment()) return out;  // tradeoff_notes says so
+    for (int n : o.env_sample_levels) {
+      add(
+          n == 0 ? "0 (fast)" : std::to_string(n), [n](Config& c) { c.env_samples = n; }, false);
+    }
+  } else if (knob == Knob::env_resolution) {
+    if (!session.environment()) return out;
+    for (int r : o.env_resolution_levels) {
+      add(
+          std::to_string(r),
+          [r](Config& c) {
+            c.env_samples = 0;
+            c.env_resolution = r;
+          },
+          false);
+    }
   } else if (knob == Knob::map_filter) {
     if (!session.textured()) return out;  // tradeoff_notes says so
     add(

@@ -17,6 +17,10 @@
 namespace gloss {
 
 // The accuracy knobs, in the order run_tradeoff measures them.
+// env_samples (directions per sample towards the environment's exact terms, 0: the fast path)
+// and env_resolution (the fast path's texels per lobe width, measured with env_samples 0) only
+// for a scene with an environment light; shadows is its visibility on or off too. map_filter and
+// map_resolution only for a scene with maps.
 enum class Knob {
   spp,
   adaptive,
@@ -26,6 +30,8 @@ enum class Knob {
   shading,
   resolution,
   shadows,
+  env_samples,
+  env_resolution,
   map_filter,      // how maps are read: nearest, bilinear at level 0, trilinear (the contract)
   map_resolution,  // every map at 1/2^k of its size (its pyramid from level k)
 };
@@ -48,6 +54,8 @@ struct TradeoffOptions {
                                          1.0f / 256};     // refine thresholds
   std::vector<int> tessellation_levels{2, 4, 8, 16, 32};  // teapot segments per patch side
   std::vector<int> resolution_divisors{8, 4, 2, 1};       // preview at 1/d, upsampled
+  std::vector<int> env_sample_levels{0, 16, 64, 256};     // env_samples knob (0: fast path)
+  std::vector<int> env_resolution_levels{1, 2, 4};        // env_resolution knob
   std::vector<int> map_divisors{8, 4, 2, 1};              // maps at 1/d (a power of 2)
   std::vector<Knob> knobs;                                // the knobs to measure; empty: all
   const std::atomic<bool>* cancel = nullptr;  // checked between renders and inside references
@@ -68,7 +76,8 @@ struct TradeoffRow {
   std::string setting;  // spp: "1".."64"; adaptive: "uniform" (the base), "16 t=1/64" (spp and
                         // refine threshold); tessellation: "2".."32"; pow: "exact", "fast";
                         // precision: "float", "double"; shading: "per-pixel", "gouraud";
-                        // resolution: "1/8".."1"; shadows: "on", "off"; map_filter:
+                        // resolution: "1/8".."1"; shadows: "on", "off"; env_samples:
+                        // "0 (fast)", "16".."256"; env_resolution: "1".."4"; map_filter:
                         // "nearest", "bilinear", "trilinear"; map_resolution: "1/8".."1"
   double time_ms = 0;   // median wall time of one render: BVH build, trace, shade (resolution:
                         // the reduced render plus the bilinear upsampling to full size); the

@@ -69,6 +69,15 @@ std::vector<std::string> tradeoff_notes(const Scene& scene, const TradeoffOption
   notes.push_back(
       "resolution: rendered at 1/d of the width and height, upsampled bilinearly "
       "(upsampling included in the time)");
+  if (!scene.environment.present()) {
+    notes.push_back("env_samples, env_resolution: skipped, the scene has no environment light");
+  } else {
+    notes.push_back(
+        "env_samples: directions per sample towards the environment's exact terms (0: the "
+        "prefiltered fast path alone, no visibility, no horizon); env_resolution: the fast "
+        "path's texels per lobe width, with env_samples 0; the reference's environment: exact "
+        "integrals (shadows off) or 1024-direction estimates (shadows on)");
+  }
   bool textured = false;
   for (const Material& m : scene.materials) textured = textured || m.textured();
   notes.push_back(textured ? "maps: map_filter reads every map nearest, bilinear at level 0 or "
@@ -85,8 +94,9 @@ std::vector<std::string> tradeoff_notes(const Scene& scene, const TradeoffOption
 
 const std::vector<Knob>& tradeoff_knobs() {
   static const std::vector<Knob> knobs{
-      Knob::spp,     Knob::adaptive,   Knob::tessellation, Knob::pow,        Knob::precision,
-      Knob::shading, Knob::resolution, Knob::shadows,      Knob::map_filter, Knob::map_resolution};
+      Knob::spp,         Knob::adaptive,       Knob::tessellation, Knob::pow,
+      Knob::precision,   Knob::shading,        Knob::resolution,   Knob::shadows,
+      Knob::env_samples, Knob::env_resolution, Knob::map_filter,   Knob::map_resolution};
   return knobs;
 }
 
@@ -108,6 +118,10 @@ const char* to_string(Knob knob) {
       return "resolution";
     case Knob::shadows:
       return "shadows";
+    case Knob::env_samples:
+      return "env_samples";
+    case Knob::env_resolution:
+      return "env_resolution";
     case Knob::map_filter:
       return "map_filter";
     case Knob::map_resolution:

@@ -1,10 +1,11 @@
-// gloss-cli render SCENE.json|SHOT.png [-o OUT.png] [--pfm OUT.pfm] [--terms DIR] [--width N]
-// [--height N]
-//                  [--spp N] [--model phong|blinn-phong] [--shadows on|off] [--srgb]
+// gloss-cli render SCENE.json|SHOT.png [-o OUT.png] [--pfm OUT.pfm] [--exr OUT.exr] [--terms DIR]
+//                  [--width N] [--height N] [--spp N] [--model phong|blinn-phong]
+//                  [--shadows on|off] [--srgb] [--exposure STOPS] [--tone none|reinhard|aces]
 //                  [--sampling adaptive|uniform] [--aa-threshold T] [--precision float|double]
 //                  [--physical]
 // Options override the scene's render block; the result is validated again before rendering.
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -22,6 +23,7 @@
 #include "base/version.h"
 #include "cli/commands.h"
 #include "engine/renderer.h"
+#include "io/image/exr_writer.h"
 #include "io/image/image_io.h"
 #include "io/image/scene_in_png.h"
 #include "io/scene/scene_loader.h"
@@ -35,18 +37,20 @@ namespace fs = std::filesystem;
 
 struct RenderArgs {
   std::string scene;
-  std::string png, pfm, terms_dir;
+  std::string png, pfm, exr, terms_dir;
   long long width = 0, height = 0, spp = 0;
-  std::string model, shadows, sampling;
-  double aa_threshold = 0;
+  std::string model, shadows, sampling, tone;
+  double aa_threshold = 0, exposure = 0;
   std::string precision = "float";  // float: the fast renderer; double: the reference path
   bool srgb = false;
   bool physical = false;  // materials with a `reference` shaded by it (double path)
   CLI::Option* precision_option = nullptr;
-  CLI::Option *png_option = nullptr, *pfm_option = nullptr, *terms_option = nullptr;
+  CLI::Option *png_option = nullptr, *pfm_option = nullptr, *exr_option = nullptr;
+  CLI::Option* terms_option = nullptr;
   CLI::Option *width_option = nullptr, *height_option = nullptr, *spp_option = nullptr;
   CLI::Option *model_option = nullptr, *shadows_option = nullptr;
   CLI::Option *sampling_option = nullptr, *aa_threshold_option = nullptr;
+  CLI::Option *exposure_option = nullptr, *tone_option = nullptr;
 };
 
 // A size option's value, refused before it reaches the scene (and before any allocation).
@@ -92,6 +96,18 @@ void apply_overrides(const RenderArgs& args, Scene& scene) {
     render.aa_threshold = static_cast<float>(args.aa_threshold);
   }
   if (args.srgb) render.srgb = true;
+  if (*args.exposure_option) {
+    if (!(std::abs(args.exposure) <= kMaxExposureStops)) {
+      throw InputError(args.scene, "must be a number of stops from -32 to 32", 0, 0, "--exposure");
+    }
+    render.exposure = static_cast<float>(args.exposure);
+  }
+  if (*args.tone_option && !parse_tone_curve(args.tone, render.tone)) {
+    throw InputError(args.scene,
+                     "unknown tone curve '" + args.tone + "' (did you mean '" +
+                         nearest_words(args.tone, {"none", "reinhard", "aces"}, 1).front() + "'?)",
+                     0, 0, "--tone");
+  }
   if (args.precision != "float" && args.precision != "double") {
     throw InputError(args.scene, "expected 'float' or 'double', got '" + args.precision + "'", 0, 0,
                      "--precision");
@@ -119,12 +135,22 @@ void check_writable_folder(const fs::path& folder, const std::string& output) {
   fs::remove(probe, ec);
 }
 
+// A float as %g writes it (exposure stops: "0", "1.5", "-2").
+std::string float_words(float value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", static_cast<double>(value));
+  return text;
+}
+
+// The settings line of the output and of the PNGs' gloss:settings chunk; it names the display
+// transform the PNGs went through (PFM and EXR hold the linear image before it).
 std::string settings_summary(const RenderSettings& r, const std::string& precision) {
   return std::to_string(r.width) + "x" + std::to_string(r.height) + ", " + std::to_string(r.spp) +
          " spp, " + to_string(r.model) + ", shadows " + (r.shadows ? "on" : "off") +
          ", energy_normalize " + (r.energy_normalize ? "on" : "off") + ", srgb " +
-         (r.srgb ? "on" : "off") + ", pow " + (r.pow == PowMode::exact ? "exact" : "fast") +
-         ", seed " + std::to_string(r.seed) + ", precision " + precision +
+         (r.srgb ? "on" : "off") + ", exposure " + float_words(r.exposure) + ", tone " +
+         to_string(r.tone) + ", pow " + (r.pow == PowMode::exact ? "exact" : "fast") + ", seed " +
+         std::to_string(r.seed) + ", precision " + precision +
          (r.spp > 1 ? std::string(", sampling ") + to_string(r.sampling) : std::string());
 }
 
@@ -132,7 +158,8 @@ std::string settings_summary(const RenderSettings& r, const std::string& precisi
 // so that a failure leaves no output behind.
 class OutputWriter {
  public:
-  OutputWriter(const Scene& scene, const std::string& precision) : m_srgb(scene.render.srgb) {
+  OutputWriter(const Scene& scene, const std::string& precision)
+      : m_display(display_transform(scene.render)) {
     m_text = {{"Software", std::string("gloss ") + gloss_version()},
               {kSceneChunkKeyword, embedded_scene_text(scene)},
               {"gloss:settings", settings_summary(scene.render, precision)}};
@@ -143,11 +170,15 @@ class OutputWriter {
     for (const std::string& path : m_written) fs::remove(path, ec);
   }
   void png(const std::string& path, const Image& image) {
-    write_png(path, image, m_srgb, m_text);
+    write_png(path, image, m_display, m_text);
     m_written.push_back(path);
   }
   void pfm(const std::string& path, const Image& image) {
     write_pfm(path, image);
+    m_written.push_back(path);
+  }
+  void exr(const std::string& path, const Image& image) {
+    write_exr(path, image);
     m_written.push_back(path);
   }
   const std::vector<std::string>& commit() {
@@ -156,7 +187,7 @@ class OutputWriter {
   }
 
  private:
-  bool m_srgb;
+  DisplayTransform m_display;  // the PNGs'
   TextChunks m_text;
   std::vector<std::string> m_written;
   bool m_committed = false;
@@ -168,13 +199,14 @@ void run_render(RenderArgs args) {
   apply_overrides(args, scene);
   if (args.physical) args.precision = "double";
 
-  if (!*args.png_option && !*args.pfm_option && !*args.terms_option) {
+  if (!*args.png_option && !*args.pfm_option && !*args.exr_option && !*args.terms_option) {
     // In the current folder; a PNG given as the scene is not overwritten by its own re-render.
     const bool from_png = has_png_signature(args.scene);
     args.png = fs::path(args.scene).stem().string() + (from_png ? "-rerender.png" : ".png");
   }
   if (!args.png.empty()) check_writable_folder(fs::path(args.png).parent_path(), args.png);
   if (!args.pfm.empty()) check_writable_folder(fs::path(args.pfm).parent_path(), args.pfm);
+  if (!args.exr.empty()) check_writable_folder(fs::path(args.exr).parent_path(), args.exr);
   if (!args.terms_dir.empty()) {
     std::error_code ec;
     fs::create_directories(args.terms_dir, ec);
@@ -213,6 +245,7 @@ void run_render(RenderArgs args) {
   OutputWriter writer(scene, precision);
   if (!args.png.empty()) writer.png(args.png, images.total);
   if (!args.pfm.empty()) writer.pfm(args.pfm, images.total);
+  if (!args.exr.empty()) writer.exr(args.exr, images.total);
   if (!args.terms_dir.empty()) {
     for (Term term : {Term::emissive, Term::ambient, Term::diffuse, Term::specular, Term::total}) {
       const fs::path base = fs::path(args.terms_dir) / to_string(term);
@@ -249,9 +282,11 @@ void add_render_command(CLI::App& app) {
       ->required();
   args->png_option = sub->add_option(
       "-o,--output", args->png,
-      "PNG output (8-bit, clamped); default <scene stem>.png (<stem>-rerender.png for a PNG "
-      "scene) when no output is given");
+      "PNG output (8-bit, through the display transform: exposure, tone, clamp, encoding); "
+      "default <scene stem>.png (<stem>-rerender.png for a PNG scene) when no output is given");
   args->pfm_option = sub->add_option("--pfm", args->pfm, "PFM output (linear float, unclamped)");
+  args->exr_option = sub->add_option(
+      "--exr", args->exr, "OpenEXR output (linear 32-bit float, unclamped, ZIP-compressed)");
   args->terms_option = sub->add_option(
       "--terms", args->terms_dir,
       "Folder for emissive/ambient/diffuse/specular/total as .pfm and .png (created)");
@@ -267,6 +302,12 @@ void add_render_command(CLI::App& app) {
       "--aa-threshold", args->aa_threshold,
       "adaptive: refine where neighbouring centres differ by more (0..1, default 1/64)");
   sub->add_flag("--srgb", args->srgb, "sRGB-encode the PNGs (default: clamp only)");
+  args->exposure_option = sub->add_option(
+      "--exposure", args->exposure,
+      "the PNGs' exposure in stops (-32..32): displayed = linear x 2^STOPS (render.exposure)");
+  args->tone_option = sub->add_option(
+      "--tone", args->tone,
+      "the PNGs' tone curve after the exposure: none (default), reinhard or aces (render.tone)");
   args->precision_option = sub->add_option(
       "--precision", args->precision,
       "float (default: the fast renderer) or double (the reference path, docs/accuracy.md)");

@@ -38,9 +38,9 @@ constexpr const char* kPython = "/usr/bin/python3";
 
 struct TradeoffArgs {
   std::string scene, csv, plot;
-  std::vector<std::string> knobs;  // --knobs: only these (names as tables print them)
   int width = 0, height = 0, runs = 0, reference_spp = 0, base_spp = 0;
   bool quick = false;
+  std::vector<std::string> knobs;
 };
 
 // $GLOSS_SCRIPTS/plot_tradeoff.py when set, else scripts/ beside the assets folder (the source
@@ -127,7 +127,12 @@ void run_tradeoff_command(const TradeoffArgs& args) {
   if (args.base_spp > 0) options.base_spp = args.base_spp;
   for (const std::string& name : args.knobs) {
     Knob knob;
-    if (!parse_knob(name, knob)) throw InputError("--knobs", "unknown knob '" + name + "'");
+    if (!parse_knob(name, knob)) {
+      std::string names;
+      for (const Knob k : tradeoff_knobs())
+        names += (names.empty() ? "" : ", ") + std::string(to_string(k));
+      throw CLI::ValidationError("--knobs", "no knob '" + name + "' (" + names + ")");
+    }
     options.knobs.push_back(knob);
   }
 
@@ -222,11 +227,9 @@ void add_tradeoff_command(CLI::App& app) {
       ->check(CLI::Range(1, kMaxSpp));
   cmd->add_option("--base-spp", args->base_spp, "Samples per pixel of the non-spp rows (4)")
       ->check(CLI::Range(1, kMaxSpp));
-  cmd->add_flag("--quick", args->quick, "The editor's quick settings: 256 wide, 3 runs, 64 spp");
-  cmd->add_option("--knobs", args->knobs,
-                  "Only these knobs (spp, adaptive, tessellation, pow, precision, shading, "
-                  "resolution, shadows, map_filter, map_resolution)")
+  cmd->add_option("--knobs", args->knobs, "Only these knobs, comma-separated (default: all)")
       ->delimiter(',');
+  cmd->add_flag("--quick", args->quick, "The editor's quick settings: 256 wide, 3 runs, 64 spp");
   cmd->callback([args] { run_tradeoff_command(*args); });
 }
 

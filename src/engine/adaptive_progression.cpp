@@ -40,7 +40,7 @@ bool AdaptiveProgression::refine(SampleCache& cache, const RenderContext& ctx,
   }
   const RenderSettings& r = ctx.scene->render;
   std::vector<std::uint32_t> pixels;
-  if (!choose_refined_pixels(cache, *centre_total, r.aa_threshold, 0, cache.height, ctx.cancel,
+  if (!choose_refined_pixels(cache, *centre_total, r, 0, cache.height, ctx.cancel,
                              pixels)) {
     return false;
   }

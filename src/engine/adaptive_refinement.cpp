@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "display/display_transform.h"
 #include "engine/parallel_loops.h"
 
 namespace gloss {
@@ -49,19 +50,35 @@ void mark_curvature(const Image& total, int y, int w, float threshold,
     refine[static_cast<std::size_t>(i / 3)] |= std::fabs(laplacian) > threshold ? 1 : 0;
   }
 }
-}  // namespace
 
-std::vector<std::uint32_t> choose_refined_pixels(const SampleCache& cache, const Image& total,
-                                                 float threshold, int row_begin, int row_end) {
-  std::vector<std::uint32_t> out;
-  choose_refined_pixels(cache, total, threshold, row_begin, row_end, nullptr, out);
+// The total as the rule compares it: every channel displayed, in bands of rows.
+Image displayed_total(const Image& linear, const DisplayTransform& display) {
+  Image out(linear.width, linear.height);
+  const int w = linear.width;
+  parallel_rows(w, linear.height, nullptr, [&](int r0, int r1) {
+    const std::size_t first = static_cast<std::size_t>(r0) * w * 3;
+    display_values(&linear.pixels[0].x + first, &out.pixels[0].x + first,
+                   static_cast<std::size_t>(r1 - r0) * w * 3, display);
+  });
   return out;
 }
 
-bool choose_refined_pixels(const SampleCache& cache, const Image& total, float threshold,
-                           int row_begin, int row_end, const std::atomic<bool>* cancel,
-                           std::vector<std::uint32_t>& out) {
+}  // namespace
+
+std::vector<std::uint32_t> choose_refined_pixels(const SampleCache& cache, const Image& linear,
+                                                 const RenderSettings& render, int row_begin,
+                                                 int row_end) {
+  std::vector<std::uint32_t> out;
+  choose_refined_pixels(cache, linear, render, row_begin, row_end, nullptr, out);
+  return out;
+}
+
+bool choose_refined_pixels(const SampleCache& cache, const Image& linear,
+                           const RenderSettings& render, int row_begin, int row_end,
+                           const std::atomic<bool>* cancel, std::vector<std::uint32_t>& out) {
   out.clear();
+  const float threshold = render.aa_threshold;
+  const Image total = displayed_total(linear, display_transform(render));
   const int w = cache.width, h = cache.height;
   const SamplePlane& plane = cache.planes.at(0);
   // Edge flags of rows [k0, k1), the rows the chosen rows look at; index (y - k0) * w + x.

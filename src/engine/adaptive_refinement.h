@@ -5,10 +5,13 @@
 //   - sees another object (or the background where it sees one): silhouettes and contacts;
 //   - is lit by a planned light where it is not, or the reverse (spec_weight > 0 differs):
 //     shadow edges and the terminator, where Phong's specular lobe is cut off;
-//   - differs in the total (linear, unclamped: the values images and metrics hold) by more
-//     than `threshold` in some channel: highlights, flat-shaded facets, steep gradients.
-//   - is itself where the total curves: its 4-neighbour Laplacian exceeds threshold / 10 in some
-//     channel (the tip of a highlight narrower than the step test sees).
+//   - differs in the displayed total by more than render.aa_threshold in some channel:
+//     highlights, flat-shaded facets, steep gradients. Displayed: through the document's display
+//     transform (display/display_transform.h: exposure, tone curve, clamp, encoding), so the rule
+//     compares what a user sees: two values a clamp shows as the same white are not an edge, an
+//     edge in a region the exposure or tone curve brings into range is;
+//   - is itself where the displayed total curves: its 4-neighbour Laplacian exceeds
+//     aa_threshold / 10 in some channel (the tip of a highlight narrower than the step test sees).
 // Pixels on the image border are always refined: beyond them lies no centre to compare with,
 // and an edge just outside the last row of centres (a floor ending at the bottom of the frame)
 // would otherwise go unseen.
@@ -21,17 +24,20 @@
 
 #include "base/image.h"
 #include "engine/trace/sample_cache.h"
+#include "scene/render_settings.h"
 
 namespace gloss {
 
 // The refined pixels (region indices, ascending) of rows [row_begin, row_end) of the cache's
 // region; neighbours are looked up anywhere in the region. cache.planes[0] holds the centre
-// samples; total is the region's total image made from them.
+// samples; total is the region's linear total image made from them; render gives the threshold
+// and the display transform.
 std::vector<std::uint32_t> choose_refined_pixels(const SampleCache& cache, const Image& total,
-                                                 float threshold, int row_begin, int row_end);
+                                                 const RenderSettings& render, int row_begin,
+                                                 int row_end);
 // The same into out, stopping soon after cancel turns true: false then (out is incomplete).
-bool choose_refined_pixels(const SampleCache& cache, const Image& total, float threshold,
-                           int row_begin, int row_end, const std::atomic<bool>* cancel,
-                           std::vector<std::uint32_t>& out);
+bool choose_refined_pixels(const SampleCache& cache, const Image& total,
+                           const RenderSettings& render, int row_begin, int row_end,
+                           const std::atomic<bool>* cancel, std::vector<std::uint32_t>& out);
 
 }  // namespace gloss

@@ -70,7 +70,7 @@ TermImages render(const Scene& scene, const RenderOptions& options) {
                                            static_cast<std::uint32_t>((row0 + rows) * w));
         for (auto p = first; p != last; ++p) pixels.push_back(*p - region0);
       } else {
-        pixels = choose_refined_pixels(cache, band.total, scene.render.aa_threshold, row0 - halo0,
+        pixels = choose_refined_pixels(cache, band.total, scene.render, row0 - halo0,
                                        row0 - halo0 + rows);
       }
       trace_refined_samples(cache, ctx, std::move(pixels), spp);

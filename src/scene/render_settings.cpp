@@ -43,4 +43,12 @@ bool parse_sampling(const std::string& name, Sampling& sampling) {
   return parse_choice("sampling", name, sampling);
 }
 
+const char* to_string(ToneCurve tone) {
+  return choice_names("tone").at(static_cast<std::size_t>(tone));
+}
+
+bool parse_tone_curve(const std::string& name, ToneCurve& tone) {
+  return parse_choice("tone", name, tone);
+}
+
 }  // namespace gloss

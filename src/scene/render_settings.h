@@ -30,19 +30,31 @@ enum class Sampling { adaptive, uniform };
 const char* to_string(Sampling sampling);
 bool parse_sampling(const std::string& name, Sampling& sampling);
 
+// The display transform's tone curve (docs/spec/shading.md, "Output encodings"), applied after
+// the exposure and before the clamp: none (the classic look), Reinhard x / (1 + x), or
+// Narkowicz's fit of the ACES film curve. The functions are display/display_transform.h's.
+enum class ToneCurve { none, reinhard, aces };
+
+// "none" / "reinhard" / "aces"; parse returns false for any other name.
+const char* to_string(ToneCurve tone);
+bool parse_tone_curve(const std::string& name, ToneCurve& tone);
+
 struct RenderSettings {
   int width = 640;   // pixels
   int height = 480;  // pixels
   int spp = 1;       // samples per pixel, stratified; 1 = the pixel centre
   ShadingModel model = ShadingModel::phong;
   bool shadows = true;
-  bool energy_normalize = false;  // specular x (alpha+2)/(2 pi), Blinn-Phong (alpha+8)/(8 pi)
-  bool srgb = false;              // PNG display encoding: false = clamp only (classic look)
-  std::uint32_t seed = 0;         // jitter seed for spp > 1; same seed, same image
-  PowMode pow = PowMode::exact;   // accuracy knob
+  bool energy_normalize = false;     // specular x (alpha+2)/(2 pi), Blinn-Phong (alpha+8)/(8 pi)
+  bool srgb = false;                 // PNG display encoding: false = clamp only (classic look)
+  float exposure = 0.0f;             // display transform: stops, displayed = linear x 2^exposure
+  ToneCurve tone = ToneCurve::none;  // display transform: the curve after the exposure
+  std::uint32_t seed = 0;            // jitter seed for spp > 1; same seed, same image
+  PowMode pow = PowMode::exact;      // accuracy knob
   Sampling sampling = Sampling::adaptive;  // for spp > 1
-  // Adaptive sampling refines a pixel whose clamped total differs from a neighbour's by more
-  // than this, per channel (linear, 0..1); a speed knob: lower refines more pixels.
+  // Adaptive sampling refines a pixel whose displayed total (after the display transform:
+  // exposure, tone, clamp, encoding) differs from a neighbour's by more than this, per channel
+  // (0..1); a speed knob: lower refines more pixels.
   float aa_threshold = 1.0f / 64.0f;
   // The environment light (docs/engine.md, "The environment"): the fast path's prefiltered maps
   // have env_resolution texels per lobe width; then env_samples directions per sample, drawn
@@ -60,5 +72,7 @@ constexpr int kMaxImageSide = 16384;
 constexpr long long kMaxImagePixels = 64LL * 1024 * 1024;
 constexpr int kMaxSpp = 4096;
 constexpr int kMaxEnvSamples = 65536;
+// Largest exposure magnitude accepted, stops: 2^32 keeps every exposed value finite in float.
+constexpr float kMaxExposureStops = 32.0f;
 
 }  // namespace gloss

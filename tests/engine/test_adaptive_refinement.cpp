@@ -20,6 +20,7 @@ namespace {
 struct HandImage {
   SampleCache cache;
   Image total;
+  RenderSettings render;  // its display transform: exposure 0, no tone curve, clamp
   HandImage(int w, int h, std::size_t lights) : total(w, h, glm::vec3(0.5f)) {
     cache.width = w;
     cache.height = h;
@@ -33,9 +34,10 @@ struct HandImage {
   }
   std::size_t at(int x, int y) const { return static_cast<std::size_t>(y) * cache.width + x; }
   // The refined pixels off the image border (the border is always refined).
-  std::vector<std::uint32_t> refined(float threshold) const {
+  std::vector<std::uint32_t> refined(float threshold) {
+    render.aa_threshold = threshold;
     std::vector<std::uint32_t> out;
-    for (const std::uint32_t p : choose_refined_pixels(cache, total, threshold, 0, cache.height)) {
+    for (const std::uint32_t p : choose_refined_pixels(cache, total, render, 0, cache.height)) {
       const int x = static_cast<int>(p) % cache.width, y = static_cast<int>(p) / cache.width;
       if (x > 0 && y > 0 && x < cache.width - 1 && y < cache.height - 1) out.push_back(p);
     }
@@ -51,9 +53,10 @@ std::vector<std::uint32_t> pixel_list(std::initializer_list<std::pair<int, int>>
 }
 
 TEST(AdaptiveRefinement, TheImageBorderIsAlwaysRefined) {
-  const HandImage img(4, 3, 0);  // uniform: nothing inside differs
+  HandImage img(4, 3, 0);  // uniform: nothing inside differs
+  img.render.aa_threshold = 1.0f;
   EXPECT_EQ(
-      choose_refined_pixels(img.cache, img.total, 1.0f, 0, 3),
+      choose_refined_pixels(img.cache, img.total, img.render, 0, 3),
       pixel_list({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {0, 1}, {3, 1}, {0, 2}, {1, 2}, {2, 2}, {3, 2}},
                  4));
   EXPECT_TRUE(img.refined(1.0f).empty());
@@ -78,10 +81,39 @@ TEST(AdaptiveRefinement, AColourStepRefinesBothSidesOnlyAboveTheThreshold) {
   // Above 0.3 only the curvature test sees it: Laplacian +-0.3 on the two sides, above t / 10.
   EXPECT_EQ(img.refined(2.99f), step);
   EXPECT_TRUE(img.refined(3.01f).empty());
-  // Linear values, unclamped: 1 and 1.5 differ although a display shows both as white.
+}
+
+// The rule compares what is displayed (docs/spec/shading.md, "Output encodings"): exposure, tone
+// curve, clamp, encoding.
+TEST(AdaptiveRefinement, ItComparesTheDisplayedValues) {
+  HandImage img(5, 5, 0);
   img.total.pixels.assign(img.total.pixels.size(), glm::vec3(1.0f));
   img.total.pixels[img.at(2, 2)] = glm::vec3(1.5f);
-  EXPECT_EQ(img.refined(0.49f).size(), 6u);  // its 3 x 3 block less the border row 3
+  // The clamp shows 1 and 1.5 as the same white: no edge.
+  EXPECT_TRUE(img.refined(0.2f).empty());
+  // One stop down they show as 0.5 and 0.75: the 3 x 3 block around the brighter pixel.
+  const std::vector<std::uint32_t> block =
+      pixel_list({{1, 1}, {2, 1}, {3, 1}, {1, 2}, {2, 2}, {3, 2}, {1, 3}, {2, 3}, {3, 3}}, 5);
+  img.render.exposure = -1.0f;
+  EXPECT_EQ(img.refined(0.2f), block);
+  // Reinhard at exposure 0: 1 / 2 = 0.5 and 1.5 / 2.5 = 0.6.
+  img.render.exposure = 0.0f;
+  img.render.tone = ToneCurve::reinhard;
+  EXPECT_EQ(img.refined(0.09f), block);
+}
+
+TEST(AdaptiveRefinement, TheSrgbEncodingMagnifiesDarkSteps) {
+  HandImage img(6, 4, 0);
+  img.total.pixels.assign(img.total.pixels.size(), glm::vec3(0.001f));
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 3; x < 6; ++x) img.total.pixels[img.at(x, y)] = glm::vec3(0.004f);
+  }
+  // Linear: a step of 0.003, under 0.05, and a Laplacian of 0.003, under 0.005.
+  EXPECT_TRUE(img.refined(0.05f).empty());
+  // sRGB: 12.92 x 0.001 = 0.01292 against 1.055 x 0.004^(1/2.4) - 0.055 = 0.0508; the step of
+  // 0.0379 stays under 0.05, its Laplacian does not.
+  img.render.srgb = true;
+  EXPECT_EQ(img.refined(0.05f), pixel_list({{2, 1}, {3, 1}, {2, 2}, {3, 2}}, 6));
 }
 
 TEST(AdaptiveRefinement, APeakBelowTheStepThresholdIsRefinedWhereItCurves) {
@@ -147,7 +179,7 @@ TEST(AdaptiveRefinement, PlacementDoesNotDependOnTheRenderersBands) {
   PixelFactors factors;
   Image total;
   ASSERT_TRUE(trace_single_sample(cache, ctx, factors, &total));
-  EXPECT_EQ(banded, choose_refined_pixels(cache, total, scene.render.aa_threshold, 0, 30));
+  EXPECT_EQ(banded, choose_refined_pixels(cache, total, scene.render, 0, 30));
 }
 
 }  // namespace

@@ -191,6 +191,28 @@ TEST(ImageIo, PngRoundTripOfKnownValues) {
   EXPECT_EQ(at(srgb, 4, 1, 2), 7);
 }
 
+// The display transform on the way to 8 bits (display/display_transform.h), worked by hand.
+TEST(ImageIo, PngGoesThroughTheDisplayTransform) {
+  ScratchFolder folder;
+  Image image(2, 1);
+  image.at(0, 0) = glm::vec3(0.3f, 0.6f, 3.0f);
+  image.at(1, 0) = glm::vec3(0.6f, 100.0f, -2.0f);
+  DisplayTransform display;
+  display.gain = 2.0f;  // +1 stop
+  display.tone = ToneCurve::reinhard;
+  const std::string path = folder.file("toned.png");
+  write_png(path, image, display);
+  const Png8 png = read_png(path);
+  // 0.6 / 1.6 = 0.375 -> 95.6 -> 96; 1.2 / 2.2 -> 139.1 -> 139; 6 / 7 -> 218.6 -> 219.
+  EXPECT_EQ(png.rgb[0], 96);
+  EXPECT_EQ(png.rgb[1], 139);
+  EXPECT_EQ(png.rgb[2], 219);
+  // 1.2 / 2.2 again; 200 / 201 -> 253.7 -> 254 (Reinhard never clips); negatives 0.
+  EXPECT_EQ(png.rgb[3], 139);
+  EXPECT_EQ(png.rgb[4], 254);
+  EXPECT_EQ(png.rgb[5], 0);
+}
+
 TEST(ImageIo, PngTextChunksRoundTrip) {
   ScratchFolder folder;
   const std::string long_text(3000, 'x');  // over 1 KB: stored compressed

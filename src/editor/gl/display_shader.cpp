@@ -17,6 +17,7 @@ DisplayShader::DisplayShader() {
   m_b = glGetUniformLocation(m_program, "u_b");
   m_mode = glGetUniformLocation(m_program, "u_mode");
   m_gain = glGetUniformLocation(m_program, "u_gain");
+  m_tone = glGetUniformLocation(m_program, "u_tone");
   m_srgb = glGetUniformLocation(m_program, "u_srgb");
   m_heat_scale = glGetUniformLocation(m_program, "u_heat_scale");
   m_heat_ramp = glGetUniformLocation(m_program, "u_heat_ramp");
@@ -38,8 +39,9 @@ void DisplayShader::draw(GLuint texture_a, GLuint texture_b, const DisplayParams
   glUniform1i(m_a, 0);
   glUniform1i(m_b, 1);
   glUniform1i(m_mode, static_cast<GLint>(params.mode));
-  glUniform1f(m_gain, std::exp2(params.exposure));
-  glUniform1i(m_srgb, params.srgb ? 1 : 0);
+  glUniform1f(m_gain, params.display.gain);
+  glUniform1i(m_tone, static_cast<GLint>(params.display.tone));
+  glUniform1i(m_srgb, params.display.srgb ? 1 : 0);
   glUniform1f(m_heat_scale, std::max(params.heat_scale, 1e-6f));
   glUniform1i(m_clip_overlay, params.clip_overlay ? 1 : 0);
   glUniform3fv(m_heat_ramp, kHeatRampSize, &kHeatRamp[0].x);

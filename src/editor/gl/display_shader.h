@@ -1,7 +1,10 @@
 #pragma once
 // The viewport's display transform as a GL program built from shaders/display.{vert,frag}:
-// draws one pane (the current GL viewport) from one or two linear float textures.
+// draws one pane (the current GL viewport) from one or two linear float textures. The shader is
+// display/display_transform.h's GLSL twin; the GL tests hold it to that function.
 #include <glad/gl.h>
+
+#include "display/display_transform.h"
 
 namespace gloss {
 
@@ -10,10 +13,9 @@ enum class DisplayMode { image = 0, sum = 1, heat = 2 };
 
 struct DisplayParams {
   DisplayMode mode = DisplayMode::image;
-  float exposure = 0.0f;      // stops
-  bool srgb = false;          // false: clamp only
+  DisplayTransform display;   // the document's (render.exposure, render.tone, render.srgb)
   float heat_scale = 0.1f;    // linear difference at the ramp's top; values <= 0 use 1e-6
-  bool clip_overlay = false;  // stripes over pixels with an exposed channel above 1 (not heat)
+  bool clip_overlay = false;  // stripes over pixels with a channel above 1 before the clamp
 };
 
 class DisplayShader {
@@ -30,7 +32,7 @@ class DisplayShader {
  private:
   GLuint m_program = 0;
   GLuint m_vertex_array = 0;  // empty: the vertex shader makes its triangle from gl_VertexID
-  GLint m_mode = -1, m_gain = -1, m_srgb = -1, m_heat_scale = -1, m_heat_ramp = -1;
+  GLint m_mode = -1, m_gain = -1, m_tone = -1, m_srgb = -1, m_heat_scale = -1, m_heat_ramp = -1;
   GLint m_clip_overlay = -1;
   GLint m_a = -1, m_b = -1;
 };

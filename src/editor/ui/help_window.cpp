@@ -1,10 +1,17 @@
-// The help window (F1): shortcuts, mouse gestures and where the editor keeps its files.
+// The help window (F1): every keyboard shortcut (from the one table the keys are dispatched
+// from, shortcuts.h), the mouse gestures and where the editor keeps its files. Rows wrap in the
+// window's width, so no entry is cut off.
+#include <algorithm>
+#include <utility>
+#include <vector>
+
 #include <imgui.h>
 
 #include "base/assets.h"
 #include "editor/ui/panels/panels.h"
 #include "editor/ui/parts/open_windows.h"
 #include "editor/ui/parts/session.h"
+#include "editor/ui/shortcuts.h"
 
 namespace gloss {
 
@@ -13,16 +20,52 @@ namespace {
 void row(const char* keys, const char* what) {
   ImGui::TableNextRow();
   ImGui::TableSetColumnIndex(0);
-  ImGui::TextUnformatted(keys);
+  ImGui::TextWrapped("%s", keys);
   ImGui::TableSetColumnIndex(1);
-  ImGui::TextUnformatted(what);
+  ImGui::TextWrapped("%s", what);
+}
+
+// The mouse, in the viewport and on the panels.
+struct Gesture {
+  const char* what_you_do;
+  const char* effect;
+};
+constexpr Gesture kGestures[] = {
+    {"left drag", "orbit the camera about its target"},
+    {"right or middle drag, Shift + left drag", "pan"},
+    {"mouse wheel", "zoom"},
+    {"left click", "select the object under the cursor"},
+    {"drag a light marker", "move the light in the plane facing you"},
+    {"drag an edge arrow", "bring a light out of view under the cursor, at the target's depth"},
+    {"drag a panel's inner edge", "resize the side panels (the cursor shows the arrows)"},
+    {"click a collapsed panel's strip", "expand it again"},
+    {"Ctrl+click a slider", "type an exact value"},
+};
+
+// A table of keys and what they do, its first column as wide as its widest entry.
+template <class Rows>
+void key_table(const char* id, const char* first_header, const Rows& rows) {
+  float keys_width = ImGui::CalcTextSize(first_header).x;
+  for (const auto& r : rows) keys_width = std::max(keys_width, ImGui::CalcTextSize(r.first).x);
+  keys_width = std::min(keys_width, ImGui::GetContentRegionAvail().x * 0.45f);
+  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV;
+  if (!ImGui::BeginTable(id, 2, flags)) return;
+  ImGui::TableSetupColumn(first_header, ImGuiTableColumnFlags_WidthFixed, keys_width);
+  ImGui::TableSetupColumn("does", ImGuiTableColumnFlags_WidthStretch);
+  ImGui::TableHeadersRow();
+  for (const auto& r : rows) row(r.first, r.second);
+  ImGui::EndTable();
 }
 
 }  // namespace
 
 void draw_help_window(OpenWindows& windows, const Session& session) {
   if (!windows.help) return;
-  ImGui::SetNextWindowSize(ImVec2(560, 520), ImGuiCond_FirstUseEver);
+  // Never larger than the window: a small window scrolls the help instead of cutting it off.
+  const ImVec2 display = ImGui::GetMainViewport()->Size;
+  ImGui::SetNextWindowSize(
+      ImVec2(std::min(600.0f, display.x - 40.0f), std::min(620.0f, display.y - 60.0f)),
+      ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_FirstUseEver,
                           ImVec2(0.5f, 0.5f));
   if (!ImGui::Begin("Help", &windows.help)) {
@@ -34,46 +77,38 @@ void draw_help_window(OpenWindows& windows, const Session& session) {
       "refined pass by pass, or the same scene drawn by OpenGL shaders (Renderer, below). "
       "Every edit can be undone. The full guide: %s",
       doc_path("editor.md").c_str());
-  if (ImGui::BeginTable("##keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-    ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, 240.0f);
-    ImGui::TableSetupColumn("action");
-    row("F1", "show or hide this help");
-    row("Ctrl+Z", "undo");
-    row("Ctrl+Shift+Z, Ctrl+Y", "redo");
-    row("Ctrl+S", "screenshot (kind chosen in View & Quality)");
-    row("Ctrl+Shift+S", "save the scene");
-    row("Ctrl+O", "open a scene");
-    row("Ctrl+Q", "quit");
-    row("1 / 2 / 3 / 4", "render / terms 2x2 / one term / A/B view");
-    row("Ctrl+B", "snapshot: A/B of the scene now (A) against later edits (B)");
-    row("Esc", "close a menu, this help, the file panel");
-    row("left drag", "orbit the camera about its target");
-    row("right or middle drag, Shift+left", "pan");
-    row("mouse wheel", "zoom");
-    row("left click", "select the object under the cursor");
-    row("drag a light marker", "move the light in the plane facing you");
-    row("click an edge arrow", "select a light that is out of view");
-    row("drag a panel's inner edge", "resize the side panels");
-    row("Ctrl+click a slider", "type an exact value");
-    ImGui::EndTable();
+  std::vector<std::pair<const char*, const char*>> keys;
+  for (const Shortcut& k : shortcuts()) {
+    if (k.keys[0] != '\0') keys.emplace_back(k.keys, k.what);  // "" shares the line above
   }
+  key_table("##keys", "key", keys);
+  ImGui::Spacing();
+  std::vector<std::pair<const char*, const char*>> mouse;
+  for (const Gesture& g : kGestures) mouse.emplace_back(g.what_you_do, g.effect);
+  key_table("##mouse", "mouse", mouse);
+  ImGui::TextWrapped("Keys act unless a text field has the keyboard (Ctrl+Z there undoes typing).");
   ImGui::Spacing();
   // The GLSL path (issue 12): docs/editor.md, "Raster (GLSL) path".
   ImGui::TextUnformatted("Renderer (View & Quality panel)");
-  ImGui::BulletText("Ray traced: exact, refined to the scene's spp");
-  ImGui::BulletText("Raster (GLSL): one sample per pixel, hard shadows from shadow maps");
-  ImGui::BulletText("Automatic: raster during drags if measured no slower, ray traced when still");
-  ImGui::BulletText(
-      "Per vertex (Gouraud) against per pixel: lower the teapot tessellation to see it break");
-  ImGui::BulletText("A/B: ray traced | raster, per pixel | per vertex, with the heat map");
+  for (const char* line :
+       {"Ray traced: exact, refined to the scene's spp",
+        "Raster (GLSL): one sample per pixel, hard shadows from shadow maps",
+        "Automatic: raster during drags if measured no slower, ray traced when still",
+        "Per vertex (Gouraud) against per pixel: lower the teapot tessellation to see it break",
+        "A/B: ray traced | raster, per pixel | per vertex, with the heat map"}) {
+    ImGui::Bullet();
+    ImGui::TextWrapped("%s", line);
+  }
   ImGui::TextWrapped(
       "Scripts: renderer cpu|gl|auto, shading pixel|vertex, shadow-map SIZE (16..4096), "
       "shadow-bias TEXELS (>= 0), tessellation N (1..64), view ab cpu-gl|pixel-vertex");
   ImGui::Spacing();
-  ImGui::TextDisabled("Layout and recent files: %s", session.config_folder.string().c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  ImGui::TextWrapped("Layout and recent files: %s", session.config_folder.string().c_str());
   if (session.autosaver) {
-    ImGui::TextDisabled("Crash recovery file: %s", session.autosaver->file().string().c_str());
+    ImGui::TextWrapped("Crash recovery file: %s", session.autosaver->file().string().c_str());
   }
+  ImGui::PopStyleColor();
   ImGui::End();
 }
 

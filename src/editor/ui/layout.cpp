@@ -1,11 +1,14 @@
-// The window's layout: the menu bar on top, the Material and Reference panels on the left, the
-// Lights & Scene and View & Quality panels on the right, the viewport between them, the status
-// bar below, the floating windows and questions over them. Each is handed only the parts of
-// the App it may touch (panels/panels.h).
+// The window's layout (editor/model/layout/panel_layout.h has its rules): the menu bar on top, the
+// Material and Reference panels on the left, the Lights & Scene and View & Quality panels on the
+// right, the viewport between them, the status bar below, the floating windows and questions
+// over them. Panels collapse to strips and the viewport can take the whole width; the splitters
+// and the panels' collapse buttons are small windows kept above the panels. Each panel is handed
+// only the parts of the App it may touch (panels/panels.h).
 #include <algorithm>
 #include <cmath>
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "editor/ui/app.h"
 #include "editor/ui/panels/panels.h"
@@ -14,93 +17,219 @@ namespace gloss {
 
 namespace {
 
-// A thin handle over the border between two panels: dragging it moves the border. vertical:
-// a left-right border (moved along x), else a top-bottom one. Returns the drag this frame.
-float splitter(const char* id, ImVec2 pos, ImVec2 size, bool vertical) {
-  ImGui::SetNextWindowPos(pos);
-  ImGui::SetNextWindowSize(size);
+ImVec2 at(const LayoutRect& r, ImVec2 origin) {
+  return ImVec2(origin.x + r.x, origin.y + r.y);
+}
+ImVec2 size_of(const LayoutRect& r) {
+  return ImVec2(r.w, r.h);
+}
+
+// A small undecorated window over the panels at r (splitters, buttons, strips). The panels are
+// kept at the back (send_to_back), so these stay above them even after a click on a panel, and
+// the floating windows above both.
+bool begin_overlay(const char* id, const LayoutRect& r, ImVec2 origin, bool background = false) {
+  ImGui::SetNextWindowPos(at(r, origin));
+  ImGui::SetNextWindowSize(size_of(r));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1, 1));
-  ImGui::Begin(id, nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground |
-                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
-  ImGui::PopStyleVar(2);
-  ImGui::InvisibleButton("##handle", size);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings |
+                                 ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav |
+                                 (background ? 0 : ImGuiWindowFlags_NoBackground);
+  const bool open = ImGui::Begin(id, nullptr, flags);
+  ImGui::PopStyleVar(3);
+  return open;
+}
+
+// A handle over the border between two panels, kSplitterWidth pixels wide: dragging it moves the
+// border; hovered or dragged, it lights up and the cursor shows the resize arrows. vertical: a
+// left-right border (moved along x), else a top-bottom one. Returns the drag this frame.
+float splitter(const char* id, const LayoutRect& r, ImVec2 origin, bool vertical) {
+  if (!r.visible()) return 0.0f;
   float moved = 0.0f;
-  if (ImGui::IsItemHovered() || ImGui::IsItemActive()) {
-    ImGui::SetMouseCursor(vertical ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
-    ImGui::GetWindowDrawList()->AddRectFilled(
-        pos, ImVec2(pos.x + size.x, pos.y + size.y),
-        ImGui::GetColorU32(ImGui::IsItemActive() ? ImGuiCol_SeparatorActive
-                                                 : ImGuiCol_SeparatorHovered));
+  if (begin_overlay(id, r, origin)) {
+    const ImVec2 pos = at(r, origin);
+    ImGui::InvisibleButton("##handle", size_of(r));
+    if (ImGui::IsItemHovered() || ImGui::IsItemActive()) {
+      ImGui::SetMouseCursor(vertical ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
+      ImGui::GetWindowDrawList()->AddRectFilled(
+          pos, ImVec2(pos.x + r.w, pos.y + r.h),
+          ImGui::GetColorU32(ImGui::IsItemActive() ? ImGuiCol_SeparatorActive
+                                                   : ImGuiCol_SeparatorHovered));
+    }
+    if (ImGui::IsItemActive())
+      moved = vertical ? ImGui::GetIO().MouseDelta.x : ImGui::GetIO().MouseDelta.y;
   }
-  if (ImGui::IsItemActive())
-    moved = vertical ? ImGui::GetIO().MouseDelta.x : ImGui::GetIO().MouseDelta.y;
   ImGui::End();
   return moved;
+}
+
+// A collapsed panel: a strip with the panels' names written down it; a click expands them.
+bool strip(const char* id, const LayoutRect& r, ImVec2 origin, const char* names,
+           const char* tooltip) {
+  if (!r.visible()) return false;
+  bool clicked = false;
+  if (begin_overlay(id, r, origin, true)) {
+    const ImVec2 pos = at(r, origin);
+    clicked = ImGui::InvisibleButton("##expand", size_of(r));
+    ImDrawList* list = ImGui::GetWindowDrawList();
+    list->AddRectFilled(pos, ImVec2(pos.x + r.w, pos.y + r.h),
+                        ImGui::GetColorU32(ImGuiCol_TitleBg));
+    if (ImGui::IsItemHovered()) {
+      list->AddRectFilled(pos, ImVec2(pos.x + r.w, pos.y + r.h),
+                          ImGui::GetColorU32(ImGuiCol_HeaderHovered));
+      ImGui::SetTooltip("%s", tooltip);
+    }
+    // One letter a line, centred; '|' starts the next name after a gap.
+    const float line = ImGui::GetTextLineHeight();
+    float y = pos.y + 8.0f;
+    const ImU32 colour = ImGui::GetColorU32(ImGuiCol_Text);
+    for (const char* c = names; *c != '\0' && y + line < pos.y + r.h; ++c) {
+      if (*c == '|') {
+        y += line;
+        continue;
+      }
+      const char text[2] = {*c, '\0'};
+      const float w = ImGui::CalcTextSize(text).x;
+      list->AddText(ImVec2(pos.x + (r.w - w) * 0.5f, y), colour, text);
+      y += *c == ' ' ? line * 0.5f : line;
+    }
+  }
+  ImGui::End();
+  return clicked;
+}
+
+// A small button over a corner of a panel or the viewport (collapse, maximise).
+bool corner_button(const char* id, const char* label, const char* tooltip, float right, float top) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float w = ImGui::CalcTextSize(label).x + style.FramePadding.x * 2.0f;
+  const float h = ImGui::GetFrameHeight();
+  const LayoutRect r{right - w - 2.0f, top + 1.0f, w, h};
+  bool clicked = false;
+  if (begin_overlay(id, r, ImVec2(0, 0))) {
+    clicked = ImGui::Button(label, ImVec2(w, h));
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
+  }
+  ImGui::End();
+  return clicked;
+}
+
+// The docked windows (panels, viewport, status bar) behind everything else: a click on a panel
+// would otherwise bring it over the splitters on its border, leaving half of their width.
+void send_to_back(const char* name) {
+  if (ImGuiWindow* w = ImGui::FindWindowByName(name)) ImGui::BringWindowToDisplayBack(w);
+}
+
+// Floating windows and questions stay inside the main window: one that a smaller window (or a
+// position kept from a larger one) leaves partly outside is moved back in, and shrunk when it is
+// larger than the window. Panels, the viewport and the bars are placed every frame anyway.
+void keep_windows_inside() {
+  ImGuiContext& g = *ImGui::GetCurrentContext();
+  const ImGuiViewport* main = ImGui::GetMainViewport();
+  const ImVec2 lo = main->Pos;
+  const ImVec2 hi(main->Pos.x + main->Size.x, main->Pos.y + main->Size.y);
+  for (ImGuiWindow* w : g.Windows) {
+    if (!w->WasActive || (w->Flags & (ImGuiWindowFlags_ChildWindow | ImGuiWindowFlags_Tooltip)) ||
+        w->Collapsed) {
+      continue;
+    }
+    ImVec2 size = w->Size;
+    if (size.x > main->Size.x || size.y > main->Size.y) {
+      size = ImVec2(std::min(size.x, main->Size.x), std::min(size.y, main->Size.y));
+      ImGui::SetWindowSize(w, size, ImGuiCond_Always);
+    }
+    const ImVec2 pos(std::clamp(w->Pos.x, lo.x, hi.x - size.x),
+                     std::clamp(w->Pos.y, lo.y, hi.y - size.y));
+    if (pos.x != w->Pos.x || pos.y != w->Pos.y) ImGui::SetWindowPos(w, pos, ImGuiCond_Always);
+  }
+}
+
+// While a question (a modal) is open no tooltip shows: a panel drawn before the question opened,
+// in the same frame, still saw its item hovered, and ImGui draws tooltips above every window.
+void hide_tooltips_under_a_question() {
+  if (ImGui::GetTopMostPopupModal() == nullptr) return;
+  for (ImGuiWindow* w : ImGui::GetCurrentContext()->Windows) {
+    if ((w->Flags & ImGuiWindowFlags_Tooltip) != 0) w->Hidden = true;
+  }
 }
 
 }  // namespace
 
 void draw_layout(App& app) {
+  keep_windows_inside();
   draw_menu_bar(app.commands, app.view, app.snapshot, app.session, app.files, app.exports,
-                app.windows);
+                app.windows, app.layout);
   LayoutState& layout = app.layout;
   const ImGuiViewport* main = ImGui::GetMainViewport();
-  const float menu_h = ImGui::GetFrameHeight();
-  const float status_h = ImGui::GetFrameHeight() + 6.0f;
-  const float top = main->Pos.y + menu_h;
-  const float height = std::max(main->Size.y - menu_h - status_h, 1.0f);
-  const float default_side = std::clamp(main->Size.x * 0.23f, 280.0f, 420.0f);
-  // Each side panel keeps between 220 pixels and 40% of the window.
-  const float most = std::max(220.0f, main->Size.x * 0.4f);
-  if (layout.left_width <= 0.0f) layout.left_width = default_side;
-  if (layout.right_width <= 0.0f) layout.right_width = default_side;
-  layout.left_width = std::clamp(layout.left_width, 220.0f, most);
-  layout.right_width = std::clamp(layout.right_width, 220.0f, most);
-  layout.lights_share = std::clamp(layout.lights_share, 0.15f, 0.85f);
-  layout.material_share = std::clamp(layout.material_share, 0.2f, 0.9f);
-  const float side = layout.left_width;
-  const float right_side = layout.right_width;
-  const float left = main->Pos.x, right = main->Pos.x + main->Size.x;
-  const float lights_h = std::floor(height * layout.lights_share);
-  const float material_h = std::floor(height * layout.material_share);
-  draw_material_panel(app.commands, app.selection, app.view, app.material_panel, app.library,
-                      app.session.browser, ImVec2(left, top), ImVec2(side, material_h));
-  draw_reference_panel(app.commands, app.selection, app.view, app.reference_panel,
-                       ImVec2(left, top + material_h), ImVec2(side, height - material_h));
-  draw_lights_panel(app.commands, app.selection, app.view, app.session.browser,
-                    ImVec2(right - right_side, top), ImVec2(right_side, lights_h));
-  draw_view_panel(app.commands, app.view, app.viewport, app.snapshot, app.windows, app.exports,
-                  ImVec2(right - right_side, top + lights_h),
-                  ImVec2(right_side, height - lights_h));
-  const ImVec2 viewport_pos(left + side, top);
-  const ImVec2 viewport_size(std::max(main->Size.x - side - right_side, 1.0f), height);
-  app.viewport.draw(app.commands, app.view, app.selection, app.input, app.now_s(), viewport_pos,
+  const ImVec2 origin = main->Pos;
+  const PanelLayout l = panel_layout(layout.panels, main->Size.x, main->Size.y,
+                                     ImGui::GetFrameHeight(), ImGui::GetFrameHeight() + 6.0f);
+  layout.last = l;
+  if (l.left.visible()) {
+    draw_material_panel(app.commands, app.selection, app.view, app.material_panel, app.library,
+                        app.session.browser, at(l.left, origin), size_of(l.left));
+    draw_reference_panel(app.commands, app.selection, app.view, app.reference_panel,
+                         at(l.reference, origin), size_of(l.reference));
+  }
+  if (l.lights.visible()) {
+    draw_lights_panel(app.commands, app.selection, app.view, app.session.browser,
+                      at(l.lights, origin), size_of(l.lights));
+    draw_view_panel(app.commands, app.view, app.viewport, app.snapshot, app.windows, app.exports,
+                    at(l.view, origin), size_of(l.view));
+  }
+  const ImVec2 viewport_pos = at(l.viewport, origin);
+  const ImVec2 viewport_size = size_of(l.viewport);
+  app.viewport.draw(app.commands, app.view, app.selection, app.input,
+                    app.snapshot ? &*app.snapshot : nullptr, app.now_s(), viewport_pos,
                     viewport_size);
   draw_inspector(app.inspector, app.view, app.document, app.snapshot, app.viewport, viewport_pos,
                  viewport_size);
-  // The splitters go over the borders, after the panels so that they are on top.
-  layout.left_width +=
-      splitter("##split-left", ImVec2(left + side - 3.0f, top), ImVec2(6.0f, height), true);
-  layout.right_width -=
-      splitter("##split-right", ImVec2(right - right_side - 3.0f, top), ImVec2(6.0f, height), true);
-  layout.lights_share +=
-      splitter("##split-lights", ImVec2(right - right_side, top + lights_h - 3.0f),
-               ImVec2(right_side, 6.0f), false) /
-      height;
-  layout.material_share += splitter("##split-material", ImVec2(left, top + material_h - 3.0f),
-                                    ImVec2(side, 6.0f), false) /
-                           height;
+  for (const char* name :
+       {"Material", "Lights & Scene", "View & Quality", "Viewport", "##status"}) {
+    send_to_back(name);
+  }
+  // Over the panels, after them: splitters, the collapse buttons, the strips.
+  PanelChoices& panels = layout.panels;
+  panels.left_width = l.left_width + splitter("##split-left", l.left_split, origin, true);
+  panels.right_width = l.right_width - splitter("##split-right", l.right_split, origin, true);
+  panels.lights_share +=
+      splitter("##split-lights", l.lights_split, origin, false) / std::max(l.viewport.h, 1.0f);
+  panels.material_share +=
+      splitter("##split-material", l.material_split, origin, false) / std::max(l.viewport.h, 1.0f);
+  clamp_panel_widths(panels, main->Size.x);
+  if (l.left.visible() &&
+      corner_button("##collapse-left", "<", "collapse Material and Reference to a strip ([)",
+                    origin.x + l.left.right(), origin.y + l.left.y)) {
+    panels.left_collapsed = true;
+  }
+  if (l.lights.visible() &&
+      corner_button("##collapse-right", ">",
+                    "collapse Lights & Scene and View & Quality to a strip (])",
+                    origin.x + l.lights.right(), origin.y + l.lights.y)) {
+    panels.right_collapsed = true;
+  }
+  if (strip("##strip-left", l.left_strip, origin, "Material", "Material: click to expand ([)")) {
+    panels.left_collapsed = false;
+  }
+  if (strip("##strip-right", l.right_strip, origin, "Lights|View",
+            "Lights & Scene, View & Quality: click to expand (])")) {
+    panels.right_collapsed = false;
+  }
+  if (corner_button("##maximise", panels.viewport_maximised ? "restore panels" : "maximise",
+                    panels.viewport_maximised ? "show the panels again (Ctrl+Space)"
+                                              : "the viewport takes the whole width (Ctrl+Space)",
+                    viewport_pos.x + viewport_size.x, viewport_pos.y)) {
+    panels.viewport_maximised = !panels.viewport_maximised;
+  }
   draw_status_bar(app.viewport, app.view, app.frame.times, app.notices, app.session,
-                  ImVec2(left, top + height), ImVec2(main->Size.x, status_h));
+                  at(l.status, origin), size_of(l.status));
   // The Quality window opens over the viewport's right side (its table needs more width than a
   // side panel has); it can be moved, resized and closed.
   const float quality_w = std::min(480.0f, viewport_size.x);
   draw_quality_panel(app.quality, app.windows, app.view, app.commands,
-                     ImVec2(viewport_pos.x + viewport_size.x - quality_w, top),
-                     ImVec2(quality_w, height));
-  app.notices.draw(viewport_pos.x + viewport_size.x, top + height);
+                     ImVec2(viewport_pos.x + viewport_size.x - quality_w, viewport_pos.y),
+                     ImVec2(quality_w, viewport_size.y));
+  app.notices.draw(viewport_pos.x + viewport_size.x, viewport_pos.y + viewport_size.y);
   FileBrowser& browser = app.session.browser;
   std::string chosen;
   if (browser.draw(app.session.recent.of(recent_kind(browser.purpose)), chosen)) {
@@ -110,6 +239,7 @@ void draw_layout(App& app) {
   draw_recovery_modal(app.session, app.files);
   draw_quit_modal(app.windows, app.commands, app.files, app.run);
   draw_open_modal(app.session, app.commands, app.files);
+  hide_tooltips_under_a_question();
 }
 
 }  // namespace gloss

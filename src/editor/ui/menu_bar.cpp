@@ -5,6 +5,7 @@
 #include "editor/ui/parts/commands.h"
 #include "editor/ui/parts/exports.h"
 #include "editor/ui/parts/file_actions.h"
+#include "editor/ui/parts/layout_state.h"
 #include "editor/ui/parts/open_windows.h"
 #include "editor/ui/parts/session.h"
 
@@ -70,6 +71,7 @@ void file_menu(Commands& commands, const ViewSettings& view, Session& session, F
   if (ImGui::MenuItem("Screenshot: term sheet")) exports.start(ScreenshotKind::terms);
   if (ImGui::MenuItem("Screenshot: frame as shown")) exports.start(ScreenshotKind::shown);
   if (ImGui::MenuItem("Screenshot: whole window")) exports.start(ScreenshotKind::window);
+  if (ImGui::MenuItem("Screenshot: linear EXR")) exports.start(ScreenshotKind::exr);
   ImGui::Separator();
   if (ImGui::MenuItem("Quit", "Ctrl+Q")) files.request_quit();
   ImGui::EndMenu();
@@ -145,20 +147,51 @@ void view_menu(Commands& commands, ViewSettings& view, std::optional<Snapshot>& 
   if (ImGui::MenuItem("sRGB display encoding", nullptr, srgb)) {
     commands.execute(SetField{FieldPart::render, 0, "srgb", number_value(!srgb)});
   }
-  if (ImGui::MenuItem("Reset exposure")) view.exposure = 0.0f;
+  if (ImGui::BeginMenu("Tone curve")) {
+    const ToneCurve tone = commands.scene().render.tone;
+    for (ToneCurve t : {ToneCurve::none, ToneCurve::reinhard, ToneCurve::aces}) {
+      if (ImGui::MenuItem(to_string(t), nullptr, t == tone) && t != tone) {
+        commands.execute(SetField{FieldPart::render, 0, "tone", number_value(static_cast<int>(t))});
+      }
+    }
+    ImGui::EndMenu();
+  }
+  if (ImGui::MenuItem("Reset exposure", nullptr, false, commands.scene().render.exposure != 0.0f)) {
+    commands.execute(SetField{FieldPart::render, 0, "exposure", number_value(0.0)});
+  }
   ImGui::MenuItem("Orbit light", nullptr, &view.orbit_light);
   ImGui::MenuItem("Quality: speed / accuracy", nullptr, &windows.quality);
+  ImGui::EndMenu();
+}
+
+// Where the panels are: collapsed to strips, or hidden behind a maximised viewport.
+void panels_menu(LayoutState& layout) {
+  if (!ImGui::BeginMenu("Panels")) return;
+  PanelChoices& p = layout.panels;
+  ImGui::MenuItem("Maximise the viewport", "Ctrl+Space", &p.viewport_maximised);
+  bool left = !p.left_collapsed, right = !p.right_collapsed;
+  if (ImGui::MenuItem("Material", "[", &left)) {
+    p.left_collapsed = !left;
+    p.viewport_maximised = false;
+  }
+  if (ImGui::MenuItem("Lights & Scene, View & Quality", "]", &right)) {
+    p.right_collapsed = !right;
+    p.viewport_maximised = false;
+  }
+  if (ImGui::MenuItem("Reset the layout")) layout.panels = PanelChoices{};
   ImGui::EndMenu();
 }
 
 }  // namespace
 
 void draw_menu_bar(Commands& commands, ViewSettings& view, std::optional<Snapshot>& snapshot,
-                   Session& session, FileActions& files, Exports& exports, OpenWindows& windows) {
+                   Session& session, FileActions& files, Exports& exports, OpenWindows& windows,
+                   LayoutState& layout) {
   if (!ImGui::BeginMainMenuBar()) return;
   file_menu(commands, view, session, files, exports);
   edit_menu(commands);
   view_menu(commands, view, snapshot, windows);
+  panels_menu(layout);
   if (ImGui::BeginMenu("Help")) {
     if (ImGui::MenuItem("Help and shortcuts", "F1")) windows.help = true;
     ImGui::EndMenu();

@@ -12,13 +12,67 @@
 #include "editor/model/script/script_runner.h"
 #include "editor/ui/app.h"
 #include "editor/ui/panels/quality_parts.h"
+#include "editor/ui/shortcuts.h"
 
 namespace gloss {
+
+std::string layout_text(const App& app) {
+  const PanelLayout& l = app.layout.last;
+  const PanelChoices& c = app.layout.panels;
+  std::string out;
+  char line[256];
+  auto rect = [&](const char* name, const LayoutRect& r) {
+    std::snprintf(line, sizeof line, " %s=%g,%g,%gx%g", name, r.x, r.y, r.w, r.h);
+    out += line;
+  };
+  std::snprintf(line, sizeof line, "layout: window=%gx%g", l.status.w, l.status.bottom());
+  out += line;
+  rect("viewport", l.viewport);
+  rect("left", l.left);
+  rect("lights", l.lights);
+  rect("view", l.view);
+  rect("left_strip", l.left_strip);
+  rect("right_strip", l.right_strip);
+  rect("left_split", l.left_split);
+  rect("right_split", l.right_split);
+  rect("status", l.status);
+  std::snprintf(line, sizeof line, " maximised=%d left_collapsed=%d right_collapsed=%d\n",
+                c.viewport_maximised ? 1 : 0, c.left_collapsed ? 1 : 0, c.right_collapsed ? 1 : 0);
+  out += line;
+  const Viewport& v = app.viewport;
+  std::snprintf(line, sizeof line, "layout: mode=%s panes=%d", to_string(app.view.mode),
+                v.pane_count());
+  out += line;
+  const ImGuiViewport* main = ImGui::GetMainViewport();
+  for (int i = 0; i < v.pane_count(); ++i) {
+    const Pane& p = v.pane(i);
+    const std::string name = "pane" + std::to_string(i);
+    rect(name.c_str(), {p.min.x - main->Pos.x, p.min.y - main->Pos.y, p.size.x, p.size.y});
+  }
+  const Pane& g = v.legend();
+  rect("legend", {g.min.x - main->Pos.x, g.min.y - main->Pos.y, g.size.x, g.size.y});
+  out += "\n";
+  // Each light's marker in the first pane, as fractions of it (what `mouse press` takes).
+  const Scene& scene = app.document.scene();
+  for (int i = 0; i < static_cast<int>(scene.lights.size()) && v.pane_count() > 0; ++i) {
+    const Pane& p = v.pane(0);
+    const EdgeMarker m = v.light_marker(scene, i, p);
+    const glm::vec3& at = scene.lights[static_cast<std::size_t>(i)].position;
+    std::snprintf(line, sizeof line,
+                  "layout: light %d marker=%.4f,%.4f on_screen=%d selected=%d position=%g %g %g\n",
+                  i, m.position.x / std::max(p.size.x, 1.0f),
+                  m.position.y / std::max(p.size.y, 1.0f), m.on_screen ? 1 : 0,
+                  i == app.selection.light ? 1 : 0, at.x, at.y, at.z);
+    out += line;
+  }
+  return out;
+}
 
 std::string stats_text(App& app) {
   // Every pixel of the live image as shown (exposure_histogram.h: any channel above 1).
   const double clipped_share =
-      app.viewport.histogram(app.view, app.document.scene().render.srgb, true).clipped_share();
+      app.viewport.histogram(app.view, display_transform(app.document.scene().render), true)
+          .clipped_share();
   char text[512];
   const LatencyProbe& latency = app.viewport.latency();
   const RenderedFrame* frame = app.viewport.shown_frame();
@@ -28,7 +82,7 @@ std::string stats_text(App& app) {
   std::snprintf(text, sizeof text,
                 "ui_frame_ms avg=%.2f median=%.2f max=%.2f frames=%d | edit_to_first_image_ms=%.1f "
                 "edit_to_full_image_ms=%.1f | pass=%d spp=%d/%d size=%dx%d pass_ms=%.1f "
-                "since_change_ms=%.1f rays_per_s=%.3g clipped=%.2f%%",
+                "since_change_ms=%.1f rays_per_s=%.3g clipped=%.3g%%",
                 app.frame.times.average(), app.frame.times.median(), app.frame.times.largest(),
                 app.frame.times.size, latency.first_image_ms, latency.full_image_ms, info.pass,
                 info.spp, info.target_spp, info.width, info.height, info.pass_ms,
@@ -105,6 +159,10 @@ bool ScriptPlayer::wait_done(App& app, double now_s) {
       std::fflush(stdout);
       return true;
     }
+    case Waiting::layout:  // a frame has been laid out since the line: print that one
+      std::printf("%s", layout_text(app).c_str());
+      std::fflush(stdout);
+      return true;
     case Waiting::none:
       return true;
   }
@@ -161,6 +219,35 @@ class ScriptPlayer::Host : public ScriptHost {
   }
   LineResult sleep(const SleepAction& a) override {
     return hold(Waiting::sleep, m_now + a.seconds);
+  }
+  LineResult layout(const LayoutAction& a, const std::string&) override {
+    PanelChoices& p = m_app.layout.panels;
+    switch (a.verb) {
+      case LayoutAction::Verb::print:
+        return hold(Waiting::layout, m_now);
+      case LayoutAction::Verb::maximise:
+        p.viewport_maximised = a.on;
+        break;
+      case LayoutAction::Verb::collapse:
+      case LayoutAction::Verb::expand:
+        (a.right ? p.right_collapsed : p.left_collapsed) = a.verb == LayoutAction::Verb::collapse;
+        p.viewport_maximised = false;
+        break;
+      case LayoutAction::Verb::reset:
+        p = PanelChoices{};
+        break;
+    }
+    return hold(Waiting::sleep, m_now);  // the next frame is laid out with it
+  }
+  LineResult key(const KeyAction& a, const std::string& where) override {
+    const Shortcut* shortcut = find_shortcut(a.keys);
+    if (shortcut == nullptr) {
+      std::fprintf(stderr, "error: %sno keyboard shortcut '%s' (the help window lists them)\n",
+                   where.c_str(), a.keys.c_str());
+      return LineResult::stop(2);
+    }
+    m_app.input.key_presses.push_back({shortcut->key, shortcut->mods, false});
+    return hold(Waiting::sleep, m_now);  // the next frame acts on it
   }
   LineResult quality(const QualityAction& action, const std::string& where) override {
     switch (action.verb) {

@@ -23,7 +23,7 @@ class ScriptPlayer {
   bool finished() const { return m_next >= m_script.lines.size(); }
 
  private:
-  enum class Waiting { none, converge, shown, files, sleep, quality };
+  enum class Waiting { none, converge, shown, files, sleep, quality, layout };
   class Host;
   friend class Host;
   bool wait_done(App& app, double now_s);
@@ -35,6 +35,8 @@ class ScriptPlayer {
   double m_deadline_s = 0.0;
 };
 
+// The `layout` line's text: where the panels, panes, legend and light markers are.
+std::string layout_text(const App& app);
 // The `stats` line's text: UI frame times, edit-to-image delays, the renderer's last pass.
 std::string stats_text(App& app);  // non-const: computes the clipped share
 

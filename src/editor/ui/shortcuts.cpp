@@ -2,6 +2,9 @@
 // them. Dear ImGui 1.86 reads key state once per frame, so a press and release that arrive
 // between two frames would be lost: shortcuts read a queue of GLFW key events instead, and such
 // taps are replayed to ImGui as held for one frame (Enter in a text field, Backspace ...).
+#include <cctype>
+#include <string>
+
 #include <imgui.h>
 #include <imgui_internal.h>
 
@@ -111,44 +114,164 @@ void replay_key_taps(InputState& input, GLFWwindow* window) {
   io.KeySuper = io.KeysDown[GLFW_KEY_LEFT_SUPER] || io.KeysDown[GLFW_KEY_RIGHT_SUPER];
 }
 
+const std::vector<Shortcut>& shortcuts() {
+  constexpr int ctrl = GLFW_MOD_CONTROL, shift = GLFW_MOD_SHIFT;
+  using A = ShortcutAction;
+  static const std::vector<Shortcut> table = {
+      {GLFW_KEY_F1, 0, A::help, "F1", "show or hide this help"},
+      {GLFW_KEY_Z, ctrl, A::undo, "Ctrl+Z", "undo", true},
+      {GLFW_KEY_Z, ctrl | shift, A::redo, "Ctrl+Shift+Z, Ctrl+Y", "redo", true},
+      {GLFW_KEY_Y, ctrl, A::redo, "", "", true},
+      {GLFW_KEY_S, ctrl, A::screenshot, "Ctrl+S", "screenshot (the kind chosen in View & Quality)"},
+      {GLFW_KEY_S, ctrl | shift, A::save_scene, "Ctrl+Shift+S",
+       "save the scene (asks for a name when it has none)"},
+      {GLFW_KEY_O, ctrl, A::open_scene, "Ctrl+O", "open a scene"},
+      {GLFW_KEY_Q, ctrl, A::quit, "Ctrl+Q", "quit (asks when there are unsaved changes)"},
+      {GLFW_KEY_1, 0, A::view_render, "1", "view: the render", false, true},
+      {GLFW_KEY_2, 0, A::view_terms, "2", "view: the terms, 2 x 2", false, true},
+      {GLFW_KEY_3, 0, A::view_single, "3", "view: one term", false, true},
+      {GLFW_KEY_4, 0, A::view_ab, "4", "view: A/B with the heat map of |A - B|", false, true},
+      {GLFW_KEY_5, 0, A::view_lobe, "5", "view: the BRDF lobe of the selected material", false,
+       true},
+      {GLFW_KEY_I, 0, A::inspector, "I", "show or hide the pixel inspector", false, true},
+      {GLFW_KEY_B, ctrl, A::snapshot, "Ctrl+B",
+       "snapshot: keep the scene now as A, compare later edits (B) with it"},
+      {GLFW_KEY_SPACE, ctrl, A::maximise_viewport, "Ctrl+Space",
+       "maximise the viewport (hide the panels), or restore them"},
+      {GLFW_KEY_LEFT_BRACKET, 0, A::toggle_left_panel, "[",
+       "collapse the Material panel to a strip, or expand it", false, true},
+      {GLFW_KEY_RIGHT_BRACKET, 0, A::toggle_right_panels, "]",
+       "collapse the Lights & Scene and View & Quality panels, or expand them", false, true},
+      {GLFW_KEY_ESCAPE, 0, A::close, "Esc",
+       "close an open menu or list, this help, the file panel"},
+  };
+  return table;
+}
+
+std::string shortcut_name(const Shortcut& s) {
+  std::string name;
+  if (s.mods & GLFW_MOD_CONTROL) name += "Ctrl+";
+  if (s.mods & GLFW_MOD_SHIFT) name += "Shift+";
+  if (s.mods & GLFW_MOD_ALT) name += "Alt+";
+  if (s.mods & GLFW_MOD_SUPER) name += "Super+";
+  if (s.key >= GLFW_KEY_A && s.key <= GLFW_KEY_Z) return name + static_cast<char>(s.key);
+  if (s.key >= GLFW_KEY_0 && s.key <= GLFW_KEY_9) return name + static_cast<char>(s.key);
+  if (s.key >= GLFW_KEY_F1 && s.key <= GLFW_KEY_F12) {
+    return name + "F" + std::to_string(s.key - GLFW_KEY_F1 + 1);
+  }
+  switch (s.key) {
+    case GLFW_KEY_SPACE:
+      return name + "Space";
+    case GLFW_KEY_ESCAPE:
+      return name + "Esc";
+    case GLFW_KEY_LEFT_BRACKET:
+      return name + "[";
+    case GLFW_KEY_RIGHT_BRACKET:
+      return name + "]";
+    default:
+      return name + "key " + std::to_string(s.key);
+  }
+}
+
+const Shortcut* find_shortcut(const std::string& keys) {
+  auto lower = [](std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+  };
+  for (const Shortcut& s : shortcuts()) {
+    if (lower(shortcut_name(s)) == lower(keys)) return &s;
+  }
+  return nullptr;
+}
+
+namespace {
+
+void act(App& app, ShortcutAction action) {
+  LayoutState& layout = app.layout;
+  switch (action) {
+    case ShortcutAction::help:
+      app.windows.help = !app.windows.help;
+      break;
+    case ShortcutAction::undo:
+      app.commands.undo();
+      break;
+    case ShortcutAction::redo:
+      app.commands.redo();
+      break;
+    case ShortcutAction::screenshot:
+      app.exports.start(app.view.screenshot_kind);
+      break;
+    case ShortcutAction::save_scene:
+      save_scene_shortcut(app);
+      break;
+    case ShortcutAction::open_scene:
+      app.session.browser.show(BrowsePurpose::open_scene,
+                               scene_folder(app.document.scene().path, app.view.screenshot_dir),
+                               "");
+      break;
+    case ShortcutAction::quit:
+      app.files.request_quit();
+      break;
+    case ShortcutAction::snapshot:
+      snapshot_and_compare(app.commands, app.snapshot, app.view);
+      break;
+    case ShortcutAction::view_render:
+      app.view.mode = ViewMode::render;
+      break;
+    case ShortcutAction::view_terms:
+      app.view.mode = ViewMode::terms;
+      break;
+    case ShortcutAction::view_single:
+      app.view.mode = ViewMode::single;
+      break;
+    case ShortcutAction::view_ab:
+      app.view.mode = ViewMode::ab;
+      break;
+    case ShortcutAction::view_lobe:
+      app.view.mode = ViewMode::lobe;
+      break;
+    case ShortcutAction::inspector:
+      app.view.show_inspector = !app.view.show_inspector;
+      break;
+    case ShortcutAction::maximise_viewport:
+      layout.panels.viewport_maximised = !layout.panels.viewport_maximised;
+      break;
+    case ShortcutAction::toggle_left_panel:
+      layout.panels.viewport_maximised = false;
+      layout.panels.left_collapsed = !layout.panels.left_collapsed;
+      break;
+    case ShortcutAction::toggle_right_panels:
+      layout.panels.viewport_maximised = false;
+      layout.panels.right_collapsed = !layout.panels.right_collapsed;
+      break;
+    case ShortcutAction::close:
+      app.windows.help = false;
+      app.session.browser.open = false;
+      close_menus();
+      break;
+  }
+}
+
+}  // namespace
+
 void handle_shortcuts(App& app) {
   std::vector<KeyPress> presses;
   presses.swap(app.input.key_presses);
   // Keys typed into a text field belong to the field (Ctrl+Z there is the field's own undo).
   if (ImGui::GetIO().WantTextInput) return;
+  // A question (recover, quit, open over unsaved edits) is answered first: no key acts behind it
+  // (Esc is its Cancel, handled by the question itself).
+  if (ImGui::GetTopMostPopupModal() != nullptr) return;
+  constexpr int kModifiers = GLFW_MOD_CONTROL | GLFW_MOD_SHIFT | GLFW_MOD_ALT | GLFW_MOD_SUPER;
   for (const KeyPress& press : presses) {
-    const bool ctrl = (press.mods & GLFW_MOD_CONTROL) != 0;
-    const bool shift = (press.mods & GLFW_MOD_SHIFT) != 0;
-    if (ctrl && press.key == GLFW_KEY_Z) {
-      shift ? app.commands.redo() : app.commands.undo();
-    } else if (ctrl && press.key == GLFW_KEY_Y) {
-      app.commands.redo();
-    }
-    if (press.repeat) continue;  // only undo and redo auto-repeat
-    if (press.key == GLFW_KEY_F1) app.windows.help = !app.windows.help;
-    if (ctrl && press.key == GLFW_KEY_S) {
-      shift ? save_scene_shortcut(app) : app.exports.start(app.view.screenshot_kind);
-    }
-    if (ctrl && press.key == GLFW_KEY_O) {
-      app.session.browser.show(BrowsePurpose::open_scene,
-                               scene_folder(app.document.scene().path, app.view.screenshot_dir),
-                               "");
-    }
-    if (ctrl && press.key == GLFW_KEY_Q) app.files.request_quit();
-    if (ctrl && press.key == GLFW_KEY_B) snapshot_and_compare(app.commands, app.snapshot, app.view);
-    if (press.mods == 0 && press.key >= GLFW_KEY_1 && press.key <= GLFW_KEY_5 &&
-        !ImGui::IsAnyItemActive()) {
-      const ViewMode modes[5] = {ViewMode::render, ViewMode::terms, ViewMode::single, ViewMode::ab,
-                                 ViewMode::lobe};
-      app.view.mode = modes[press.key - GLFW_KEY_1];
-    }
-    if (press.mods == 0 && press.key == GLFW_KEY_I && !ImGui::IsAnyItemActive()) {
-      app.view.show_inspector = !app.view.show_inspector;
-    }
-    if (press.key == GLFW_KEY_ESCAPE) {
-      app.windows.help = false;
-      app.session.browser.open = false;
-      close_menus();
+    const int mods = press.mods & kModifiers;
+    for (const Shortcut& s : shortcuts()) {
+      if (s.key != press.key || s.mods != mods) continue;
+      if (press.repeat && !s.repeats) break;
+      // A plain key while a slider is dragged or a field edited belongs to it.
+      if (s.plain && ImGui::IsAnyItemActive()) break;
+      act(app, s.action);
+      break;
     }
   }
 }

@@ -139,6 +139,7 @@ bool copy_kept_samples(const SamplePlane& from, SamplePlane& to,
         copy(from.lights[li].cos_phong, to.lights[li].cos_phong);
         copy(from.lights[li].cos_blinn, to.lights[li].cos_blinn);
       }
+      for (std::size_t c = 0; c < to.texels.size(); ++c) copy(from.texels[c], to.texels[c]);
     }
   });
 }
@@ -173,9 +174,11 @@ bool update_refined_samples(SampleCache& cache, const RenderContext& ctx,
   next.spp = old.spp;
   next.pixels = std::move(pixels);
   next.plane = std::move(spare);
-  size_plane(next.plane, next.entries(), ctx.plan.slots());
-  // The light factors of kept samples are copied when current (the same plan), else made anew.
-  const bool copy_lights = !lights_stale && old.plane.lights.size() == next.plane.lights.size();
+  size_plane(next.plane, next.entries(), ctx.plan.plane_shape());
+  // The light factors (and the maps' texels, made in the same pass) of kept samples are copied
+  // when current (the same plan), else made anew.
+  const bool copy_lights = !lights_stale && old.plane.lights.size() == next.plane.lights.size() &&
+                           old.plane.texels.size() == next.plane.texels.size();
   const bool copied =
       copy_kept_samples(old.plane, next.plane, copies, spp, copy_lights, ctx.cancel);
   // Packets over the runs: traced entries get primary rays, kept ones with stale light factors

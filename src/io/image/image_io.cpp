@@ -164,10 +164,9 @@ png_text describe_text_chunk(const std::pair<std::string, std::string>& pair) {
 }  // namespace
 
 unsigned char encode_channel(float linear, bool srgb) {
-  // !(x > 0) also sends NaN to 0.
-  double v = !(linear > 0.0f) ? 0.0 : (linear >= 1.0f ? 1.0 : static_cast<double>(linear));
-  if (srgb) v = v < 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
-  return static_cast<unsigned char>(std::min(255.0, std::floor(v * 255.0 + 0.5)));
+  DisplayTransform display;
+  display.srgb = srgb;
+  return display_byte(linear, display);
 }
 
 void write_pfm(const std::string& path, const Image& image) {
@@ -239,6 +238,13 @@ Image read_pfm(const std::string& path) {
 }
 
 void write_png(const std::string& path, const Image& image, bool srgb, const TextChunks& text) {
+  DisplayTransform display;
+  display.srgb = srgb;
+  write_png(path, image, display, text);
+}
+
+void write_png(const std::string& path, const Image& image, const DisplayTransform& display,
+               const TextChunks& text) {
   check_image_shape(path, image);
   std::vector<png_text> chunks;
   for (const auto& pair : text) {
@@ -252,10 +258,7 @@ void write_png(const std::string& path, const Image& image, bool srgb, const Tex
   }
 
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
-  std::vector<unsigned char> rgb(row_bytes * image.height);
-  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-    for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = encode_channel(image.pixels[i][c], srgb);
-  }
+  std::vector<unsigned char> rgb = display_bytes(image, display);
   std::vector<png_bytep> rows(image.height);
   for (int y = 0; y < image.height; ++y) rows[y] = rgb.data() + row_bytes * y;
 
@@ -267,7 +270,7 @@ void write_png(const std::string& path, const Image& image, bool srgb, const Tex
     job.rows = rows.data();
     job.text = chunks.data();
     job.text_count = static_cast<int>(chunks.size());
-    job.srgb = srgb;
+    job.srgb = display.srgb;
     errno = 0;
     if (run_png_write(job)) return;
     // A short fwrite is libpng's "Write Error"; the stream's errno says why (ENOSPC: disk full).

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "base/image.h"
+#include "display/display_transform.h"
 
 namespace gloss {
 
@@ -16,8 +17,13 @@ void write_pfm(const std::string& path, const Image& image);
 // Reads what write_pfm writes (either endianness). Throws InputError.
 Image read_pfm(const std::string& path);
 
-// 8-bit RGB: clamp each channel to [0, 1], then either as is (srgb = false, the classic look) or
-// sRGB-encoded; rounds to nearest. Text chunks are stored as PNG tEXt/zTXt. Throws RuntimeFailure.
+// 8-bit RGB: each channel through the display transform (display/display_transform.h:
+// exposure, tone curve, clamp to [0, 1], as is or sRGB-encoded), rounded to nearest. Text chunks
+// are stored as PNG tEXt/zTXt. Throws RuntimeFailure.
+void write_png(const std::string& path, const Image& image, const DisplayTransform& display,
+               const TextChunks& text = {});
+// The same with the encoding alone: clamped, then as is (srgb = false, the classic look) or
+// sRGB-encoded.
 void write_png(const std::string& path, const Image& image, bool srgb = false,
                const TextChunks& text = {});
 // 8-bit RGB pixels (0..255) and the text chunks of a PNG. Throws InputError.
@@ -28,7 +34,8 @@ struct Png8 {
 };
 Png8 read_png(const std::string& path);
 
-// One display value: the PNG encoding of a linear channel value, 0..255.
+// One display value: the PNG encoding of a linear channel value, 0..255 (display_byte with the
+// encoding alone).
 unsigned char encode_channel(float linear, bool srgb);
 
 }  // namespace gloss

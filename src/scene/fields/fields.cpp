@@ -230,6 +230,20 @@ const FieldTable<RenderSettings>& render_fields() {
     t.push_back(scalar_field<&RenderSettings::srgb>(flag, "srgb", "sRGB encoding")
                     .invalidates(ChangeClass::none)
                     .explain("PNGs and the viewport sRGB-encoded; off: clamped as is"));
+    // The display transform changes no linear value (PFM and EXR hold the image before it);
+    // adaptive sampling's placement reads the displayed image, which the engine's follow-up
+    // after every edit chooses again (engine/adaptive_refinement.h).
+    t.push_back(
+        scalar_field<&RenderSettings::exposure>(FieldKind::number, "exposure", "exposure")
+            .range(-kMaxExposureStops, kMaxExposureStops)
+            .ui(-8.0, 8.0)
+            .invalidates(ChangeClass::none)
+            .explain("stops: displayed value = linear x 2^exposure, before the tone curve"));
+    t.push_back(
+        choice_field<&RenderSettings::tone>("tone", "tone curve", {"none", "reinhard", "aces"})
+            .invalidates(ChangeClass::none)
+            .explain("after the exposure, before the clamp: none (classic), Reinhard "
+                     "x / (1 + x), or the ACES film fit (Narkowicz)"));
     t.push_back(scalar_field<&RenderSettings::seed>(whole, "seed", "seed")
                     .range(0, 4294967295.0)
                     .ui(0, 1000)
@@ -246,7 +260,7 @@ const FieldTable<RenderSettings>& render_fields() {
                     .range(0.0, 1.0)
                     .ui(0.001, 0.25, true)
                     .explain("adaptive: refine where neighbouring centre pixels differ by more, "
-                             "per channel of the clamped total"));
+                             "per channel of the displayed total (after exposure, tone, clamp)"));
     t.push_back(scalar_field<&RenderSettings::env_resolution>(whole, "env_resolution",
                                                               "environment map resolution")
                     .range(1, 8)

@@ -41,19 +41,21 @@ class EditorProcessTest : public ::testing::Test {
   }
 
   // Runs gloss on scene with script_text as its --script; with_display = false runs it without X.
+  // options: more of gloss's options ("--window-width 1024 --window-height 640").
   // gloss runs from run.sh, which writes gloss's own exit status to status.txt: xvfb-run's
   // status is not gloss's when its clean-up fails (it exits 5 when it cannot remove its
   // temporary folder, seen once in CI after gloss had exited 2 as expected).
-  EditorRun run_editor(const std::string& scene, const std::string& script_text,
-                       bool with_display) {
+  EditorRun run_editor(const std::string& scene, const std::string& script_text, bool with_display,
+                       const std::string& options = "") {
     if (with_display && std::string(GLOSS_XVFB_RUN).empty()) return {};
     for (const char* name : {"status.txt", "out.txt", "err.txt", "wrapper-err.txt"}) {
       std::filesystem::remove(m_dir / name);  // a second run's files are its own
     }
     std::ofstream(m_dir / "script.txt") << script_text;
-    std::ofstream(m_dir / "run.sh") << "'" << GLOSS_EDITOR_PATH << "' '" << scene
-                                    << "' --script script.txt > out.txt 2> err.txt\n"
-                                    << "echo $? > status.txt\n";
+    std::ofstream(m_dir / "run.sh")
+        << "'" << GLOSS_EDITOR_PATH << "' '" << scene << "' --script script.txt " << options
+        << " > out.txt 2> err.txt\n"
+        << "echo $? > status.txt\n";
     std::string command = "cd '" + m_dir.string() + "' && XDG_CONFIG_HOME='" + m_dir.string() +
                           "/config' XDG_STATE_HOME='" + m_dir.string() + "/state' ";
     if (with_display) {

@@ -8,8 +8,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -47,6 +50,27 @@ class BusyProcesses {
   std::vector<pid_t> m_pids;
 };
 
+// Cores' worth of CPU time the machine spent busy (not idle or waiting on I/O) over `seconds`,
+// from /proc/stat's aggregate line; -1 when it cannot be read.
+double busy_cores(double seconds) {
+  const auto sample = [](double& busy, double& total) {
+    std::ifstream in("/proc/stat");
+    std::string cpu;
+    double v[8] = {};
+    if (!(in >> cpu) || cpu != "cpu") return false;
+    for (double& x : v) in >> x;
+    total = v[0] + v[1] + v[2] + v[3] + v[4] + v[5] + v[6] + v[7];
+    busy = total - v[3] - v[4];  // idle and iowait
+    return static_cast<bool>(in);
+  };
+  double b0 = 0, t0 = 0, b1 = 0, t1 = 0;
+  if (!sample(b0, t0)) return -1;
+  std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
+  if (!sample(b1, t1) || t1 <= t0) return -1;
+  const double cores = static_cast<double>(std::thread::hardware_concurrency());
+  return (b1 - b0) / (t1 - t0) * cores;
+}
+
 struct Window {
   int images = 0;
   double max_gap_ms = -1, median_gap_ms = -1, median_delay_ms = -1, max_delay_ms = -1;
@@ -83,6 +107,10 @@ TEST_F(LoadE2E, AnOrbitingLightKeepsTheImageMovingBesideTwoBusyProcesses) {
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
   GTEST_SKIP() << "a bound on time means nothing in an instrumented build";
 #endif
+  // The bound is the for a quiet machine plus the two processes started here: a machine
+  // already busy (other builds, another suite) is a different test, whose figures are printed
+  // and not judged. Under ctest this binary runs alone (RUN_SERIAL), so CI measures it.
+  const double before = busy_cores(1.0);
   BusyProcesses busy(2);
   ASSERT_EQ(busy.running(), 2u);
   // The first window settles the animation in; the second, 3 s of orbiting, is measured.
@@ -98,6 +126,10 @@ TEST_F(LoadE2E, AnOrbitingLightKeepsTheImageMovingBesideTwoBusyProcesses) {
       "%.1f ms, edit delay median %.1f ms max %.1f ms\n",
       w.images, w.max_gap_ms, w.median_gap_ms, w.median_delay_ms, w.max_delay_ms);
   ASSERT_GE(w.max_gap_ms, 0.0) << r.out;
+  if (before > 0.5) {
+    GTEST_SKIP() << "the machine was not quiet before the test: " << before
+                 << " cores busy over 1 s; the figures above are not judged";
+  }
   EXPECT_LE(w.max_gap_ms, kLongestGapMs) << r.out;
   EXPECT_GE(w.images, 3000 / static_cast<int>(kLongestGapMs));
   // Each image showed a newer edit: the animation's delay is measured, not 0.

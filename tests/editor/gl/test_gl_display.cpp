@@ -98,12 +98,12 @@ TEST_F(GlDisplay, ClassicClampKeepsRowsTopToBottom) {
 TEST_F(GlDisplay, ExposureMultipliesByPowersOfTwo) {
   const Image image(2, 2, glm::vec3(0.2f, 0.05f, 0.4f));
   DisplayParams p;
-  p.exposure = 1.0f;
+  p.display.gain = 2.0f;  // +1 stop
   std::vector<unsigned char> rgba = display(image, nullptr, p);
   expect_byte(rgba[0], 0.4, "0.2 x 2");
   expect_byte(rgba[1], 0.1, "0.05 x 2");
   expect_byte(rgba[2], 0.8, "0.4 x 2");
-  p.exposure = -2.0f;
+  p.display.gain = 0.25f;  // -2 stops
   rgba = display(image, nullptr, p);
   expect_byte(rgba[2], 0.1, "0.4 / 4");
 }
@@ -111,7 +111,7 @@ TEST_F(GlDisplay, ExposureMultipliesByPowersOfTwo) {
 TEST_F(GlDisplay, SrgbEncodingFollowsTheStandardCurve) {
   const Image image(2, 1, glm::vec3(0.2f, 0.002f, 0.9f));
   DisplayParams p;
-  p.srgb = true;
+  p.display.srgb = true;
   const std::vector<unsigned char> rgba = display(image, nullptr, p);
   expect_byte(rgba[0], srgb(0.2), "curve part");
   expect_byte(rgba[1], srgb(0.002), "linear part");
@@ -125,7 +125,7 @@ TEST_F(GlDisplay, ClipOverlayStripesOnlyPixelsAboveOne) {
   Image image(8, 1, glm::vec3(0.5f));
   for (int x = 4; x < 8; ++x) image.at(x, 0) = glm::vec3(0.75f, 0.1f, 0.1f);
   DisplayParams p;
-  p.exposure = 1.0f;
+  p.display.gain = 2.0f;
   p.clip_overlay = true;
   const std::vector<unsigned char> rgba = display(image, nullptr, p);
   for (int x = 0; x < 4; ++x) expect_byte(rgba[4 * x + 1], 1.0, "exactly 1 is not clipped");
@@ -136,6 +136,49 @@ TEST_F(GlDisplay, ClipOverlayStripesOnlyPixelsAboveOne) {
   p.clip_overlay = false;
   const std::vector<unsigned char> plain = display(image, nullptr, p);
   expect_byte(plain[4 * 5 + 1], 0.2, "without the overlay the clamp shows 0.1 x 2");
+}
+
+// The shader is the GLSL twin of display/display_transform.h: every tone curve, with and without
+// sRGB, at exposures up and down, gives the bytes display_byte gives (whose values the display
+// tests check by hand), within GL's rounding of one step.
+TEST_F(GlDisplay, ToneCurvesAndOrderMatchTheDisplayTransform) {
+  const float values[8] = {0.0f, 0.02f, 0.18f, 0.5f, 1.0f, 3.0f, 7.0f, 40.0f};
+  Image image(8, 1);
+  for (int x = 0; x < 8; ++x) image.at(x, 0) = glm::vec3(values[x], values[x] * 0.25f, -1.0f);
+  for (ToneCurve tone : {ToneCurve::none, ToneCurve::reinhard, ToneCurve::aces}) {
+    for (float stops : {-1.0f, 0.0f, 1.5f}) {
+      for (bool srgb_on : {false, true}) {
+        RenderSettings render;
+        render.tone = tone;
+        render.exposure = stops;
+        render.srgb = srgb_on;
+        DisplayParams p;
+        p.display = display_transform(render);
+        const std::vector<unsigned char> rgba = display(image, nullptr, p);
+        for (int x = 0; x < 8; ++x) {
+          for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(static_cast<int>(rgba[4 * x + c]),
+                        static_cast<int>(display_byte(image.at(x, 0)[c], p.display)), 1)
+                << to_string(tone) << " " << stops << " stops, srgb " << srgb_on << ", x " << x
+                << " channel " << c;
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST_F(GlDisplay, ClipOverlayFollowsTheToneCurve) {
+  // 8 under ACES is above 1 (clipped, striped); under Reinhard nothing clips.
+  Image image(8, 1, glm::vec3(8.0f, 0.0f, 0.0f));
+  DisplayParams p;
+  p.clip_overlay = true;
+  p.display.tone = ToneCurve::aces;
+  std::vector<unsigned char> rgba = display(image, nullptr, p);
+  for (int x = 0; x < 8; ++x) EXPECT_EQ(rgba[4 * x + 0], rgba[4 * x + 2]) << "striped at " << x;
+  p.display.tone = ToneCurve::reinhard;
+  rgba = display(image, nullptr, p);
+  for (int x = 0; x < 8; ++x) expect_byte(rgba[4 * x + 0], 8.0 / 9.0, "Reinhard: 8 / 9");
 }
 
 TEST_F(GlDisplay, SumModeAddsTheTwoTerms) {

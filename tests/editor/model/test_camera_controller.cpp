@@ -73,6 +73,55 @@ TEST(CameraController, EdgeMarkersClampOffScreenPointsToTheBorder) {
   EXPECT_NEAR(m.position.y, 10.0f, 1e-3f);
 }
 
+// The afternoon's bug: the arrow was drawn below the pane's label (y >= 30) but hit-tested at
+// its unclamped edge position (y = margin), so a click on the drawn arrow missed it. The marker
+// now carries the label's room itself, and the viewport draws and hit-tests that one position.
+TEST(CameraController, AnOffViewArrowAtTheTopLeavesRoomForThePanesLabel) {
+  const Camera c = front_camera();
+  EdgeMarker m = edge_marker(c, 200, 100, glm::vec3(0.0f, 20.0f, 0.0f), 10.0f, 30.0f);
+  EXPECT_FALSE(m.on_screen);
+  EXPECT_NEAR(m.position.x, 100.0f, 1e-3f);
+  EXPECT_NEAR(m.position.y, 30.0f, 1e-3f);
+  // Up and right at 45 degrees in pixels: the top's inset half height is now 50 - 30 = 20, so
+  // 20 px up and 20 px right.
+  m = edge_marker(c, 200, 100, glm::vec3(10.0f, 10.0f, 0.0f), 10.0f, 30.0f);
+  EXPECT_NEAR(m.position.x, 120.0f, 1e-3f);
+  EXPECT_NEAR(m.position.y, 30.0f, 1e-3f);
+  // Below, the plain margin.
+  m = edge_marker(c, 200, 100, glm::vec3(0.0f, -20.0f, 0.0f), 10.0f, 30.0f);
+  EXPECT_NEAR(m.position.y, 90.0f, 1e-3f);
+}
+
+// Dragging an off-view light's arrow brings the light under the cursor at the depth of the
+// camera's target, wherever it was (beside the eye, where its own depth would barely move it).
+TEST(CameraController, AnOffViewLightIsBroughtToTheTargetsDepth) {
+  const Camera c = front_camera();            // 200 x 100, target at depth 5, fov 90
+  const glm::vec3 beside(0.0f, 20.0f, 4.9f);  // depth 0.1, far above the view
+  // The cursor a quarter of the way down: y = (1 - 2 x 25 / 100) x 5 = 2.5 at depth 5.
+  const glm::vec3 moved = point_at_depth(c, 200, 100, {100.0f, 25.0f}, c.target);
+  EXPECT_NEAR(moved.x, 0.0f, 1e-4f);
+  EXPECT_NEAR(moved.y, 2.5f, 1e-4f);
+  EXPECT_NEAR(moved.z, 0.0f, 1e-4f);
+  EXPECT_FALSE(edge_marker(c, 200, 100, beside, 10.0f).on_screen);
+  EXPECT_TRUE(edge_marker(c, 200, 100, moved, 10.0f).on_screen);
+}
+
+// A pane taller than the document sees the document's view and more above and below it.
+TEST(CameraController, AnOverscanCameraKeepsTheDocumentsFrameInside) {
+  const Camera c = front_camera();  // fov 90, document 200 x 100 (aspect 2)
+  // A 100 x 100 pane (aspect 1): tan(fov'/2) = 1 x 2 / 1 = 2, fov' = 2 atan 2 = 126.87 degrees.
+  const Camera tall = overscan_camera(c, 2.0f, 1.0f);
+  EXPECT_NEAR(tall.fov_y, 126.8699f, 1e-3f);
+  // The document's corner (x, y) = (10, 5) at depth 5 lands on the pane's frame: its half width
+  // (50 px) to the right, a quarter of the pane (25 px) up from the centre: (100, 25).
+  glm::vec2 at;
+  ASSERT_TRUE(project_point(tall, 100, 100, glm::vec3(10.0f, 5.0f, 0.0f), at));
+  EXPECT_NEAR(at.x, 100.0f, 1e-3f);
+  EXPECT_NEAR(at.y, 25.0f, 1e-3f);
+  // A wider pane keeps the camera: the frame's height is the pane's.
+  EXPECT_EQ(overscan_camera(c, 2.0f, 3.0f).fov_y, 90.0f);
+}
+
 TEST(CameraController, ScreenBoundsFrameASphereByItsNearestCorners) {
   // Unit sphere at the origin, eye at z = 5: the nearest bound corners are at depth 4, where a
   // unit is 1/4 of the half height (50 px) and 1/(4 x 2) of the half width (100 px): 12.5 px.

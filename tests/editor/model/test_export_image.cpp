@@ -95,10 +95,19 @@ TEST(ExportImage, TermSheetLabelsAreWhiteTextInTheStrips) {
   EXPECT_EQ(sheet.at(100, band + 50), glm::vec3(0.25f));
 }
 
-TEST(ExportImage, ExposureIsPowersOfTwo) {
+TEST(ExportImage, ExposedIsTheTransformBeforeItsEncoding) {
   const Image image(1, 1, glm::vec3(0.2f, 0.4f, 0.8f));
-  EXPECT_EQ(exposed(image, 1.0f).at(0, 0), glm::vec3(0.4f, 0.8f, 1.6f));
-  EXPECT_EQ(exposed(image, -2.0f).at(0, 0), glm::vec3(0.05f, 0.1f, 0.2f));
+  RenderSettings render;
+  render.exposure = 1.0f;  // x 2; 1.6 clamps to 1
+  EXPECT_EQ(exposed(image, render).at(0, 0), glm::vec3(0.4f, 0.8f, 1.0f));
+  render.exposure = -2.0f;
+  EXPECT_EQ(exposed(image, render).at(0, 0), glm::vec3(0.05f, 0.1f, 0.2f));
+  render.exposure = 0.0f;
+  render.tone = ToneCurve::reinhard;  // 0.2 / 1.2, 0.4 / 1.4, 0.8 / 1.8
+  EXPECT_NEAR(exposed(image, render).at(0, 0).x, 1.0f / 6.0f, 1e-6f);
+  EXPECT_NEAR(exposed(image, render).at(0, 0).z, 4.0f / 9.0f, 1e-6f);
+  render.srgb = true;  // the PNG writer encodes; exposed() leaves it
+  EXPECT_NEAR(exposed(image, render).at(0, 0).y, 2.0f / 7.0f, 1e-6f);
 }
 
 TEST(ExportImage, ViewportKindFollowsTheSingleTermView) {
@@ -126,16 +135,20 @@ TEST(ExportImage, ExportImageExposesTheChosenTermOfGivenTerms) {
   terms.specular = Image(1, 1, glm::vec3(0.25f));
   terms.total = Image(1, 1, glm::vec3(0.85f));
   ViewSettings view;
-  view.exposure = 1.0f;  // x2
-  EXPECT_EQ(export_image(terms, view, ScreenshotKind::viewport).at(0, 0).x, 1.7f);
+  RenderSettings render;
+  render.exposure = 1.0f;  // x2, then clamped
+  EXPECT_EQ(export_image(terms, view, ScreenshotKind::viewport, render).at(0, 0).x, 1.0f);
+  EXPECT_EQ(export_image(terms, view, ScreenshotKind::exr, render).at(0, 0).x, 0.85f);  // linear
   view.mode = ViewMode::single;
   view.single = TermView::specular;
   EXPECT_TRUE(export_needs_terms(view, ScreenshotKind::viewport));
-  EXPECT_EQ(export_image(terms, view, ScreenshotKind::viewport).at(0, 0).x, 0.5f);
+  EXPECT_TRUE(export_needs_terms(view, ScreenshotKind::exr));
+  EXPECT_EQ(export_image(terms, view, ScreenshotKind::viewport, render).at(0, 0).x, 0.5f);
+  EXPECT_EQ(export_image(terms, view, ScreenshotKind::exr, render).at(0, 0).x, 0.25f);
   view.single = TermView::total;
   EXPECT_FALSE(export_needs_terms(view, ScreenshotKind::viewport));
   EXPECT_TRUE(export_needs_terms(view, ScreenshotKind::terms));
-  const Image sheet = export_image(terms, view, ScreenshotKind::terms);
+  const Image sheet = export_image(terms, view, ScreenshotKind::terms, render);
   EXPECT_EQ(sheet.width, 2);
   EXPECT_EQ(sheet.height, 2 * (1 + term_sheet_band(1)));
 }

@@ -22,6 +22,24 @@ TEST(ImageCadence, ASingleEditIsMeasuredToItsFirstAndItsFullSizeImage) {
   EXPECT_EQ(d.full_ms, -1.0);
 }
 
+// The A/B snapshot | live view: an edit of side A's renderer (generation 7) is not shown when
+// the next edit changes side B alone, whose renderer counts from 1. After forget_pending, B's
+// frame 2 is measured from B's edit, not from A's older one.
+TEST(ImageCadence, ForgottenEditsCountInNoDelay) {
+  ImageCadence c;
+  c.edit(7, 1.0);
+  c.forget_pending();
+  c.edit(2, 1.5);
+  ImageCadence::Delays d = c.shown(1, true, 1.6);  // B's frame of the scene before the edit
+  EXPECT_EQ(d.first_ms, -1.0);
+  EXPECT_EQ(d.full_ms, -1.0);
+  d = c.shown(2, true, 1.7);
+  EXPECT_NEAR(d.first_ms, 200.0, 1e-9);
+  EXPECT_NEAR(d.full_ms, 200.0, 1e-9);
+  d = c.shown(7, true, 1.8);  // a frame of generation 7 completes no forgotten edit
+  EXPECT_EQ(d.first_ms, -1.0);
+}
+
 // Edits every 16 ms, frames that each show the newest edit taken when they began: each image is
 // measured from the edit of its own generation.
 TEST(ImageCadence, EditsFasterThanFramesAreMeasuredFromTheOldestTheyShow) {

@@ -86,11 +86,14 @@ TEST(QualityMeasurement, TeapotSceneListsEveryKnob) {
   q.start(load_scene(std::string(GLOSS_SCENES_DIR) + "/teapot.json"), tiny_options());
   q.wait();
   ASSERT_EQ(q.state(), QualityMeasurement::State::done) << q.error();
-  // Every knob but the maps' (the teapot scene has none).
+  // Every knob but the environment's and the maps' (the teapot scene has neither).
   std::vector<Knob> expected = tradeoff_knobs();
   expected.erase(
       std::remove_if(expected.begin(), expected.end(),
-                     [](Knob k) { return k == Knob::map_filter || k == Knob::map_resolution; }),
+                     [](Knob k) {
+                       return k == Knob::map_filter || k == Knob::map_resolution ||
+                              k == Knob::env_samples || k == Knob::env_resolution;
+                     }),
       expected.end());
   EXPECT_EQ(q.knobs(), expected);
   for (const Knob knob : expected) {
@@ -163,9 +166,14 @@ TEST(QualityMeasurement, StaleOnlyWhenWhatWasMeasuredChanged) {
   q.wait();
   EXPECT_FALSE(q.stale(scene));
   Scene other = scene;
-  other.render.spp = 16;  // run_tradeoff sets spp and pow itself
+  other.render.spp = 16;  // run_tradeoff sets spp, sampling, threshold and pow itself
   other.render.pow = PowMode::fast;
+  other.render.sampling = Sampling::uniform;
+  other.render.aa_threshold = 0.25f;
   EXPECT_FALSE(q.stale(other));
+  Scene toned = scene;  // adaptive placement reads the displayed image
+  toned.render.tone = ToneCurve::aces;
+  EXPECT_TRUE(q.stale(toned));
   other.materials[0].diffuse = glm::vec3(0.9f);
   EXPECT_TRUE(q.stale(other));
   Scene no_shadows = scene;
@@ -215,23 +223,19 @@ TEST(QualityVerdict, OtherwiseTheCheapestAsGoodAsTheReferenceSetting) {
 
 TEST(QualityUse, RowsBecomeCommandsOrPreviewScales) {
   const Scene scene = test::two_sphere_scene();
-  const std::optional<Command> spp = command_for_row(row("spp", "8", 0, 0));
-  ASSERT_TRUE(spp);
-  EXPECT_EQ(std::get<SetField>(*spp).key, "spp");
-  EXPECT_EQ(std::get<SetField>(*spp).value.x, 8.0);
-  const std::optional<Command> shadows = command_for_row(row("shadows", "off", 0, 0));
+  const std::optional<Command> shadows = command_for_row(row("shadows", "off", 0, 0), scene);
   ASSERT_TRUE(shadows);
   EXPECT_EQ(std::get<SetField>(*shadows).key, "shadows");
   EXPECT_EQ(std::get<SetField>(*shadows).value.x, 0.0);
-  const std::optional<Command> pow = command_for_row(row("pow", "fast", 0, 0));
+  const std::optional<Command> pow = command_for_row(row("pow", "fast", 0, 0), scene);
   ASSERT_TRUE(pow);
   Scene applied = scene;
   apply_command(*pow, applied);
   EXPECT_EQ(applied.render.pow, PowMode::fast);
   applied.render.pow = scene.render.pow;
   EXPECT_TRUE(same_scene(applied, scene));  // nothing else changed
-  EXPECT_FALSE(command_for_row(row("tessellation", "8", 0, 0)));
-  EXPECT_FALSE(command_for_row(row("precision", "double", 0, 0)));
+  EXPECT_FALSE(command_for_row(row("tessellation", "8", 0, 0), scene));
+  EXPECT_FALSE(command_for_row(row("precision", "double", 0, 0), scene));
 
   EXPECT_EQ(preview_scale_for_row(row("resolution", "1/2", 0, 0)), 0.5f);
   EXPECT_EQ(preview_scale_for_row(row("resolution", "1/4", 0, 0)), 0.25f);
@@ -243,6 +247,47 @@ TEST(QualityUse, RowsBecomeCommandsOrPreviewScales) {
   EXPECT_FALSE(row_in_use(row("spp", "8", 0, 0), scene, 1.0f));
   EXPECT_TRUE(row_in_use(row("resolution", "1/2", 0, 0), scene, 0.5f));
   EXPECT_TRUE(row_in_use(row("pow", "exact", 0, 0), scene, 1.0f));
+}
+
+// The afternoon's bug: "Use" on an spp row set the spp alone, so a scene with adaptive sampling
+// rendered adaptively what was measured uniformly, and the row never showed "in use".
+TEST(QualityUse, UseAppliesExactlyTheMeasuredSamplingAndMarksTheRow) {
+  Scene scene = test::two_sphere_scene();
+  scene.render.spp = 16;
+  scene.render.sampling = Sampling::adaptive;
+  const TradeoffRow spp8 = row("spp", "8", 0, 0);
+  const std::optional<Command> use = command_for_row(spp8, scene);
+  ASSERT_TRUE(use);
+  Scene applied = scene;
+  apply_command(*use, applied);
+  EXPECT_EQ(applied.render.spp, 8);
+  EXPECT_EQ(applied.render.sampling, Sampling::uniform);
+  EXPECT_TRUE(row_in_use(spp8, applied, 1.0f));
+  EXPECT_FALSE(row_in_use(spp8, scene, 1.0f));
+  applied.render.spp = scene.render.spp;
+  applied.render.sampling = scene.render.sampling;
+  EXPECT_TRUE(same_scene(applied, scene));  // nothing else changed
+
+  // An adaptive row: its spp, adaptive sampling and its refine threshold.
+  const TradeoffRow adaptive = row("adaptive", "16 t=1/16", 0, 0);
+  Scene uniform = applied;
+  uniform.render.sampling = Sampling::uniform;
+  EXPECT_FALSE(row_in_use(adaptive, uniform, 1.0f));
+  const std::optional<Command> use_adaptive = command_for_row(adaptive, uniform);
+  ASSERT_TRUE(use_adaptive);
+  apply_command(*use_adaptive, uniform);
+  EXPECT_EQ(uniform.render.spp, 16);
+  EXPECT_EQ(uniform.render.sampling, Sampling::adaptive);
+  EXPECT_EQ(uniform.render.aa_threshold, 0.0625f);
+  EXPECT_TRUE(row_in_use(adaptive, uniform, 1.0f));
+  EXPECT_FALSE(row_in_use(row("adaptive", "16 t=1/64", 0, 0), uniform, 1.0f));
+  // Its "uniform" row is the base: 4 spp, uniform.
+  const std::optional<Command> base = command_for_row(row("adaptive", "uniform", 0, 0), uniform);
+  ASSERT_TRUE(base);
+  apply_command(*base, uniform);
+  EXPECT_EQ(uniform.render.spp, 4);
+  EXPECT_EQ(uniform.render.sampling, Sampling::uniform);
+  EXPECT_TRUE(row_in_use(row("spp", "4", 0, 0), uniform, 1.0f));
 }
 
 TEST(QualityScript, ParsesQualityLinesAndRejectsOthers) {

@@ -54,7 +54,9 @@ TEST(Script, ParsesEveryCommand) {
   EXPECT_EQ(std::get<ScreenshotAction>(s.lines[11].action).kind, ScreenshotKind::terms);
   EXPECT_EQ(std::get<ViewAction>(s.lines[12].action).term, TermView::diffuse);
   EXPECT_EQ(std::get<ViewAction>(s.lines[13].action).mode, ViewMode::ab);
-  EXPECT_EQ(std::get<ExposureAction>(s.lines[14].action).stops, -1.5f);
+  EXPECT_EQ(command_of<SetField>(s.lines[14]).part, FieldPart::render);  // the document's now
+  EXPECT_EQ(command_of<SetField>(s.lines[14]).key, "exposure");
+  EXPECT_EQ(command_of<SetField>(s.lines[14]).value.x, -1.5);
   EXPECT_EQ(command_of<SetField>(s.lines[15]).part, FieldPart::render);
   EXPECT_EQ(command_of<SetField>(s.lines[15]).key, "srgb");
   EXPECT_EQ(command_of<SetField>(s.lines[15]).value.x, 1.0);
@@ -92,7 +94,7 @@ TEST(Script, BadLinesNameTheLine) {
   expect_error_on_line("set x shininess 5\n", 1, "object index");
   expect_error_on_line("model lambert\n", 1, "phong or blinn-phong");
   expect_error_on_line("quit\nquit now\n", 2, "unexpected 'now'");
-  expect_error_on_line("screenshot a.png movie\n", 1, "viewport, terms, window or shown");
+  expect_error_on_line("screenshot a.png movie\n", 1, "viewport, terms, window, shown or exr");
   expect_error_on_line("screenshot a.jpg shown\n", 1, ".png or .pfm");
   expect_error_on_line("camera orbit 10\n", 1, "missing");
   expect_error_on_line("light 0 colour 1 1 1\n", 1, "unknown light field");
@@ -168,12 +170,10 @@ TEST(Script, ReplayGoesThroughTheCommandLayer) {
 TEST(Script, ViewLinesAndWaitsGoToTheHost) {
   RecordingHost host(test::two_sphere_scene());
   std::string errors;
-  const LineResult r =
-      run_all("view term diffuse\nexposure 2\nselect 1\nanimate on\nwait\n", host, errors);
+  const LineResult r = run_all("view term diffuse\nselect 1\nanimate on\nwait\n", host, errors);
   EXPECT_EQ(r.next, LineResult::Next::hold);
   EXPECT_EQ(host.view().mode, ViewMode::single);
   EXPECT_EQ(host.view().single, TermView::diffuse);
-  EXPECT_EQ(host.view().exposure, 2.0f);
   EXPECT_TRUE(host.view().orbit_light);
   EXPECT_EQ(host.selected, 1);
   EXPECT_EQ(host.waits, 1);

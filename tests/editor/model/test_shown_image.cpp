@@ -40,26 +40,27 @@ TEST(ShownImage, PathsArePngPfmOrAFolder) {
 TEST(ShownImage, PfmHoldsTheLinearFrameAsItIs) {
   ScratchFolder dir;
   ViewSettings view;
-  view.exposure = 3.0f;  // a display setting: not in the linear file
+  Scene scene = test::two_sphere_scene();
+  scene.render.exposure = 3.0f;  // a display setting: not in the linear file
   const RenderedFrame f = frame_3x2();
-  write_shown(dir.file("shown.pfm"), f, test::two_sphere_scene(), view, false);
+  write_shown(dir.file("shown.pfm"), f, scene, view, false);
   const Image back = read_pfm(dir.file("shown.pfm"));
   ASSERT_EQ(back.width, 3);
   ASSERT_EQ(back.height, 2);
   for (int i = 0; i < 6; ++i) EXPECT_EQ(back.pixels[i], f.images.total.pixels[i]) << i;
   view.mode = ViewMode::single;  // one term shown: that term
   view.single = TermView::diffuse;
-  write_shown(dir.file("diffuse.pfm"), f, test::two_sphere_scene(), view, false);
+  write_shown(dir.file("diffuse.pfm"), f, scene, view, false);
   EXPECT_EQ(read_pfm(dir.file("diffuse.pfm")).pixels[4], glm::vec3(0.1f));
 }
 
 TEST(ShownImage, PngIsTheDisplayedFrameWithTheSceneAtItsSize) {
   ScratchFolder dir;
   ViewSettings view;
-  view.exposure = 1.0f;  // x2
   const RenderedFrame f = frame_3x2();
   Scene scene = test::two_sphere_scene();
-  scene.render.srgb = false;  // classic clamp: value x 255, rounded
+  scene.render.exposure = 1.0f;  // x2, tone curve none (the default)
+  scene.render.srgb = false;     // classic clamp: value x 255, rounded
   write_shown(dir.file("shown.png"), f, scene, view, false);
   const Png8 png = read_png(dir.file("shown.png"));
   ASSERT_EQ(png.width, 3);

@@ -11,6 +11,7 @@
 
 #include "base/error.h"
 #include "engine/renderer.h"
+#include "io/image/exr_writer.h"
 #include "io/image/scene_in_png.h"
 
 namespace gloss {
@@ -23,18 +24,19 @@ std::string timestamp_text(std::time_t time) {
   return text;
 }
 
-std::filesystem::path write_png_unique(const std::filesystem::path& folder,
-                                       const std::string& prefix, const Image& image, bool srgb,
-                                       const TextChunks& text, std::time_t time) {
+std::filesystem::path write_unique(const std::filesystem::path& folder, const std::string& prefix,
+                                   const std::string& extension,
+                                   const std::function<void(const std::string& temp)>& write,
+                                   std::time_t time) {
   std::error_code error;
   std::filesystem::create_directories(folder, error);
   const std::string stem = prefix + "-" + timestamp_text(time);
   const std::filesystem::path temp =
-      folder / ("." + stem + ".tmp-" + std::to_string(static_cast<long>(::getpid())) + ".png");
-  write_png(temp.string(), image, srgb, text);
+      folder / ("." + stem + ".tmp-" + std::to_string(static_cast<long>(::getpid())) + extension);
+  write(temp.string());
   for (int n = 1; n < 10000; ++n) {
     const std::filesystem::path candidate =
-        folder / (n == 1 ? stem + ".png" : stem + "-" + std::to_string(n) + ".png");
+        folder / (n == 1 ? stem + extension : stem + "-" + std::to_string(n) + extension);
     if (::link(temp.c_str(), candidate.c_str()) == 0) {
       std::filesystem::remove(temp, error);
       return candidate;
@@ -49,11 +51,16 @@ std::filesystem::path write_png_unique(const std::filesystem::path& folder,
   throw RuntimeFailure("no free file name for " + (folder / stem).string());
 }
 
-Image exposed(const Image& image, float stops) {
-  Image out = image;
-  const float gain = std::exp2(stops);
-  for (glm::vec3& p : out.pixels) p *= gain;
-  return out;
+std::filesystem::path write_png_unique(const std::filesystem::path& folder,
+                                       const std::string& prefix, const Image& image, bool srgb,
+                                       const TextChunks& text, std::time_t time) {
+  return write_unique(
+      folder, prefix, ".png", [&](const std::string& temp) { write_png(temp, image, srgb, text); },
+      time);
+}
+
+Image exposed(const Image& image, const RenderSettings& render) {
+  return displayed_image(image, display_transform(render), false);
 }
 
 int term_sheet_band(int pane_height) {
@@ -61,21 +68,23 @@ int term_sheet_band(int pane_height) {
   return label_height(scale) + 4 * scale;
 }
 
-Image term_sheet(const TermImages& terms) {
+Image term_sheet(const TermImages& terms, const DisplayTransform* display) {
   const int w = terms.total.width, h = terms.total.height;
   const int band = term_sheet_band(h);
   const int scale = std::max(1, h / 200);
   Image sheet(2 * w, 2 * (h + band));
-  const Image* panes[4] = {&terms.emissive, &terms.diffuse, &terms.specular, &terms.total};
+  Image emissive_ambient = terms.emissive;
+  for (std::size_t i = 0; i < emissive_ambient.pixels.size(); ++i) {
+    emissive_ambient.pixels[i] += terms.ambient.pixels[i];
+  }
+  const Image* panes[4] = {&emissive_ambient, &terms.diffuse, &terms.specular, &terms.total};
   const char* names[4] = {"emissive + ambient", "diffuse", "specular", "total"};
   for (int pane = 0; pane < 4; ++pane) {
     const int ox = (pane % 2) * w, oy = (pane / 2) * (h + band) + band;
+    const Image shown =
+        display != nullptr ? displayed_image(*panes[pane], *display, false) : *panes[pane];
     for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        glm::vec3 v = panes[pane]->at(x, y);
-        if (pane == 0) v += terms.ambient.at(x, y);
-        sheet.at(ox + x, oy + y) = v;
-      }
+      for (int x = 0; x < w; ++x) sheet.at(ox + x, oy + y) = shown.at(x, y);
     }
     draw_label(sheet, ox + 4 * scale, oy - band + 2 * scale, names[pane], glm::vec3(1.0f), scale);
   }
@@ -107,12 +116,12 @@ Image viewport_image(const TermImages& terms, const ViewSettings& view) {
 TextChunks export_text(const Scene& scene, const ViewSettings& view, ScreenshotKind kind) {
   char settings[256];
   std::snprintf(settings, sizeof settings,
-                "kind=%s model=%s spp=%d size=%dx%d exposure=%g encoding=%s shadows=%s "
+                "kind=%s model=%s spp=%d size=%dx%d exposure=%g tone=%s encoding=%s shadows=%s "
                 "energy_normalize=%s term=%s",
                 to_string(kind), to_string(scene.render.model), scene.render.spp,
-                scene.render.width, scene.render.height, view.exposure,
-                scene.render.srgb ? "srgb" : "clamp", scene.render.shadows ? "on" : "off",
-                scene.render.energy_normalize ? "on" : "off",
+                scene.render.width, scene.render.height, static_cast<double>(scene.render.exposure),
+                to_string(scene.render.tone), scene.render.srgb ? "srgb" : "clamp",
+                scene.render.shadows ? "on" : "off", scene.render.energy_normalize ? "on" : "off",
                 view.mode == ViewMode::single ? to_string(view.single) : "total");
   std::string line = settings;
   if (view.renderer == RendererChoice::gl) {
@@ -130,6 +139,7 @@ TextChunks export_text(const Scene& scene, const ViewSettings& view, ScreenshotK
 }
 
 bool export_needs_terms(const ViewSettings& view, ScreenshotKind kind) {
+  // exr is the viewport kind's image, linear.
   return kind == ScreenshotKind::terms ||
          (view.mode == ViewMode::single && view.single != TermView::total);
 }
@@ -137,23 +147,44 @@ bool export_needs_terms(const ViewSettings& view, ScreenshotKind kind) {
 Image render_export(const Scene& scene, const ViewSettings& view, ScreenshotKind kind) {
   RenderOptions options;
   options.terms = export_needs_terms(view, kind);
-  return export_image(render(scene, options), view, kind);
+  return export_image(render(scene, options), view, kind, scene.render);
 }
 
-Image export_image(const TermImages& terms, const ViewSettings& view, ScreenshotKind kind) {
+Image export_image(const TermImages& terms, const ViewSettings& view, ScreenshotKind kind,
+                   const RenderSettings& render) {
+  if (kind == ScreenshotKind::exr) return viewport_image(terms, view);
   if (kind == ScreenshotKind::terms) {
-    if (view.exposure == 0.0f) return term_sheet(terms);
-    // Exposure applies to the terms, not to the labels drawn between them.
-    TermImages e;
-    e.emissive = exposed(terms.emissive, view.exposure);
-    e.ambient = exposed(terms.ambient, view.exposure);
-    e.diffuse = exposed(terms.diffuse, view.exposure);
-    e.specular = exposed(terms.specular, view.exposure);
-    e.total = exposed(terms.total, view.exposure);
-    return term_sheet(e);
+    // The transform applies to the terms, not to the white labels drawn between them.
+    const DisplayTransform display = display_transform(render);
+    return term_sheet(terms, &display);
   }
-  const Image image = viewport_image(terms, view);
-  return view.exposure == 0.0f ? image : exposed(image, view.exposure);
+  return exposed(viewport_image(terms, view), render);
+}
+
+std::filesystem::path write_exr_export(const std::string& path, const Image& image) {
+  std::error_code error;
+  const bool folder =
+      (!path.empty() && path.back() == '/') || std::filesystem::is_directory(path, error);
+  if (folder) {
+    return write_unique(
+        path, "gloss", ".exr", [&](const std::string& temp) { write_exr(temp, image); },
+        std::time(nullptr));
+  }
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent, error);
+  write_exr(path, image);
+  return path;
+}
+
+std::filesystem::path write_export_in(const std::filesystem::path& folder, ScreenshotKind kind,
+                                      const Image& image, bool srgb, const TextChunks& text) {
+  const std::string prefix = std::string("gloss-") + to_string(kind);
+  if (kind == ScreenshotKind::exr) {
+    return write_unique(
+        folder, prefix, ".exr", [&](const std::string& temp) { write_exr(temp, image); },
+        std::time(nullptr));
+  }
+  return write_png_unique(folder, prefix, image, srgb, text, std::time(nullptr));
 }
 
 std::filesystem::path write_export(const std::string& path, const Image& image, bool srgb,

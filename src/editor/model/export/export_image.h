@@ -5,9 +5,11 @@
 // the raster path in the editor when it draws the viewport (editor/ui/parts/exports.cpp).
 #include <ctime>
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "base/image.h"
+#include "display/display_transform.h"
 #include "editor/model/view/view_settings.h"
 #include "io/image/image_io.h"
 #include "scene/scene.h"
@@ -17,20 +19,30 @@ namespace gloss {
 // "20251121-101530" (local time).
 std::string timestamp_text(std::time_t time);
 
-// Writes a PNG named folder/PREFIX-TIMESTAMP.png, or PREFIX-TIMESTAMP-2.png, -3 ... when the name
-// is taken. The finished file is hard-linked into place, which fails instead of replacing, so
-// two writers can never overwrite each other. Returns the path written; throws RuntimeFailure.
+// Writes a file named folder/PREFIX-TIMESTAMP.EXTENSION (extension with its dot), or
+// PREFIX-TIMESTAMP-2.EXTENSION, -3 ... when the name is taken: write(temp) writes it under a
+// temporary name, and the finished file is hard-linked into place, which fails instead of
+// replacing, so two writers can never overwrite each other. Returns the path written; throws
+// RuntimeFailure.
+std::filesystem::path write_unique(const std::filesystem::path& folder, const std::string& prefix,
+                                   const std::string& extension,
+                                   const std::function<void(const std::string& temp)>& write,
+                                   std::time_t time);
+// write_unique of a PNG (write_png with the encoding alone: clamp, then as is or sRGB).
 std::filesystem::path write_png_unique(const std::filesystem::path& folder,
                                        const std::string& prefix, const Image& image, bool srgb,
                                        const TextChunks& text, std::time_t time);
 
-// Linear values times 2^stops (the viewport's exposure).
-Image exposed(const Image& image, float stops);
+// The linear image through the document's exposure, tone curve and clamp (display_linear of
+// display/display_transform.h): values in [0, 1] that the PNG writer's encoding (render.srgb)
+// finishes. Exports apply it before drawing labels, so labels stay white under any transform.
+Image exposed(const Image& image, const RenderSettings& render);
 
 // The term sheet: emissive + ambient | diffuse on top, specular | total below, each W x H pane
 // under a black strip of term_sheet_band(H) rows that names it in white (sheet_labels.h), so the
-// sheet is 2W x 2(H + band) and every pane pixel is its term's own.
-Image term_sheet(const TermImages& terms);
+// sheet is 2W x 2(H + band) and every pane pixel is its term's own: linear, or with display its
+// display_linear value (the labels are drawn after it, so they stay white).
+Image term_sheet(const TermImages& terms, const DisplayTransform* display = nullptr);
 int term_sheet_band(int pane_height);
 
 // The single image the viewport kind exports: the total, or the term a single-term view shows.
@@ -43,9 +55,11 @@ TextChunks export_text(const Scene& scene, const ViewSettings& view, ScreenshotK
 // Whether an export of kind under view needs the four term images (the term sheet, one term).
 bool export_needs_terms(const ViewSettings& view, ScreenshotKind kind);
 
-// The exposed image of kind (viewport or terms) from rendered terms (the raster path's frame,
-// or render()'s images).
-Image export_image(const TermImages& terms, const ViewSettings& view, ScreenshotKind kind);
+// The image of kind from rendered terms (the raster path's frame, or render()'s images), render
+// the document's settings: viewport and terms exposed (above), for the PNG writer's encoding;
+// exr the linear image of the viewport kind (the total, or the single term shown).
+Image export_image(const TermImages& terms, const ViewSettings& view, ScreenshotKind kind,
+                   const RenderSettings& render);
 
 // Renders scene with the CPU renderer at scene.render's size and spp and returns
 // export_image() of it (window screenshots come from the GL back buffer). Throws like render().
@@ -56,5 +70,10 @@ Image render_export(const Scene& scene, const ViewSettings& view, ScreenshotKind
 // what was there. Returns the path written; throws RuntimeFailure.
 std::filesystem::path write_export(const std::string& path, const Image& image, bool srgb,
                                    const TextChunks& text);
+// The same for an exr export: the linear image as OpenEXR (io/image/exr_writer.h).
+std::filesystem::path write_exr_export(const std::string& path, const Image& image);
+// Where an export of kind goes when no path is given: folder/gloss-KIND-TIMESTAMP.png (.exr).
+std::filesystem::path write_export_in(const std::filesystem::path& folder, ScreenshotKind kind,
+                                      const Image& image, bool srgb, const TextChunks& text);
 
 }  // namespace gloss

@@ -63,7 +63,7 @@ std::filesystem::path write_shown(const std::string& path, const RenderedFrame& 
   for (auto& [keyword, value] : text) {
     if (keyword == "gloss:settings") value += shown;
   }
-  const Image display = view.exposure == 0.0f ? linear : exposed(linear, view.exposure);
+  const Image display = exposed(linear, scene.render);  // the display transform, before encoding
   if (is_folder(path)) {
     return write_png_unique(path, "gloss-shown", display, scene.render.srgb, text,
                             std::time(nullptr));

@@ -2,18 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 namespace gloss {
 
 namespace {
 
-float encode_srgb(float c) {
-  return c < 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-}
-
-// Linear (exposed, clamped) values at which the displayed value reaches bin b's lower edge,
-// b = 1..kBins-1: the encoding is monotonic, so a pixel's bin is found by a binary search over
-// these instead of a pow per channel (about 3 x cheaper on a viewport-sized image).
+// Display-linear values (exposed, tone-mapped, clamped) at which the displayed value reaches bin
+// b's lower edge, b = 1..kBins-1: the encoding is monotonic, so a pixel's bin is found by a
+// binary search over these instead of a pow per channel (about 3 x cheaper on a viewport-sized
+// image).
 struct BinEdges {
   std::array<float, ExposureHistogram::kBins - 1> linear{};
   explicit BinEdges(bool srgb) {
@@ -35,40 +34,47 @@ struct BinEdges {
 }  // namespace
 
 double ExposureHistogram::clipped_share() const {
-  return pixels > 0 ? static_cast<double>(clipped) / static_cast<double>(pixels) : 0.0;
+  return all_pixels > 0 ? static_cast<double>(clipped) / static_cast<double>(all_pixels) : 0.0;
 }
 
-float display_value(float linear, float gain, bool srgb) {
-  float c = linear * gain;
-  if (!(c > 0.0f)) return 0.0f;  // also NaN
-  c = std::min(c, 1.0f);
-  return srgb ? encode_srgb(c) : c;
+double ExposureHistogram::clipped_channel_share(int c) const {
+  return all_pixels > 0 ? static_cast<double>(clipped_channel[static_cast<std::size_t>(c)]) /
+                              static_cast<double>(all_pixels)
+                        : 0.0;
 }
 
-ExposureHistogram exposure_histogram(const Image& image, float exposure_stops, bool srgb,
+ExposureHistogram exposure_histogram(const Image& image, const DisplayTransform& display,
                                      int step) {
   ExposureHistogram h;
   step = std::max(step, 1);
-  const float gain = std::exp2(exposure_stops);
-  const BinEdges edges(srgb);
+  const BinEdges edges(display.srgb);
   for (int y = 0; y < image.height; y += step) {
     const glm::vec3* row = image.pixels.data() + static_cast<std::size_t>(y) * image.width;
     for (int x = 0; x < image.width; x += step) {
-      bool clipped = false;
-      for (int c = 0; c < 3; ++c) {
-        const float exposed = row[x][c] * gain;
-        const bool over = exposed > 1.0f;
-        clipped |= over;
-        h.clipped_channel[c] += over ? 1 : 0;
-        // NaN and negatives show as 0: bin 0.
-        const float shown = exposed > 0.0f ? std::min(exposed, 1.0f) : 0.0f;
-        ++h.counts[c][edges.bin(shown)];
-      }
-      h.clipped += clipped ? 1 : 0;
+      for (int c = 0; c < 3; ++c) ++h.counts[c][edges.bin(display_linear(row[x][c], display))];
       ++h.pixels;
     }
   }
+  // The clipped pixels are counted in every pixel, whatever the step: a highlight of a few
+  // pixels falls between the sampled ones, and the overlay shows it.
+  const float level = clip_level(display);
+  for (const glm::vec3& p : image.pixels) {
+    const bool r = p.x > level, g = p.y > level, b = p.z > level;
+    h.clipped_channel[0] += r ? 1 : 0;
+    h.clipped_channel[1] += g ? 1 : 0;
+    h.clipped_channel[2] += b ? 1 : 0;
+    h.clipped += (r || g || b) ? 1 : 0;
+  }
+  h.all_pixels = image.pixels.size();
   return h;
+}
+
+std::string clipped_text(double share) {
+  char text[32];
+  if (share <= 0.0) return "0%";
+  if (share < 0.0005) return "< 0.1%";
+  std::snprintf(text, sizeof text, "%.1f%%", 100.0 * share);
+  return text;
 }
 
 }  // namespace gloss

@@ -1,13 +1,16 @@
 #pragma once
-// What the viewport's display transform does to an image (shaders/display.frag): linear RGB
-// times 2^exposure, clamped to [0, 1], then written as is (classic clamp) or sRGB-encoded. The
-// histogram counts the displayed values; the clipped share counts the pixels the clamp changed
-// at the top. A pixel is clipped when ANY channel's exposed linear value is above 1 (per channel,
-// not luminance: a saturated red highlight is clipped even when its luminance is not).
+// What the display transform (display/display_transform.h; shaders/display.frag on screen) does
+// to an image: exposure, tone curve, clamp to [0, 1], then as is (classic clamp) or sRGB. The
+// histogram counts the displayed values; the clipped share counts the pixels the clamp changed at
+// the top. A pixel is clipped when ANY channel's exposed and tone-mapped value is above 1 (per
+// channel, not luminance: a saturated red highlight is clipped even when its luminance is not);
+// Reinhard's curve never reaches 1, ACES's does from 7.24 on.
 #include <array>
 #include <cstdint>
+#include <string>
 
 #include "base/image.h"
+#include "display/display_transform.h"
 
 namespace gloss {
 
@@ -16,22 +19,26 @@ struct ExposureHistogram {
   // counts[c][b]: pixels whose displayed channel c (0 R, 1 G, 2 B) falls in bin b; a value of
   // exactly 1 counts in the last bin.
   std::array<std::array<std::uint32_t, kBins>, 3> counts{};
-  std::uint64_t pixels = 0;                        // pixels counted
-  std::uint64_t clipped = 0;                       // pixels with any channel above 1 after exposure
-  std::array<std::uint64_t, 3> clipped_channel{};  // per channel: above 1 after exposure
+  std::uint64_t pixels = 0;  // pixels counted in the bins
+  // Every pixel of the image, sampled or not: the clipped counts below are exact.
+  std::uint64_t all_pixels = 0;
+  std::uint64_t clipped = 0;                       // pixels with any channel clipped
+  std::array<std::uint64_t, 3> clipped_channel{};  // per channel: above 1 before the clamp
 
-  // Share of counted pixels with a clipped channel, 0..1 (0 when nothing was counted).
+  // Share of the image's pixels with a clipped channel, 0..1 (0 for an empty image).
   double clipped_share() const;
+  // The same for channel c alone.
+  double clipped_channel_share(int c) const;
 };
 
-// The displayed value of one linear channel: clamp(linear * gain, 0, 1), sRGB-encoded when
-// srgb. gain = 2^exposure_stops. NaN shows as 0, as the PNG writer does.
-float display_value(float linear, float gain, bool srgb);
-
-// Histogram of image as displayed at exposure_stops with the given encoding. step > 1 counts
-// every step-th pixel of every step-th row (the viewport uses it to stay cheap on big images;
-// the `stats` line and the tests count every pixel).
-ExposureHistogram exposure_histogram(const Image& image, float exposure_stops, bool srgb,
+// Histogram of image as displayed through display. step > 1 counts every step-th pixel of every
+// step-th row (the viewport uses it to stay cheap on big images; the `stats` line and the tests
+// count every pixel).
+ExposureHistogram exposure_histogram(const Image& image, const DisplayTransform& display,
                                      int step = 1);
+
+// A share 0..1 as the panel and `stats` print it: "0%" only when nothing is clipped, "< 0.1%"
+// for a share that one decimal would round to 0, else one decimal ("12.5%").
+std::string clipped_text(double share);
 
 }  // namespace gloss

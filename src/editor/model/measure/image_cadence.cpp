@@ -48,6 +48,11 @@ ImageCadence::Delays ImageCadence::shown(std::uint64_t generation, bool full_siz
   return out;
 }
 
+void ImageCadence::forget_pending() {
+  m_pending.clear();
+  m_full_done = true;
+}
+
 ImageCadence::Window ImageCadence::window(double now_s) const {
   Window w;
   const double start = m_window_s < 0 ? now_s : m_window_s;

@@ -33,6 +33,10 @@ class ImageCadence {
   // show that the image stood still).
   Delays shown(std::uint64_t generation, bool full_size, double now_s);
 
+  // The edits not shown yet are dropped (they count in no delay): the frames that would show
+  // them now come from another renderer, whose generations are counted apart.
+  void forget_pending();
+
   // Figures since the window began (restart(), or the first call), now_s its end.
   struct Window {
     double seconds = 0;

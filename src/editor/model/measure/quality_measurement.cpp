@@ -26,12 +26,14 @@ bool has_teapot(const Scene& scene) {
 }
 
 // What a staleness check compares: the settings run_tradeoff overrides or that do not change the
-// linear image are made equal.
+// linear image are made equal. The display transform (exposure, tone, encoding) counts: adaptive
+// sampling's placement reads the displayed image, so the adaptive rows depend on it.
 Scene measured_part(Scene scene) {
   scene.render.spp = 1;
+  scene.render.sampling = Sampling::uniform;  // each row sets its sampling and threshold
+  scene.render.aa_threshold = 0.0f;
   scene.render.pow = PowMode::exact;
   scene.render.seed = 0;
-  scene.render.srgb = false;
   scene.path.clear();
   return scene;
 }
@@ -72,8 +74,11 @@ void QualityMeasurement::start(const Scene& scene, TradeoffOptions options) {
     const bool chosen =
         options.knobs.empty() ||
         std::find(options.knobs.begin(), options.knobs.end(), knob) != options.knobs.end();
+    // Knobs a scene has no rows for (tradeoff.h): no teapot, no environment, no maps.
     const bool maps = knob == Knob::map_filter || knob == Knob::map_resolution;
-    if (chosen && (knob != Knob::tessellation || has_teapot(scene)) && (!maps || has_maps(scene))) {
+    const bool environment = knob == Knob::env_samples || knob == Knob::env_resolution;
+    if (chosen && (knob != Knob::tessellation || has_teapot(scene)) &&
+        (!maps || has_maps(scene)) && (!environment || scene.environment.present())) {
       m_knobs.push_back(knob);
     }
   }
@@ -201,11 +206,44 @@ std::string quality_verdict(const std::vector<TradeoffRow>& knob_rows) {
          " vs " + format_ms(anchor->time_ms);
 }
 
-std::optional<Command> command_for_row(const TradeoffRow& row) {
+namespace {
+
+// The render settings a row of the spp or adaptive knob was measured with, applied to render;
+// false for other rows or settings that do not parse.
+bool sampling_of_row(const TradeoffRow& row, RenderSettings& render) {
   if (row.knob == Knob::spp) {
     const int spp = std::atoi(row.setting.c_str());
-    if (spp < 1 || spp > kMaxSpp) return std::nullopt;
-    return Command(SetField{FieldPart::render, 0, "spp", number_value(spp)});
+    if (spp < 1 || spp > kMaxSpp) return false;
+    render.spp = spp;
+    // 1 spp is the pixel centre either way: the scene's sampling stays as it is.
+    if (spp > 1) render.sampling = Sampling::uniform;
+    return true;
+  }
+  if (row.knob != Knob::adaptive) return false;
+  if (row.setting == "uniform") {  // the base the adaptive rows are weighed against
+    render.spp = quick_tradeoff_options().base_spp;
+    render.sampling = Sampling::uniform;
+    return true;
+  }
+  int spp = 0, divisor = 0;  // "16 t=1/64"
+  if (std::sscanf(row.setting.c_str(), "%d t=1/%d", &spp, &divisor) != 2 || spp < 1 ||
+      spp > kMaxSpp || divisor < 1) {
+    return false;
+  }
+  render.spp = spp;
+  render.sampling = Sampling::adaptive;
+  render.aa_threshold = 1.0f / static_cast<float>(divisor);
+  return true;
+}
+
+}  // namespace
+
+std::optional<Command> command_for_row(const TradeoffRow& row, const Scene& scene) {
+  if (RenderSettings render = scene.render; sampling_of_row(row, render)) {
+    auto next = std::make_shared<Scene>(scene);
+    next->render = render;
+    return Command(ReplaceScene{std::move(next), "use " + std::string(to_string(row.knob)) + " " +
+                                                     row.setting + " (Quality window)"});
   }
   if (row.knob == Knob::shadows && (row.setting == "on" || row.setting == "off")) {
     return Command(SetField{FieldPart::render, 0, "shadows", number_value(row.setting == "on")});
@@ -225,9 +263,10 @@ std::optional<float> preview_scale_for_row(const TradeoffRow& row) {
 }
 
 bool row_in_use(const TradeoffRow& row, const Scene& scene, float preview_scale) {
-  if (row.knob == Knob::spp) {  // rows of uniform sampling (1 spp: the centre either way)
-    const int spp = std::atoi(row.setting.c_str());
-    return scene.render.spp == spp && (spp == 1 || scene.render.sampling == Sampling::uniform);
+  if (RenderSettings render = scene.render; sampling_of_row(row, render)) {
+    const bool adaptive = render.sampling == Sampling::adaptive && render.spp > 1;
+    return render.spp == scene.render.spp && render.sampling == scene.render.sampling &&
+           (!adaptive || render.aa_threshold == scene.render.aa_threshold);
   }
   if (row.knob == Knob::shadows) return scene.render.shadows == (row.setting == "on");
   if (row.knob == Knob::pow) return to_string(scene.render.pow) == row.setting;

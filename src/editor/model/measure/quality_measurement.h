@@ -87,13 +87,18 @@ std::vector<TradeoffRow> rows_of_knob(const std::vector<TradeoffRow>& rows, Knob
 // (else its most accurate row) and as good: at most 1 point more pixels off, 1.5x the RMSE.
 std::string quality_verdict(const std::vector<TradeoffRow>& knob_rows);
 
-// The document command that gives the scene the row's setting (spp: target spp; shadows: on/off;
-// pow: fast/exact), or nothing for knobs the editor does not carry as document settings.
-std::optional<Command> command_for_row(const TradeoffRow& row);
+// The document command that gives scene exactly the setting the row measured, or nothing for
+// knobs the editor does not carry as document settings: spp rows were measured with uniform
+// sampling (spp N and uniform), adaptive rows with adaptive sampling at their spp and threshold
+// ("16 t=1/64"; its "uniform" row is the base, quick_tradeoff_options().base_spp uniform),
+// shadows on/off, pow fast/exact. A row that changes several fields is one command (one undo
+// step).
+std::optional<Command> command_for_row(const TradeoffRow& row, const Scene& scene);
 // The viewport preview scale for a resolution row ("1/2" -> 0.5), or nothing when the row is
 // not a resolution row or its scale is outside the editor's 0.25..1.
 std::optional<float> preview_scale_for_row(const TradeoffRow& row);
-// True when the scene (and preview scale) already use the row's setting.
+// True when the scene (and preview scale) already use the row's setting: what command_for_row
+// would set is what the scene has.
 bool row_in_use(const TradeoffRow& row, const Scene& scene, float preview_scale);
 
 // Writes tradeoff_to_csv(rows) to path atomically; throws RuntimeFailure when it cannot.

@@ -46,7 +46,9 @@ class HeadlessHost : public ScriptHost {
       view.renderer = RendererChoice::cpu;
       const Image image = render_export(scene, view, a.kind);
       const std::filesystem::path written =
-          write_export(a.path, image, scene.render.srgb, export_text(scene, view, a.kind));
+          a.kind == ScreenshotKind::exr
+              ? write_exr_export(a.path, image)
+              : write_export(a.path, image, scene.render.srgb, export_text(scene, view, a.kind));
       saved(written);
       return LineResult::go_on();
     } catch (const std::exception& e) {

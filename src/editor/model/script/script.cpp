@@ -164,8 +164,9 @@ ScriptAction parse_environment(Tokens& t) {
   return Command(SetEnvironment{what});
 }
 
-// Older spellings of render fields, kept working: `shadows on`, `energy on`, `spp 16`,
-// `encoding srgb`.
+// Shorter spellings of render fields, kept working: `shadows on`, `energy on`, `spp 16`,
+// `encoding srgb`, `exposure STOPS` (once a view preference, now the document's render.exposure),
+// `tone aces`.
 ScriptAction parse_render_alias(Tokens& t, const std::string& verb) {
   if (verb == "energy")
     return parse_field(t, render_fields(), FieldPart::render, 0, "energy_normalize");
@@ -355,7 +356,8 @@ ScriptAction parse_line(Tokens& t) {
   if (find_field(scene_fields(), verb) != nullptr) {  // `ambient R G B`, `background R G B`
     return parse_field(t, scene_fields(), FieldPart::scene, 0, verb);
   }
-  if (verb == "shadows" || verb == "energy" || verb == "spp" || verb == "encoding") {
+  if (verb == "shadows" || verb == "energy" || verb == "spp" || verb == "encoding" ||
+      verb == "exposure" || verb == "tone") {
     return parse_render_alias(t, verb);
   }
   if (verb == "undo") return UndoAction{};
@@ -367,8 +369,8 @@ ScriptAction parse_line(Tokens& t) {
     if (!t.done()) {
       const std::string& kind = t.word("kind");
       if (!parse_screenshot_kind(kind, s.kind)) {
-        throw std::runtime_error("screenshot kind must be viewport, terms, window or shown, got '" +
-                                 kind + "'");
+        throw std::runtime_error(
+            "screenshot kind must be viewport, terms, window, shown or exr, got '" + kind + "'");
       }
     }
     if (s.kind == ScreenshotKind::shown && !shown_path_ok(s.path)) {
@@ -401,7 +403,6 @@ ScriptAction parse_line(Tokens& t) {
   if (verb == "inspect") return parse_inspect(t);
   if (verb == "reference") return parse_reference(t);
   if (verb == "fit") return parse_fit(t);
-  if (verb == "exposure") return ExposureAction{t.number("stops")};
   if (verb == "select") return SelectAction{t.index("object index")};
   if (verb == "stats") return StatsAction{};
   if (verb == "sleep") {
@@ -424,6 +425,9 @@ ScriptAction parse_line(Tokens& t) {
   }
   if (ScriptAction raster; parse_raster_line(t, verb, raster)) return raster;
   if (verb == "mouse") return parse_mouse(t);
+  if (verb == "layout") return parse_layout(t);
+  if (verb == "lobe") return parse_lobe(t);
+  if (verb == "key") return KeyAction{t.word("keys, as the help window writes them")};
   // Issue 14: the memory report.
   if (verb == "memory") return MemoryAction{};
   // Issue 12: the GLSL path.

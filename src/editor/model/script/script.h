@@ -39,9 +39,6 @@ struct ClippedOverlayAction {
 };
 // `snapshot`: keeps the current document as the A side of `view ab snapshot`.
 struct SnapshotAction {};
-struct ExposureAction {
-  float stops = 0.0f;
-};
 struct SelectAction {
   int object = 0;
 };
@@ -136,12 +133,42 @@ struct MouseAction {
   int button = 0;  // 0 left (orbit), 1 right, 2 middle
 };
 
+// ---- The window's layout (issue 24) ----
+// `layout` prints where the panels, the viewport's panes, the legend and the light markers are
+// (the editor's layout of its newest frame); `layout maximise on|off`, `layout collapse
+// left|right`, `layout expand left|right` and `layout reset` change it as the Panels menu does.
+// Without a display they print that there is none.
+struct LayoutAction {
+  enum class Verb { print, maximise, collapse, expand, reset };
+  Verb verb = Verb::print;
+  bool on = false;     // maximise on
+  bool right = false;  // collapse, expand: the right column (Lights & Scene, View & Quality)
+};
+// `key KEYS`: the keyboard shortcut the help window (F1) lists as KEYS (`key F1`, `key I`,
+// `key Ctrl+Space`, `key [`), as if pressed. An error when no shortcut is called that.
+struct KeyAction {
+  std::string keys;
+};
+
+// ---- The lobe view's plots (issue 24, item 7) ----
+// `lobe plot plane|3d|albedo`, `lobe overlay none|snapshot`, `lobe overlay material NAME`,
+// `lobe overlay preset NAME`, `lobe turn AZIMUTH_DEG TILT_DEG` (the 3D plot's camera).
+struct LobeAction {
+  enum class Verb { plot, overlay, turn };
+  Verb verb = Verb::plot;
+  LobePlot plot = LobePlot::plane;
+  LobeOverlay overlay = LobeOverlay::none;
+  std::string name;  // overlay material or preset
+  float azimuth_deg = 0.0f, tilt_deg = 0.0f;
+};
+
 using ScriptAction =
     std::variant<Command, UndoAction, RedoAction, WaitAction, ScreenshotAction, ViewAction,
-                 ExposureAction, SelectAction, StatsAction, SleepAction, AnimateAction, QuitAction,
-                 QualityAction, InspectAction, ClippedOverlayAction, SnapshotAction, MemoryAction,
+                 SelectAction, StatsAction, SleepAction, AnimateAction, QuitAction, QualityAction,
+                 InspectAction, ClippedOverlayAction, SnapshotAction, MemoryAction,
                  ExportGlslAction, RendererAction, ShadingAction, ShadowMapAction, ShadowBiasAction,
-                 MouseAction, ReferenceAction, FitAction, ExportGltfAction>;
+                 MouseAction, ReferenceAction, FitAction, LayoutAction, KeyAction, LobeAction,
+                 ExportGltfAction>;
 
 struct ScriptLine {
   int line = 0;  // 1-based line number in the file

@@ -1,5 +1,6 @@
 #include "editor/model/script/script_runner.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -136,10 +137,6 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
               if (a.lobe_log_radius >= 0) host.view().lobe_log_radius = a.lobe_log_radius == 1;
               return LineResult::go_on();
             },
-            [&](const ExposureAction& a) {
-              host.view().exposure = a.stops;
-              return LineResult::go_on();
-            },
             [&](const SelectAction& a) {
               if (a.object >= static_cast<int>(host.layer().scene().objects.size())) {
                 return bad_line(where, "no object " + std::to_string(a.object));
@@ -169,6 +166,36 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
             [&](const InspectAction& a) { return inspect(host, a, where); },
             [&](const MemoryAction&) { return host.memory(); },
             [&](const MouseAction& a) { return host.mouse(a); },
+            [&](const LayoutAction& a) { return host.layout(a, where); },
+            [&](const LobeAction& a) {
+              ViewSettings& view = host.view();
+              switch (a.verb) {
+                case LobeAction::Verb::plot:
+                  view.lobe_plot = a.plot;
+                  break;
+                case LobeAction::Verb::overlay:
+                  if (a.overlay == LobeOverlay::material) {
+                    const std::vector<std::string>& names = host.layer().scene().material_names;
+                    if (std::find(names.begin(), names.end(), a.name) == names.end()) {
+                      return bad_line(where, "no material '" + a.name + "'");
+                    }
+                  }
+                  if (a.overlay == LobeOverlay::snapshot && !host.snapshot()) {
+                    return bad_line(where,
+                                    "no snapshot to compare with: take one with "
+                                    "'snapshot' first");
+                  }
+                  view.lobe_overlay = a.overlay;
+                  view.lobe_overlay_name = a.name;
+                  break;
+                case LobeAction::Verb::turn:
+                  view.lobe_azimuth_deg = a.azimuth_deg;
+                  view.lobe_tilt_deg = a.tilt_deg;
+                  break;
+              }
+              return LineResult::go_on();
+            },
+            [&](const KeyAction& a) { return host.key(a, where); },
             [&](const ExportGlslAction& a) { return export_glsl_line(host, a, where); },
             [&](const ExportGltfAction& a) { return export_gltf_line(host, a, where); },
             [&](const ReferenceAction& a) { return reference_line(host, a); },
@@ -198,6 +225,18 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
 
 LineResult ScriptHost::memory() {
   std::printf("memory: %s\n", memory_text(layer(), ViewMemory{}).c_str());
+  std::fflush(stdout);
+  return LineResult::go_on();
+}
+
+LineResult ScriptHost::layout(const LayoutAction&, const std::string&) {
+  std::printf("layout: no display, no window\n");
+  std::fflush(stdout);
+  return LineResult::go_on();
+}
+
+LineResult ScriptHost::key(const KeyAction& action, const std::string&) {
+  std::printf("key %s: no display, no window\n", action.keys.c_str());
   std::fflush(stdout);
   return LineResult::go_on();
 }

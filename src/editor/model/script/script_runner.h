@@ -51,6 +51,10 @@ class ScriptHost {
   virtual LineResult memory();
   // A viewport gesture (script.h, MouseAction); nothing without a display.
   virtual LineResult mouse(const MouseAction&) { return LineResult::go_on(); }
+  // The window's layout and keyboard shortcuts (script.h, LayoutAction and KeyAction); without a
+  // display these say so on stdout and go on.
+  virtual LineResult layout(const LayoutAction& action, const std::string& where);
+  virtual LineResult key(const KeyAction& action, const std::string& where);
   // A message for the user beside what the line prints (the editor's notices and status bar);
   // nothing without a window.
   virtual void notify(const std::string&) {}

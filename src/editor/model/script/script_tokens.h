@@ -75,4 +75,8 @@ ScriptAction parse_reference(Tokens& t);
 // `fit phong|blinn-phong [l2|lightness]` (reference_lines.cpp).
 ScriptAction parse_fit(Tokens& t);
 
+// window_lines.cpp: `layout ...` and `lobe plot|overlay|turn ...` (issue 24).
+ScriptAction parse_layout(Tokens& t);
+ScriptAction parse_lobe(Tokens& t);
+
 }  // namespace gloss

@@ -58,6 +58,17 @@ glm::vec3 point_at_depth(const Camera& camera, int width, int height, const glm:
   return frame.eye + direction * (depth / along);
 }
 
+Camera overscan_camera(const Camera& camera, float document_aspect, float pane_aspect) {
+  if (!(pane_aspect > 0.0f) || !(pane_aspect < document_aspect)) return camera;
+  // The horizontal field, tan(fov_y / 2) x aspect, stays the document's.
+  const double half = std::tan(glm::radians(static_cast<double>(camera.fov_y)) * 0.5);
+  const double wider = half * static_cast<double>(document_aspect) / pane_aspect;
+  Camera out = camera;
+  // Below 180 degrees, as every camera's field of view (a float could round up to it).
+  out.fov_y = std::min(static_cast<float>(glm::degrees(2.0 * std::atan(wider))), 179.5f);
+  return out;
+}
+
 glm::vec3 new_light_position(const Camera& camera, int width, int height) {
   const glm::vec3 anchor = camera.eye + 0.5f * (camera.target - camera.eye);
   const glm::vec2 px(0.7f * static_cast<float>(width), 0.25f * static_cast<float>(height));
@@ -65,7 +76,7 @@ glm::vec3 new_light_position(const Camera& camera, int width, int height) {
 }
 
 EdgeMarker edge_marker(const Camera& camera, int width, int height, const glm::vec3& p,
-                       float margin) {
+                       float margin, float top_margin) {
   EdgeMarker m;
   const float w = static_cast<float>(width), h = static_cast<float>(height);
   glm::vec2 at;
@@ -84,7 +95,9 @@ EdgeMarker edge_marker(const Camera& camera, int width, int height, const glm::v
   if (glm::length(dir) < 1e-9f) dir = glm::vec2(0.0f, -1.0f);  // straight behind: say "up"
   dir = glm::normalize(dir);
   const glm::vec2 centre(0.5f * w, 0.5f * h);
-  const glm::vec2 half(std::max(0.5f * w - margin, 0.0f), std::max(0.5f * h - margin, 0.0f));
+  const float top = top_margin >= 0.0f ? top_margin : margin;
+  const glm::vec2 half(std::max(0.5f * w - margin, 0.0f),
+                       std::max(0.5f * h - (dir.y < 0.0f ? top : margin), 0.0f));
   // Scale the direction to the inset rectangle's border.
   const float tx = std::abs(dir.x) > 1e-9f ? half.x / std::abs(dir.x) : 1e30f;
   const float ty = std::abs(dir.y) > 1e-9f ? half.y / std::abs(dir.y) : 1e30f;

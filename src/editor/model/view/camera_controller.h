@@ -29,21 +29,34 @@ bool project_point(const Camera& camera, int width, int height, const glm::vec3&
 glm::vec3 point_at_depth(const Camera& camera, int width, int height, const glm::vec2& px,
                          const glm::vec3& anchor);
 
+// The camera of a pane whose aspect (width / height) differs from the document's: it sees
+// everything the document's camera sees, centred, and more of the scene on the two sides the
+// pane has room on (a taller pane: a wider vertical field of view; a wider pane: the same one).
+// The document's frame is then the centred rectangle of its aspect in the pane (pane_layout.h).
+Camera overscan_camera(const Camera& camera, float document_aspect, float pane_aspect);
+
 // Where "Add light" puts a new light: in view, upper right of the image (70% across, 25% down)
 // at half the target's depth, so its marker is on screen and it lights the front of the scene.
 glm::vec3 new_light_position(const Camera& camera, int width, int height);
 
 // A marker for world point p in a width x height image: on screen, its projection; off screen
-// (outside the image or behind the eye), the point of the rectangle inset by margin pixels in
-// the direction of p from the image centre, with on_screen false. direction: unit vector in image
-// coordinates (y down) from the centre toward p.
+// (outside the image or behind the eye), the point of the rectangle inset by margin pixels
+// (top_margin at the top, where a pane's label sits; < 0: margin) in the direction of p from the
+// image centre, with on_screen false. direction: unit vector in image coordinates (y down) from
+// the centre toward p. The viewport draws the marker and tests clicks at this one position.
 struct EdgeMarker {
   glm::vec2 position{0.0f};
   glm::vec2 direction{0.0f, -1.0f};
   bool on_screen = false;
 };
 EdgeMarker edge_marker(const Camera& camera, int width, int height, const glm::vec3& p,
-                       float margin);
+                       float margin, float top_margin = -1.0f);
+
+// p moved by delta (pixels, y down) in the plane facing the camera, at the scale of p's depth
+// (behind or beside the eye: of its distance): dragging an off-view light's arrow moves the
+// light as the arrow moves, until it comes into view.
+glm::vec3 move_in_view_plane(const Camera& camera, int width, int height, const glm::vec3& p,
+                             const glm::vec2& delta);
 
 // The image rectangle (lo, hi; y down) that holds the projection of object's axis-aligned
 // bounds (a sphere's centre +- radius, a mesh's bounds): the viewport frames the selected object

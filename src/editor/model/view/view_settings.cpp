@@ -77,14 +77,34 @@ const char* to_string(ScreenshotKind kind) {
       return "window";
     case ScreenshotKind::shown:
       return "shown";
+    case ScreenshotKind::exr:
+      return "exr";
   }
   return "?";
 }
 
 bool parse_screenshot_kind(const std::string& name, ScreenshotKind& kind) {
   const ScreenshotKind all[] = {ScreenshotKind::viewport, ScreenshotKind::terms,
-                                ScreenshotKind::window, ScreenshotKind::shown};
+                                ScreenshotKind::window, ScreenshotKind::shown,
+                                ScreenshotKind::exr};
   return parse_name(name, all, kind);
+}
+
+const char* to_string(LobePlot plot) {
+  switch (plot) {
+    case LobePlot::plane:
+      return "plane";
+    case LobePlot::hemisphere:
+      return "3d";
+    case LobePlot::albedo:
+      return "albedo";
+  }
+  return "?";
+}
+
+bool parse_lobe_plot(const std::string& name, LobePlot& plot) {
+  const LobePlot all[] = {LobePlot::plane, LobePlot::hemisphere, LobePlot::albedo};
+  return parse_name(name, all, plot);
 }
 
 bool lobe_energy_normalize(LobeEnergy energy, bool document_setting) {

@@ -1,8 +1,8 @@
 #pragma once
-// How the editor shows the document: view mode, exposure, preview quality. These are
+// How the editor shows the document: view mode, preview quality, the pixel inspector. These are
 // preferences of the window, not part of the document, so they are not undone. The display
-// encoding (sRGB or clamp) is the document's (render.srgb): the viewport, screenshots and
-// exports all follow it.
+// transform (render.exposure, render.tone, render.srgb) is the document's: the viewport,
+// screenshots, exports and gloss-cli all follow it (display/display_transform.h).
 #include <string>
 
 #include "editor/model/view/raster_settings.h"
@@ -29,9 +29,11 @@ bool parse_term_view(const std::string& name, TermView& term);
 // (docs/spec/physical-reference.md), both at 1 spp.
 enum class AbSource { models, snapshot, cpu_gl, pixel_vertex, reference };
 
-// viewport and terms render the document again at its size; window reads the window back; shown
-// writes the frame the viewport shows as it is (shown_image.h).
-enum class ScreenshotKind { viewport, terms, window, shown };
+// viewport and terms render the document again at its size, through the display transform, as
+// PNG; window reads the window back; shown writes the frame the viewport shows as it is
+// (shown_image.h); exr is the viewport's linear image (before the transform) as 32-bit float
+// OpenEXR.
+enum class ScreenshotKind { viewport, terms, window, shown, exr };
 const char* to_string(ScreenshotKind kind);
 bool parse_screenshot_kind(const std::string& name, ScreenshotKind& kind);
 
@@ -39,13 +41,23 @@ bool parse_screenshot_kind(const std::string& name, ScreenshotKind& kind);
 // forced on or off for the view alone (the document is not changed).
 enum class LobeEnergy { scene, on, off };
 
+// What the lobe view plots: the plane of incidence (polar), the whole hemisphere of outgoing
+// directions (3D), or the directional albedo against the incidence angle.
+enum class LobePlot { plane, hemisphere, albedo };
+const char* to_string(LobePlot plot);
+bool parse_lobe_plot(const std::string& name, LobePlot& plot);
+
+// The lobe view's second material, drawn over the selected one's: none, the snapshot's material
+// of the same object (the A side of the snapshot A/B view), a material of the document or a
+// preset, by name (lobe_overlay.h resolves it).
+enum class LobeOverlay { none, snapshot, material, preset };
+
 struct ViewSettings {
   ViewMode mode = ViewMode::render;
   // Which renderer draws the viewport (raster_settings.h) and the raster path's knobs.
   RendererChoice renderer = RendererChoice::cpu;
   RasterSettings raster;
   TermView single = TermView::specular;   // shown by ViewMode::single
-  float exposure = 0.0f;                  // stops: displayed value = linear * 2^exposure
   bool heat_auto_scale = true;            // heat scale = largest difference of the shown pair
   float heat_scale = 0.1f;                // linear difference at the top of the heat ramp, > 0
   float preview_scale = 1.0f;             // render pixels per screen pixel, 0.25..1
@@ -62,6 +74,11 @@ struct ViewSettings {
   // The lobe view (ViewMode::lobe).
   float lobe_elevation_deg = 45.0f;  // light above the surface, degrees, 0..90
   LobeEnergy lobe_energy = LobeEnergy::scene;
+  LobePlot lobe_plot = LobePlot::plane;
+  LobeOverlay lobe_overlay = LobeOverlay::none;
+  std::string lobe_overlay_name;   // LobeOverlay::material and ::preset: which one
+  float lobe_azimuth_deg = 35.0f;  // the 3D plot's camera about the normal, degrees
+  float lobe_tilt_deg = 25.0f;     // ... above the surface, degrees, -10..89
   // The plot's radius on a logarithmic scale (three decades below the largest value), so a
   // physical reference's bright peak and a Phong lobe of ks <= 1 read in one plot.
   bool lobe_log_radius = false;

@@ -9,6 +9,7 @@
 #include <glm/common.hpp>
 
 #include "editor/model/view/log_drag.h"
+#include "editor/ui/panels/panel_widgets.h"
 #include "scene/fields/field.h"
 
 namespace gloss {
@@ -16,6 +17,11 @@ namespace gloss {
 // With linked channels a change of one channel scales the others by the same factor (or shifts
 // them by the same amount from zero), keeping the hue. Components stay >= 0.
 bool colour_widget(const char* label, glm::vec3& colour, bool linked);
+
+// A logarithmic drag (editor/model/view/log_drag.h): the value follows the mouse's distance from
+// the press, 1% per pixel (Shift 10%, Alt 0.1%), so it returns to its start with the mouse; no
+// jump on press; Ctrl+click types a value. floor: the speed at 0, value units per pixel.
+bool log_drag_widget(const char* label, float& value, float floor, float lo, float hi);
 
 // Draws the widget of one field of value and applies an edit to value; true when it changed.
 // label: shown instead of the field's own label (the exponent's follows the shading model).
@@ -39,13 +45,7 @@ bool field_widget(const Field<S>& field, S& value, bool link_channels = false,
     case FieldKind::number: {
       float x = static_cast<float>(v.x);
       if (field.ui_log) {
-        // A logarithmic drag (editor/model/view/log_drag.h): 1% per pixel, no jump on press.
-        const ImGuiSliderFlags flags =
-            ImGuiSliderFlags_NoRoundToFormat | ImGuiSliderFlags_AlwaysClamp;
-        if (ImGui::DragFloat(label, &x, log_drag_speed(x, std::max((hi - lo) * 1e-6f, 1e-3f)), lo,
-                             hi, "%.4g", flags)) {
-          v.x = x;
-        }
+        if (log_drag_widget(label, x, std::max((hi - lo) * 1e-6f, 1e-3f), lo, hi)) v.x = x;
       } else if (ImGui::SliderFloat(label, &x, lo, hi, "%.3g", ImGuiSliderFlags_NoRoundToFormat)) {
         v.x = x;
       }
@@ -70,7 +70,7 @@ bool field_widget(const Field<S>& field, S& value, bool link_channels = false,
       int index = static_cast<int>(v.x);
       ImGui::TextUnformatted(label);
       for (int i = 0; i < static_cast<int>(field.choices.size()); ++i) {
-        ImGui::SameLine();
+        same_line_if_fits(toggle_width(field.choices[static_cast<std::size_t>(i)]));
         ImGui::PushID(i);
         ImGui::RadioButton(field.choices[static_cast<std::size_t>(i)], &index, i);
         ImGui::PopID();

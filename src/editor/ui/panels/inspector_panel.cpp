@@ -174,6 +174,10 @@ void draw_inspector(InspectorState& state, ViewSettings& view, const CommandLaye
   ImGui::SetNextWindowPos(
       ImVec2(viewport_pos.x + viewport_size.x - 8.0f, viewport_pos.y + viewport_size.y - 8.0f),
       ImGuiCond_FirstUseEver, ImVec2(1.0f, 1.0f));
+  // Never taller or wider than the window: in a small one it scrolls (layout.cpp keeps it in).
+  const ImVec2 window = ImGui::GetMainViewport()->Size;
+  ImGui::SetNextWindowSizeConstraints(
+      ImVec2(0, 0), ImVec2(window.x - 16.0f, window.y - 2.0f * ImGui::GetFrameHeight() - 16.0f));
   if (!ImGui::Begin("Pixel inspector", &view.show_inspector, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::End();
     return;

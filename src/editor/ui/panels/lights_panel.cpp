@@ -167,7 +167,7 @@ void draw_lights_panel(Commands& commands, Selection& selection, ViewSettings& v
     ImGui::End();
     return;
   }
-  ImGui::PushItemWidth(-110.0f);
+  ImGui::PushItemWidth(-label_room(110.0f));
   section_title("Lights");
   draw_lights(commands, selection, view);
   section_title("Environment");

@@ -66,7 +66,7 @@ void draw_model_switch(Commands& commands, ViewSettings& view) {
   section_title("Shading model (whole scene)");
   int model = render.model == ShadingModel::phong ? 0 : 1;
   bool changed = ImGui::RadioButton("Phong (R.V)", &model, 0);
-  ImGui::SameLine();
+  same_line_if_fits(toggle_width("Blinn-Phong (N.H)"));
   changed |= ImGui::RadioButton("Blinn-Phong (N.H)", &model, 1);
   if (changed) {
     commands.execute(SetModel{model == 0 ? ShadingModel::phong : ShadingModel::blinn_phong,
@@ -142,21 +142,24 @@ void draw_material_panel(Commands& commands, Selection& selection, ViewSettings&
   ImGui::PopStyleColor();
 
   Material edited = material;
-  ImGui::PushItemWidth(-120.0f);  // room for the longest label, "Phong exponent"
+  ImGui::PushItemWidth(-label_room(120.0f));  // room for the longest label, "Phong exponent"
   ImGui::Checkbox("link RGB channels", &state.link_channels);
   // The exponent's label names the model it is the exponent of.
   const bool blinn = scene.render.model == ShadingModel::blinn_phong;
+  // In a narrow panel the exponent's label is its symbol (the tooltip names the model).
+  const bool short_label = ImGui::CalcTextSize("Phong exponent").x > label_room(120.0f);
+  const char* exponent_label = short_label ? "alpha##shininess"
+                               : blinn     ? "Blinn exponent##shininess"
+                                           : "Phong exponent##shininess";
   for (const Field<Material>& field : material_fields()) {
     // Maps have their rows below (map_slots.h); a map's scale shows once there is that map.
     if (field.kind == FieldKind::map || !field.applies_to(edited)) continue;
     const bool exponent = std::string(field.key) == "shininess";
-    field_widget(
-        field, edited, state.link_channels,
-        exponent ? (blinn ? "Blinn exponent##shininess" : "Phong exponent##shininess") : nullptr);
+    field_widget(field, edited, state.link_channels, exponent ? exponent_label : nullptr);
     if (exponent && ImGui::IsItemHovered()) {
-      ImGui::SetTooltip("%s", blinn ? "alpha of (N.H)^alpha, Blinn-Phong; drag: 1%% per pixel, "
+      ImGui::SetTooltip("%s", blinn ? "alpha of (N.H)^alpha, Blinn-Phong; drag: 1% per pixel, "
                                       "Shift faster, Alt finer, Ctrl+click to type"
-                                    : "alpha of (R.V)^alpha, Phong; drag: 1%% per pixel, "
+                                    : "alpha of (R.V)^alpha, Phong; drag: 1% per pixel, "
                                       "Shift faster, Alt finer, Ctrl+click to type");
     }
   }

@@ -22,6 +22,7 @@ class Viewport;
 struct FileBrowser;
 struct FrameTimes;
 struct InspectorState;
+struct LayoutState;
 struct MaterialLibrary;
 struct MaterialPanelState;
 struct Notices;
@@ -32,9 +33,11 @@ struct RunState;
 struct Selection;
 struct Session;
 
-// The main menu bar: File, Edit, View, Help. Items call the same actions as the shortcuts.
+// The main menu bar: File, Edit, View, Panels, Help. Items call the same actions as the
+// shortcuts; Panels changes the layout (collapsed panels, the maximised viewport).
 void draw_menu_bar(Commands& commands, ViewSettings& view, std::optional<Snapshot>& snapshot,
-                   Session& session, FileActions& files, Exports& exports, OpenWindows& windows);
+                   Session& session, FileActions& files, Exports& exports, OpenWindows& windows,
+                   LayoutState& layout);
 // The Material panel: the selected object's material, the presets, the shading model.
 // Loading a map opens the file browser.
 void draw_material_panel(Commands& commands, Selection& selection, ViewSettings& view,

@@ -88,7 +88,7 @@ void draw_use(Commands& commands, ViewSettings& view, const TradeoffRow& row) {
     ImGui::TextDisabled("in use");
     return;
   }
-  if (std::optional<Command> command = command_for_row(row)) {
+  if (std::optional<Command> command = command_for_row(row, scene)) {
     if (ImGui::SmallButton("Use")) commands.execute(*command);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", command_label(*command).c_str());
   } else if (std::optional<float> scale = preview_scale_for_row(row)) {

@@ -1,7 +1,8 @@
-// The View & Quality panel: view mode, exposure, heat-map scale, the renderer and the raster
-// path's knobs (issue 12), the document's render settings (scene/fields/fields.h's render table),
-// the preview scale, and screenshots. View settings are window preferences (not undone); render
-// settings are the document's and go through commands.
+// The View & Quality panel: view mode, the display transform (exposure, tone curve, encoding),
+// heat-map scale, the renderer and the raster path's knobs (issue 12), the document's render
+// settings (scene/fields/fields.h's render table), the preview scale, and screenshots. View
+// settings are window preferences (not undone); render settings are the document's and go through
+// commands.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -23,11 +24,11 @@ namespace gloss {
 
 namespace {
 
-// The histogram of the live image as displayed (exposure and encoding applied): R, G and B
+// The histogram of the live image as displayed (the display transform applied): R, G and B
 // counts over 64 bins, drawn as lines on a square-root scale so that the dark bins of a mostly
 // black background do not flatten the rest. Then the clipped share and the overlay switch.
-void draw_histogram(Viewport& viewport, ViewSettings& view, bool srgb) {
-  const ExposureHistogram h = viewport.histogram(view, srgb);
+void draw_histogram(Viewport& viewport, ViewSettings& view, const DisplayTransform& display) {
+  const ExposureHistogram h = viewport.histogram(view, display);
   const float width = ImGui::GetContentRegionAvail().x;
   const float height = 56.0f;
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
@@ -52,30 +53,56 @@ void draw_histogram(Viewport& viewport, ViewSettings& view, bool srgb) {
   const double share = h.clipped_share();
   const ImVec4 colour = share > 0.01 ? ImVec4(1.0f, 0.55f, 0.35f, 1.0f)
                                      : ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
-  ImGui::TextColored(colour, "clipped %.1f%% (R %.1f G %.1f B %.1f)", 100.0 * share,
-                     h.pixels ? 100.0 * h.clipped_channel[0] / h.pixels : 0.0,
-                     h.pixels ? 100.0 * h.clipped_channel[1] / h.pixels : 0.0,
-                     h.pixels ? 100.0 * h.clipped_channel[2] / h.pixels : 0.0);
+  ImGui::TextColored(colour, "clipped %s (R %s G %s B %s)", clipped_text(share).c_str(),
+                     clipped_text(h.clipped_channel_share(0)).c_str(),
+                     clipped_text(h.clipped_channel_share(1)).c_str(),
+                     clipped_text(h.clipped_channel_share(2)).c_str());
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
-        "pixels with any channel above 1 after exposure: the display clamps them\n"
-        "(histogram of the displayed values, R G B, square-root height)");
+        "pixels with any channel above 1 after the exposure and tone curve: the display\n"
+        "clamps them (counted in every pixel; histogram of the displayed values, R G B,\n"
+        "square-root height)");
   }
   ImGui::Checkbox("show clipped pixels", &view.show_clipped);
+}
+
+// The document's display transform (render.exposure, render.tone, render.srgb): edits of the
+// document, undone like any other, that no linear value depends on.
+bool is_display_field(const char* key) {
+  return std::string(key) == "exposure" || std::string(key) == "tone" || std::string(key) == "srgb";
+}
+
+void draw_display(Commands& commands) {
+  const Scene& scene = commands.scene();
+  RenderSettings edited = scene.render;
+  for (const Field<RenderSettings>& field : render_fields()) {
+    if (!is_display_field(field.key)) continue;
+    ImGui::PushID(field.key);
+    field_widget(field, edited);
+    if (std::string(field.key) == "exposure" && scene.render.exposure != 0.0f) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton("0")) edited.exposure = 0.0f;
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("exposure back to 0 stops");
+    }
+    ImGui::PopID();
+  }
+  if (auto command = field_command(FieldPart::render, 0, render_fields(), scene.render, edited)) {
+    commands.execute(*command);
+  }
 }
 
 void draw_view_mode(Commands& commands, ViewSettings& view, Viewport& viewport,
                     std::optional<Snapshot>& snapshot) {
   int mode = static_cast<int>(view.mode);
   ImGui::RadioButton("render (1)", &mode, static_cast<int>(ViewMode::render));
-  ImGui::SameLine();
+  same_line_if_fits(toggle_width("terms 2x2 (2)"));
   ImGui::RadioButton("terms 2x2 (2)", &mode, static_cast<int>(ViewMode::terms));
   ImGui::RadioButton("one term (3)", &mode, static_cast<int>(ViewMode::single));
-  ImGui::SameLine();
+  same_line_if_fits(toggle_width("A/B (4)"));
   ImGui::RadioButton("A/B (4)", &mode, static_cast<int>(ViewMode::ab));
   ImGui::RadioButton("BRDF lobe (5)", &mode, static_cast<int>(ViewMode::lobe));
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("the selected material's lobe as a polar plot");
-  ImGui::SameLine();
+  same_line_if_fits(toggle_width("pixel inspector (I)"));
   ImGui::Checkbox("pixel inspector (I)", &view.show_inspector);
   view.mode = static_cast<ViewMode>(mode);
   if (view.mode == ViewMode::single) {
@@ -132,11 +159,8 @@ void draw_view_mode(Commands& commands, ViewSettings& view, Viewport& viewport,
     ImGui::SameLine();
     ImGui::TextDisabled("%s kept", snapshot->label.c_str());
   }
-  ImGui::SliderFloat("exposure", &view.exposure, -8.0f, 8.0f, "%+.2f stops");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("display value = linear x 2^exposure");
-  ImGui::SameLine();
-  if (ImGui::SmallButton("0")) view.exposure = 0.0f;
-  draw_histogram(viewport, view, commands.scene().render.srgb);
+  draw_display(commands);
+  draw_histogram(viewport, view, display_transform(commands.scene().render));
 }
 
 // The teapots' tessellation, the mesh resolution that per-vertex shading depends on (and the
@@ -162,7 +186,7 @@ void draw_renderer(Commands& commands, ViewSettings& view, const Viewport& viewp
   int renderer = static_cast<int>(view.renderer);
   ImGui::RadioButton("Ray traced", &renderer, static_cast<int>(RendererChoice::cpu));
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("exact, refined pass by pass to the scene's spp");
-  ImGui::SameLine();
+  same_line_if_fits(toggle_width("Raster (GLSL)"));
   ImGui::RadioButton("Raster (GLSL)", &renderer, static_cast<int>(RendererChoice::gl));
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("OpenGL, one sample per pixel, shadow maps; redrawn on every change");
@@ -184,7 +208,7 @@ void draw_renderer(Commands& commands, ViewSettings& view, const Viewport& viewp
   RasterSettings& raster = view.raster;
   int shading = static_cast<int>(raster.shading);
   ImGui::RadioButton("Per pixel", &shading, static_cast<int>(ShadingFrequency::pixel));
-  ImGui::SameLine();
+  same_line_if_fits(toggle_width("Per vertex (Gouraud)"));
   ImGui::RadioButton("Per vertex (Gouraud)", &shading, static_cast<int>(ShadingFrequency::vertex));
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
@@ -216,11 +240,13 @@ void draw_renderer(Commands& commands, ViewSettings& view, const Viewport& viewp
 
 void draw_quality(Commands& commands, ViewSettings& view, OpenWindows& windows) {
   const Scene& scene = commands.scene();
-  // Every render setting of the document, its encoding included (exports and the viewport
-  // follow it), but the model: the Material panel's switch can rescale exponents with it.
+  // Every render setting of the document but the model (the Material panel's switch can
+  // rescale exponents with it) and the display transform (the View section's).
   RenderSettings edited = scene.render;
   for (const Field<RenderSettings>& field : render_fields()) {
-    if (std::string(field.key) != "model") field_widget(field, edited);
+    if (std::string(field.key) != "model" && !is_display_field(field.key)) {
+      field_widget(field, edited);
+    }
   }
   if (auto command = field_command(FieldPart::render, 0, render_fields(), scene.render, edited)) {
     commands.execute(*command);
@@ -240,14 +266,21 @@ void draw_quality(Commands& commands, ViewSettings& view, OpenWindows& windows) 
 void draw_screenshot(ViewSettings& view, Exports& exports) {
   int kind = static_cast<int>(view.screenshot_kind);
   ImGui::RadioButton("viewport", &kind, static_cast<int>(ScreenshotKind::viewport));
-  ImGui::SameLine();
+  same_line_if_fits(toggle_width("term sheet"));
   ImGui::RadioButton("term sheet", &kind, static_cast<int>(ScreenshotKind::terms));
-  ImGui::SameLine();
+  same_line_if_fits(toggle_width("window"));
   ImGui::RadioButton("window", &kind, static_cast<int>(ScreenshotKind::window));
-  ImGui::SameLine();
+  same_line_if_fits(toggle_width("as shown"));
   ImGui::RadioButton("as shown", &kind, static_cast<int>(ScreenshotKind::shown));
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("the frame on screen as it is, at its own size (not rendered again)");
+  }
+  same_line_if_fits(toggle_width("EXR"));
+  ImGui::RadioButton("EXR", &kind, static_cast<int>(ScreenshotKind::exr));
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "the render (or the term shown) as linear 32-bit float OpenEXR, before the display\n"
+        "transform, at the document's size");
   }
   view.screenshot_kind = static_cast<ScreenshotKind>(kind);
   ImGui::InputText("folder", &view.screenshot_dir);
@@ -277,7 +310,7 @@ void draw_view_panel(Commands& commands, ViewSettings& view, Viewport& viewport,
     ImGui::End();
     return;
   }
-  ImGui::PushItemWidth(-130.0f);  // room for "samples per pixel"
+  ImGui::PushItemWidth(-label_room(130.0f));  // room for "samples per pixel"
   section_title("Renderer");
   draw_renderer(commands, view, viewport);
   section_title("View");

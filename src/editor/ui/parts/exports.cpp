@@ -55,13 +55,13 @@ void Exports::start(ScreenshotKind kind, const std::string& path, bool from_scri
   job.from_script = from_script;
   job.path = std::async(std::launch::async, [scene, view, kind, path, raster, raster_error] {
     if (!raster_error.empty()) throw std::runtime_error(raster_error);
-    const Image image =
-        raster ? export_image(raster->images, view, kind) : render_export(scene, view, kind);
+    const Image image = raster ? export_image(raster->images, view, kind, scene.render)
+                               : render_export(scene, view, kind);
     const TextChunks text = export_text(scene, view, kind);
     if (path.empty()) {
-      return write_png_unique(view.screenshot_dir, std::string("gloss-") + to_string(kind), image,
-                              scene.render.srgb, text, std::time(nullptr));
+      return write_export_in(view.screenshot_dir, kind, image, scene.render.srgb, text);
     }
+    if (kind == ScreenshotKind::exr) return write_exr_export(path, image);
     return write_export(path, image, scene.render.srgb, text);
   });
   m_pending.push_back(std::move(job));

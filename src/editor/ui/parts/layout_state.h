@@ -1,15 +1,14 @@
 #pragma once
-// Where the window's panels sit: the sizes the user dragged the splitters to (layout.cpp draws
-// the panels from them).
+// Where the window's panels sit: the sizes the user dragged the splitters to, the collapsed
+// panels, the maximised viewport (editor/model/layout/panel_layout.h has the rules; layout.cpp
+// draws the panels from them), and the layout of the last frame (the script's `layout` line).
+#include "editor/model/layout/panel_layout.h"
 
 namespace gloss {
 
 struct LayoutState {
-  // Side panels, dragged by the splitters at their inner edges (screen pixels; 0: the default
-  // share of the window). lights_share: the Lights panel's part of the right column's height.
-  float left_width = 0.0f, right_width = 0.0f, lights_share = 0.5f;
-  // The Material panel's part of the left column's height (the Reference panel has the rest).
-  float material_share = 0.66f;
+  PanelChoices panels;
+  PanelLayout last;  // as drawn in the newest frame
 };
 
 }  // namespace gloss

@@ -16,7 +16,9 @@
 #include "analysis/brdf_lobe.h"
 #include "editor/model/document/document.h"
 #include "editor/ui/parts/selection.h"
+#include "editor/ui/viewport/lobe_plots.h"
 #include "editor/ui/viewport/viewport.h"
+#include "io/material/preset_table.h"
 
 namespace gloss {
 
@@ -72,31 +74,30 @@ double ring_step(double top) {
   return 10.0 * decade;
 }
 
-void dashed_line(ImDrawList* list, ImVec2 a, ImVec2 b, ImU32 colour, float thickness) {
-  const float dx = b.x - a.x, dy = b.y - a.y;
-  const float length = std::hypot(dx, dy);
-  const int dashes = std::max(1, static_cast<int>(length / 8.0f));
-  for (int i = 0; i < dashes; i += 2) {
-    const float s = static_cast<float>(i) / dashes, e = static_cast<float>(i + 1) / dashes;
-    list->AddLine(ImVec2(a.x + dx * s, a.y + dy * s), ImVec2(a.x + dx * e, a.y + dy * e), colour,
-                  thickness);
-  }
-}
-
 void centred_text(ImDrawList* list, ImVec2 at, ImU32 colour, const char* text) {
   const ImVec2 t = ImGui::CalcTextSize(text);
   list->AddText(ImVec2(at.x - t.x * 0.5f, at.y - t.y * 0.5f), colour, text);
 }
 
-// The curve of values (one per lobe sample) as a polyline.
+// The curve of values (one per lobe sample) as a polyline, or dashed (the second material's).
 void curve(ImDrawList* list, const PolarFrame& frame, const BrdfLobe& lobe,
-           const std::vector<double>& values, ImU32 colour, float thickness) {
+           const std::vector<double>& values, ImU32 colour, float thickness, bool dashed = false) {
   std::vector<ImVec2> points;
   points.reserve(values.size());
   for (std::size_t i = 0; i < values.size(); ++i) {
     points.push_back(frame.at(lobe.samples[i].theta_deg, values[i]));
   }
-  list->AddPolyline(points.data(), static_cast<int>(points.size()), colour, 0, thickness);
+  if (!dashed) {
+    list->AddPolyline(points.data(), static_cast<int>(points.size()), colour, 0, thickness);
+    return;
+  }
+  // Dashes of about 8 pixels along the curve, whatever its sampling.
+  float run = 0.0f;
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const float d = std::hypot(points[i].x - points[i - 1].x, points[i].y - points[i - 1].y);
+    if (std::fmod(run, 16.0f) < 8.0f) list->AddLine(points[i - 1], points[i], colour, thickness);
+    run += d;
+  }
 }
 
 // Rings with their values, spokes every 15 degrees with labels every 30, the surface line.
@@ -147,7 +148,7 @@ void draw_directions(ImDrawList* list, const PolarFrame& frame, double elevation
                           ImVec2(to.x - 12.0f * ux + 6.0f * uy, to.y - 12.0f * uy - 6.0f * ux),
                           kLightLine);
   list->AddCircleFilled(from, 7.0f, kLightLine);
-  dashed_line(list, frame.origin, frame.at(incidence, frame.scale * 1.05), kMirrorLine, 1.5f);
+  lobe_dashed_line(list, frame.origin, frame.at(incidence, frame.scale * 1.05), kMirrorLine, 1.5f);
   centred_text(list, frame.at(incidence, frame.scale * 1.05 + 14.0 * frame.scale / frame.radius_px),
                kMirrorLine, "mirror");
 }
@@ -158,51 +159,6 @@ float elevation_at(const PolarFrame& frame, ImVec2 p) {
   const double dx = std::abs(p.x - frame.origin.x), dy = frame.origin.y - p.y;
   const double deg = std::atan2(std::max(dy, 0.0), dx) * 180.0 / kPi;
   return static_cast<float>(std::clamp(deg, 0.0, 90.0));
-}
-
-const char* energy_label(LobeEnergy energy, bool document) {
-  switch (energy) {
-    case LobeEnergy::scene:
-      return document ? "as the scene (on)" : "as the scene (off)";
-    case LobeEnergy::on:
-      return "on (view only)";
-    case LobeEnergy::off:
-      return "off (view only)";
-  }
-  return "?";
-}
-
-void draw_controls(ViewSettings& view, bool document_energy) {
-  ImGui::PushItemWidth(200.0f);
-  ImGui::SliderFloat("light elevation", &view.lobe_elevation_deg, 0.0f, 90.0f,
-                     "%.1f\xC2\xB0 above the surface");
-  view.lobe_elevation_deg = std::clamp(view.lobe_elevation_deg, 0.0f, 90.0f);
-  ImGui::SameLine();
-  if (ImGui::BeginCombo("energy normalisation", energy_label(view.lobe_energy, document_energy))) {
-    for (LobeEnergy e : {LobeEnergy::scene, LobeEnergy::on, LobeEnergy::off}) {
-      if (ImGui::Selectable(energy_label(e, document_energy), e == view.lobe_energy)) {
-        view.lobe_energy = e;
-      }
-    }
-    ImGui::EndCombo();
-  }
-  ImGui::PopItemWidth();
-  ImGui::SameLine();
-  ImGui::Checkbox("log radius", &view.lobe_log_radius);
-  if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip(
-        "three decades of luminance, one ring each: a physical reference's\n"
-        "bright peak and a classic lobe of ks <= 1 in one plot");
-  }
-  ImGui::SameLine();
-  ImGui::Checkbox("4x rule", &view.keep_highlight_size);
-  if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip(
-        "on: the model the scene does not use is drawn with the exponent that keeps\n"
-        "the highlight's size (Blinn-Phong 4x Phong's); off: both models with the\n"
-        "material's own exponent. The same setting as the Material panel's 'keep\n"
-        "highlight size (x4 rule)', which the A/B view's B side follows too");
-  }
 }
 
 struct Curves {
@@ -241,8 +197,8 @@ void legend_swatch(ImDrawList* list, ImVec2 at, ImU32 colour, bool filled) {
 
 }  // namespace
 
-void draw_lobe_view(const Scene& scene, const Selection& selection, ViewSettings& view, ImVec2 pos,
-                    ImVec2 size) {
+void draw_lobe_view(const Scene& scene, const Selection& selection, ViewSettings& view,
+                    const Snapshot* snapshot, LobeViewState& state, ImVec2 pos, ImVec2 size) {
   ImDrawList* list = ImGui::GetWindowDrawList();
   list->AddRectFilled(pos, ImVec2(pos.x + size.x, pos.y + size.y), kBackground);
   if (scene.objects.empty()) {
@@ -259,37 +215,64 @@ void draw_lobe_view(const Scene& scene, const Selection& selection, ViewSettings
 
   const float pad = 14.0f;
   ImGui::SetCursorScreenPos(ImVec2(pos.x + pad, pos.y + pad));
-  ImGui::Text("Lobe of material '%s' (object '%s'): reflected radiance in the plane of incidence",
-              material_name.c_str(), object.name.c_str());
+  const char* what =
+      view.lobe_plot == LobePlot::plane        ? "reflected radiance in the plane of incidence"
+      : view.lobe_plot == LobePlot::hemisphere ? "reflected radiance over the hemisphere"
+                                               : "directional albedo against the incidence angle";
+  ImGui::Text("Lobe of material '%s' (object '%s'): %s", material_name.c_str(), object.name.c_str(),
+              what);
   ImGui::SetCursorScreenPos(ImVec2(pos.x + pad, ImGui::GetCursorScreenPos().y));
-  draw_controls(view, scene.render.energy_normalize);
+  draw_lobe_controls(view, scene.render.energy_normalize);
+  LobeSubject subject;
+  subject.material = material;
+  subject.name = material_name;
+  subject.params = lobe_exponents(material, scene, view);
+  subject.model = scene.render.model;
+  subject.elevation_deg = view.lobe_elevation_deg;
+  subject.overlay = lobe_overlay_material(view, scene, index, snapshot);
+  if (subject.overlay) {
+    subject.overlay_params = lobe_exponents(subject.overlay->material, scene, view);
+  }
+  ImGui::SetCursorScreenPos(ImVec2(pos.x + pad, ImGui::GetCursorScreenPos().y));
+  draw_lobe_plot_controls(view, scene, snapshot, subject.overlay);
   const float top_y = ImGui::GetCursorScreenPos().y;
+  const ImVec2 rest(pos.x, top_y), rest_size(size.x, std::max(size.y - (top_y - pos.y), 40.0f));
+  if (view.lobe_plot == LobePlot::hemisphere) {
+    draw_lobe_hemisphere(subject, view, rest, rest_size);
+    return;
+  }
+  if (view.lobe_plot == LobePlot::albedo) {
+    draw_lobe_albedo(subject, state.albedo, state.overlay_albedo, rest, rest_size);
+    return;
+  }
 
-  // The scene's model keeps the material's exponent; the other one gets the rescaled exponent
-  // when the highlight size is kept (document.h).
   const ShadingModel model = scene.render.model;
-  const float alpha = material.shininess;
   LobeParams params;
   params.elevation_deg = view.lobe_elevation_deg;
-  params.phong_alpha =
-      view.keep_highlight_size ? exponent_for_model(alpha, model, ShadingModel::phong) : alpha;
-  params.blinn_alpha = view.keep_highlight_size
-                           ? exponent_for_model(alpha, model, ShadingModel::blinn_phong)
-                           : alpha;
-  params.energy_normalize = lobe_energy_normalize(view.lobe_energy, scene.render.energy_normalize);
+  params.phong_alpha = subject.params.phong_alpha;
+  params.blinn_alpha = subject.params.blinn_alpha;
+  params.energy_normalize = subject.params.energy_normalize;
   params.samples = kSamples;
   const BrdfLobe lobe = sample_brdf_lobe(material, params);
   const Curves curves = luminance_curves(lobe);
+  // The second material under the same light, with its own exponents by the same rule.
+  LobeParams overlay_params = params;
+  overlay_params.phong_alpha = subject.overlay_params.phong_alpha;
+  overlay_params.blinn_alpha = subject.overlay_params.blinn_alpha;
+  const BrdfLobe overlay_lobe =
+      subject.overlay ? sample_brdf_lobe(subject.overlay->material, overlay_params) : BrdfLobe{};
+  const Curves overlay = luminance_curves(overlay_lobe);
+  const double top = std::max(curves.top, overlay.top);
 
   // Layout: the half disc above the surface line, the legend under it.
-  const float legend_h = 13.0f * (ImGui::GetTextLineHeightWithSpacing() + 2.0f) + 20.0f;
+  const float legend_h = 14.0f * (ImGui::GetTextLineHeightWithSpacing() + 2.0f) + 20.0f;
   const float plot_h = std::max(size.y - (top_y - pos.y) - legend_h - 60.0f, 40.0f);
   PolarFrame frame;
   frame.radius_px = std::max(std::min(size.x * 0.5f - 70.0f, plot_h), 20.0f);
   frame.origin =
       ImVec2(std::floor(pos.x + size.x * 0.5f), std::floor(top_y + 44.0f + frame.radius_px));
-  const double step = ring_step(std::max(curves.top, 1e-6) * 1.05);
-  frame.scale = step * std::ceil(std::max(curves.top, 1e-6) * 1.05 / step);
+  const double step = ring_step(std::max(top, 1e-6) * 1.05);
+  frame.scale = step * std::ceil(std::max(top, 1e-6) * 1.05 / step);
   frame.log = view.lobe_log_radius;
 
   // The floor: a filled half disc of radius kd ndl (the same in every direction).
@@ -310,6 +293,11 @@ void draw_lobe_view(const Scene& scene, const Selection& selection, ViewSettings
   curve(list, frame, lobe, phong_scene ? curves.blinn : curves.phong,
         phong_scene ? kBlinnLine : kPhongLine, 1.5f);
   if (lobe.has_reference) curve(list, frame, lobe, curves.reference, kReferenceLine, 2.5f);
+  if (subject.overlay) {
+    curve(list, frame, overlay_lobe, overlay.floor, kLobeOverlay, 1.0f, true);
+    curve(list, frame, overlay_lobe, phong_scene ? overlay.phong : overlay.blinn, kLobeOverlay,
+          2.0f, true);
+  }
   draw_directions(list, frame, params.elevation_deg);
 
   // Dragging in the plot moves the light; hovering reads the values at that angle.
@@ -367,6 +355,17 @@ void draw_lobe_view(const Scene& scene, const Selection& selection, ViewSettings
                   to_string(r.kind), r.roughness, curves.reference[curves.reference_peak],
                   lobe.samples[curves.reference_peak].theta_deg);
     list->AddText(ImVec2(x + 30.0f, y), kText, text);
+    y += line_h;
+  }
+  if (subject.overlay) {
+    legend_swatch(list, ImVec2(x, y + 2.0f), kLobeOverlay, false);
+    const std::vector<double>& o = phong_scene ? overlay.phong : overlay.blinn;
+    const std::size_t peak = phong_scene ? overlay.phong_peak : overlay.blinn_peak;
+    std::snprintf(text, sizeof text, "dashed: %s  alpha %.4g   peak %.4g at %.1f\xC2\xB0",
+                  subject.overlay->label.c_str(),
+                  phong_scene ? overlay_params.phong_alpha : overlay_params.blinn_alpha, o[peak],
+                  overlay_lobe.samples[peak].theta_deg);
+    list->AddText(ImVec2(x + 30.0f, y), kLobeOverlay, text);
     y += line_h;
   }
   legend_swatch(list, ImVec2(x, y + 2.0f), kLightLine, false);

@@ -108,13 +108,16 @@ void Viewport::upload_frames(double now_s) {
   if (new_a && m_frame_a->images.total.width > 0) m_image_a = m_frame_a;
   if (new_b && m_frame_b->images.total.width > 0) m_image_b = m_frame_b;
   if (new_a || new_b) max_difference_of_shown();
-  if (new_a) {
+  // A new frame of the side the newest edit changed (sync: in the snapshot | live view an edit
+  // changes only B) shows edits; a new frame of the other side is a new image of no edit.
+  const bool watched_new = m_watch_b ? new_b : new_a;
+  if (watched_new) {
+    const RenderedFrame& watched = m_watch_b ? *m_frame_b : *m_frame_a;
     m_show_pending = true;
-    m_show_generation = m_frame_a->info.generation;
-    m_show_full =
-        m_frame_a->info.width == m_render_width && m_frame_a->info.height == m_render_height;
-  } else if (new_b && !m_show_pending) {
-    m_show_pending = true;  // a new image too, of no edit the A side has not shown
+    m_show_generation = watched.info.generation;
+    m_show_full = watched.info.width == m_render_width && watched.info.height == m_render_height;
+  } else if ((new_a || new_b) && !m_show_pending) {
+    m_show_pending = true;
     m_show_generation = 0;
     m_show_full = false;
   }
@@ -200,7 +203,18 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
                      : AbScenes{std::move(scene), Scene{}};
   pair.a.render.width = pair.b.render.width = width;  // the snapshot has its own size
   pair.a.render.height = pair.b.render.height = height;
-  std::uint64_t pushed_generation = 0;  // what the A side's ray tracer returned, 0: not handed
+  if (m_fill) {
+    // Panes that fill their cells show each side's view, in the document's frame, and more
+    // around it (pane_camera); the snapshot keeps its own camera.
+    Scene framed = document;
+    for (Scene* side : {&pair.a, &pair.b}) {
+      framed.camera = side->camera;
+      side->camera = pane_camera(framed);
+    }
+  }
+  std::uint64_t pushed_generation = 0;    // what the A side's ray tracer returned, 0: not handed
+  std::uint64_t pushed_generation_b = 0;  // the same for the B side
+  bool a_changed = false, b_changed = false;  // a side's ray tracer has a new generation
   if (changed) {
     if (!terms) {
       // Textures the view no longer shows: llvmpipe keeps each in RAM (12 B per pixel).
@@ -219,22 +233,35 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
       if (!m_a) {
         m_a = make_cpu_renderer(terms);
         m_automatic.ray_tracer_restarted();
+        m_last_generation_a = 0;
       } else {
         m_a->set_terms(terms);  // no work when unchanged; also a view switched while paused
       }
       pushed_generation = m_a->set_scene(pair.a);
+      a_changed = pushed_generation != m_last_generation_a;
+      m_last_generation_a = pushed_generation;
       // Taking over from the raster path: frames of older generations show the scene before it.
       if (m_shown_raster_a) m_handover_generation = pushed_generation;
       m_traced_setup = m_setup;
     }
     if (ab && sides.b.physical) {
       m_b.reset();
-      if (!m_reference) m_reference = make_reference_preview();
-      m_reference->set_scene(pair.b);
+      if (!m_reference) {
+        m_reference = make_reference_preview();
+        m_last_generation_b = 0;
+      }
+      pushed_generation_b = m_reference->set_scene(pair.b);
+      b_changed = pushed_generation_b != m_last_generation_b;
+      m_last_generation_b = pushed_generation_b;
     } else if (ab && !sides.b.raster) {
       m_reference.reset();
-      if (!m_b) m_b = make_cpu_renderer(false);
-      m_b->set_scene(pair.b);
+      if (!m_b) {
+        m_b = make_cpu_renderer(false);
+        m_last_generation_b = 0;
+      }
+      pushed_generation_b = m_b->set_scene(pair.b);
+      b_changed = pushed_generation_b != m_last_generation_b;
+      m_last_generation_b = pushed_generation_b;
     } else {
       m_b.reset();
       m_reference.reset();
@@ -271,14 +298,33 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
   if (new_edit) {
     // now_s is the start of the frame in which the edit happened. Frames of the generation the
     // ray tracer was handed with it, or later, show it; an edit the raster path draws (no
-    // generation) is shown by its raster frame (kNewest).
-    if (pushed_generation > 0) m_edit_generation = pushed_generation;
-    m_cadence.edit(m_edit_generation, now_s);
-    if (m_edit_tags.empty() || m_edit_tags.back().generation < m_edit_generation) {
-      m_edit_tags.push_back({m_edit_generation, moving_gesture(now_s), m_setup});
-      if (m_edit_tags.size() > 4096) m_edit_tags.pop_front();  // frames that never come
-    } else {
-      m_edit_tags.back() = {m_edit_generation, moving_gesture(now_s), m_setup};
+    // generation) is shown by its raster frame (kNewest). The side watched is the one the edit
+    // changed: in the snapshot | live view an edit changes only B (live); watching A there,
+    // whose frames never came, made the next view switch read as the edit's delay (20 to 127 s).
+    // Generations count per renderer, so a switch of side forgets the other side's edits.
+    const bool watch_b = b_changed && !a_changed;
+    if (watch_b != m_watch_b) {
+      m_cadence.forget_pending();
+      m_edit_tags.clear();
+      m_edit_generation = 0;
+      m_watch_b = watch_b;
+    }
+    // An edit that changed no ray-traced side (a raster side shows it below; a name changes no
+    // image) is not waited for: a later, unrelated frame would read as its delay.
+    const bool raster_side = sides.a.raster || (ab && sides.b.raster);
+    if (a_changed || b_changed || raster_side) {
+      if (m_watch_b) {
+        m_edit_generation = pushed_generation_b;
+      } else if (pushed_generation > 0) {
+        m_edit_generation = pushed_generation;
+      }
+      m_cadence.edit(m_edit_generation, now_s);
+      if (m_edit_tags.empty() || m_edit_tags.back().generation < m_edit_generation) {
+        m_edit_tags.push_back({m_edit_generation, moving_gesture(now_s), m_setup});
+        if (m_edit_tags.size() > 4096) m_edit_tags.pop_front();  // frames that never come
+      } else {
+        m_edit_tags.back() = {m_edit_generation, moving_gesture(now_s), m_setup};
+      }
     }
   }
   if (raster_dirty) {
@@ -302,6 +348,12 @@ bool Viewport::converged_and_shown(std::uint64_t revision, const ViewSettings& v
       needs_terms(view) != m_pushed_terms || view.renderer != m_pushed_renderer ||
       view.raster != m_pushed_raster ||
       (view.mode == ViewMode::ab && view.ab_source != m_pushed_source)) {
+    return false;
+  }
+  // The lobe view's albedo plot is shown once its curves (a worker's) are the current ones.
+  if (view.mode == ViewMode::lobe && view.lobe_plot == LobePlot::albedo &&
+      (!m_lobe.albedo.current() ||
+       (view.lobe_overlay != LobeOverlay::none && m_lobe.overlay_albedo.busy()))) {
     return false;
   }
   // A raster frame is final once it is on screen; the ray tracer's when it has converged.

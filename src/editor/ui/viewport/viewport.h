@@ -18,7 +18,10 @@
 #include "editor/model/measure/exposure_histogram.h"
 #include "editor/model/measure/image_cadence.h"
 #include "editor/model/view/ab_compare.h"
+#include "editor/model/view/albedo_curves.h"
 #include "editor/model/view/automatic_choice.h"
+#include "editor/model/view/camera_controller.h"
+#include "editor/model/layout/pane_layout.h"
 #include "editor/model/view/reference_preview.h"
 #include "editor/model/view/view_settings.h"
 #include "engine/progressive_renderer.h"
@@ -34,6 +37,11 @@ struct Selection;
 struct LatencyProbe {
   double first_image_ms = 0.0;  // edit -> first frame of it on screen (any resolution)
   double full_image_ms = 0.0;   // edit -> first full-resolution frame of it on screen
+};
+
+// What the lobe view keeps between frames: its albedo curves, computed on workers.
+struct LobeViewState {
+  AlbedoCurves albedo, overlay_albedo;
 };
 
 // One pane of the viewport in screen coordinates (ImGui's, y down).
@@ -57,7 +65,7 @@ class Viewport {
   // camera or a light through commands, a click selects, with the inspector open it pins a pixel
   // (view). input: where the buttons went down; now_s: the frame clock.
   void draw(Commands& commands, ViewSettings& view, Selection& selection, const InputState& input,
-            double now_s, ImVec2 pos, ImVec2 size);
+            const Snapshot* snapshot, double now_s, ImVec2 pos, ImVec2 size);
   // Copies the viewport's image into the window's back buffer (framebuffer_height: the window's
   // in framebuffer pixels); call after clearing it and before ImGui draws on top.
   void blit(int framebuffer_height) const;
@@ -78,6 +86,18 @@ class Viewport {
     return ImVec2(m_panes[0].min.x + fx * m_panes[0].size.x,
                   m_panes[0].min.y + fy * m_panes[0].size.y);
   }
+
+  // The panes of the last draw (pane_layout.h) and A/B's legend, screen coordinates.
+  int pane_count() const { return m_pane_count; }
+  const Pane& pane(int i) const { return m_panes[i]; }
+  const Pane& legend() const { return m_legend; }
+  const Pane& frame(int i) const { return m_frames[i]; }
+  // The camera the panes show: the document's, or around it when the panes fill their cells
+  // (overscan_camera, camera_controller.h).
+  Camera pane_camera(const Scene& scene) const;
+  // Light `light`'s marker in pane: where it is drawn and where a click hits it (pixels of the
+  // pane, y down).
+  EdgeMarker light_marker(const Scene& scene, int light, const Pane& pane) const;
 
   const RenderedFrame* shown_frame() const { return m_frame_a.get(); }
   // The frame whose images the viewport's (A side's) textures hold, kept alive for a writer.
@@ -124,14 +144,14 @@ class Viewport {
   // snapshot A/B the live B side), recomputed only when that image or the display changed.
   // Large images are sampled (every step-th pixel and row, at most ~16k pixels) to stay well
   // under a millisecond; exact=true counts every pixel (the `stats` line).
-  ExposureHistogram histogram(const ViewSettings& view, bool srgb, bool exact = false);
+  ExposureHistogram histogram(const ViewSettings& view, const DisplayTransform& display,
+                              bool exact = false);
 
  private:
   // viewport_input.cpp: gestures, light markers, picking.
   void handle_input(Commands& commands, ViewSettings& view, Selection& selection,
                     const InputState& input, double now_s);
-  void draw_light_markers(const Scene& scene, const ViewSettings& view, const Selection& selection,
-                          ImDrawList* list) const;
+  void draw_light_markers(const Scene& scene, const Selection& selection, ImDrawList* list) const;
   // viewport_gizmos.cpp: directional and spot lights' arrows, cones and aim handles; the
   // environment turned by Ctrl+drag.
   void draw_light_gizmos(const Scene& scene, const ViewSettings& view, const Selection& selection,
@@ -139,15 +159,15 @@ class Viewport {
   int aim_handle_at(const Scene& scene, ImVec2 press) const;  // light index or -1
   void drag_aim_handle(Commands& commands, ImVec2 mouse) const;
   void turn_environment(Commands& commands, float dx_px) const;
-  int pane_at(ImVec2 screen) const;
+  int pane_at(ImVec2 screen) const;  // -1: over no image pane
   // The pixel of the document's render size (width x height) under screen point p in an image
   // pane (not the A/B legend); false outside them.
-  bool render_pixel_at(ImVec2 p, ViewMode mode, int width, int height, int& x, int& y) const;
+  bool render_pixel_at(ImVec2 p, int width, int height, int& x, int& y) const;
   void draw_inspected_pixel(const ViewSettings& view, const RenderSettings& render,
                             ImDrawList* list) const;
   void pin_inspected_pixel(ViewSettings& view, const RenderSettings& render, ImVec2 p) const;
 
-  void draw_panes(const ViewSettings& view, bool srgb);  // srgb: the document's encoding
+  void draw_panes(const ViewSettings& view, const DisplayTransform& display);  // the document's
   void draw_labels(const ViewSettings& view, ImDrawList* list) const;
   void draw_legend(const ViewSettings& view, ImDrawList* list, const Pane& pane) const;
   void upload(const RenderedFrame& frame, bool b_side);
@@ -176,7 +196,8 @@ class Viewport {
   RenderTarget m_target;
   DisplayShader m_shader;
 
-  // What the renderers were last given.
+  // What the renderers were last given, and the generations set_scene last returned.
+  std::uint64_t m_last_generation_a = 0, m_last_generation_b = 0;
   std::uint64_t m_pushed_revision = 0;
   bool m_pushed_any = false;
   int m_render_width = 0, m_render_height = 0;
@@ -229,7 +250,10 @@ class Viewport {
   float m_framebuffer_scale = 1.0f;
   bool m_visible = false;  // the viewport window was drawn this frame (blit() shows it)
   Pane m_panes[4];
+  Pane m_frames[4];  // the document's frame in each pane (pane_layout.h)
   int m_pane_count = 1;
+  bool m_fill = false;  // the panes fill their cells: rendered through pane_camera()
+  Pane m_legend;        // A/B's heat-map legend, beside the panes (pane_layout.h)
 
   float m_max_difference = 0.0f;  // largest |A - B| of the shown pair, linear
 
@@ -241,7 +265,8 @@ class Viewport {
     float pane_x = 0, pane_y = 0, pane_w = 0, pane_h = 0;
     ViewMode mode = ViewMode::render;
     TermView single = TermView::total;
-    float exposure = 0, heat_scale = 0;
+    float gain = 0, heat_scale = 0;
+    ToneCurve tone = ToneCurve::none;
     bool srgb = false;
     bool show_clipped = false;
     bool operator==(const TargetKey& o) const;
@@ -264,16 +289,19 @@ class Viewport {
   };
   std::deque<EditTag> m_edit_tags;
   std::uint64_t m_edit_generation = 0;  // the cadence's generation of the newest edit
+  bool m_watch_b = false;  // the newest edit changed the B side alone (A/B snapshot | live)
+  LobeViewState m_lobe;    // the lobe view's (lobe_view.cpp)
 
   // The last histogram (histogram()) and what it was computed from.
   struct HistogramKey {
     const void* frame = nullptr;
-    float exposure = 0.0f;
+    float gain = 0.0f;
+    ToneCurve tone = ToneCurve::none;
     bool srgb = false, exact = false;
     TermView term = TermView::total;
     bool operator==(const HistogramKey& o) const {
-      return frame == o.frame && exposure == o.exposure && srgb == o.srgb && exact == o.exact &&
-             term == o.term;
+      return frame == o.frame && gain == o.gain && tone == o.tone && srgb == o.srgb &&
+             exact == o.exact && term == o.term;
     }
   };
   HistogramKey m_histogram_key;
@@ -282,6 +310,7 @@ class Viewport {
   // Gesture state (viewport_input.cpp).
   int m_drag_button = -1;           // ImGuiMouseButton being dragged in the viewport, -1 none
   int m_drag_light = -1;            // light being dragged, -1 none
+  bool m_drag_off_view = false;     // ... by its off-view arrow: brought to the target's depth
   int m_drag_aim = -1;              // light whose aim handle is dragged, -1 none
   bool m_drag_environment = false;  // Ctrl+drag: turning the environment
   bool m_marker_pressed = false;    // the press hit a light marker (no orbit, no pick)
@@ -294,8 +323,9 @@ class Viewport {
 };
 
 // lobe_view.cpp: the lobe view of the selected object's material, drawn by the viewport in its
-// place when view.mode is ViewMode::lobe; dragging in the plot moves the view's light.
-void draw_lobe_view(const Scene& scene, const Selection& selection, ViewSettings& view, ImVec2 pos,
-                    ImVec2 size);
+// place when view.mode is ViewMode::lobe; dragging in the plot moves the view's light. snapshot:
+// the A/B snapshot (the second material it may draw), may be null.
+void draw_lobe_view(const Scene& scene, const Selection& selection, ViewSettings& view,
+                    const Snapshot* snapshot, LobeViewState& state, ImVec2 pos, ImVec2 size);
 
 }  // namespace gloss

@@ -21,6 +21,7 @@ namespace {
 
 constexpr float kMarkerRadius = 7.0f;  // screen pixels
 constexpr float kClickSlop = 3.0f;     // pixels a click may move and still select
+constexpr float kLabelRoom = 30.0f;    // off-view arrows at a pane's top sit below its label
 
 bool inside(const Pane& pane, ImVec2 p) {
   return p.x >= pane.min.x && p.y >= pane.min.y && p.x < pane.min.x + pane.size.x &&
@@ -29,21 +30,33 @@ bool inside(const Pane& pane, ImVec2 p) {
 
 }  // namespace
 
+Camera Viewport::pane_camera(const Scene& scene) const {
+  if (!m_fill || m_panes[0].size.y < 1.0f) return scene.camera;
+  const float document = static_cast<float>(scene.render.width) / scene.render.height;
+  return overscan_camera(scene.camera, document, m_panes[0].size.x / m_panes[0].size.y);
+}
+
+EdgeMarker Viewport::light_marker(const Scene& scene, int light, const Pane& pane) const {
+  return edge_marker(
+      pane_camera(scene), static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
+      scene.lights[static_cast<std::size_t>(light)].position, kMarkerRadius + 6.0f, kLabelRoom);
+}
+
 int Viewport::pane_at(ImVec2 screen) const {
   for (int i = 0; i < m_pane_count; ++i) {
     if (inside(m_panes[i], screen)) return i;
   }
-  return 0;
+  return -1;
 }
 
-bool Viewport::render_pixel_at(ImVec2 p, ViewMode mode, int width, int height, int& x,
-                               int& y) const {
+bool Viewport::render_pixel_at(ImVec2 p, int width, int height, int& x, int& y) const {
   for (int i = 0; i < m_pane_count; ++i) {
-    const Pane& pane = m_panes[i];
-    if (!inside(pane, p) || (mode == ViewMode::ab && i == 3)) continue;
-    // Every pane has the document's aspect, so a pane maps onto the whole render.
-    x = std::clamp(static_cast<int>((p.x - pane.min.x) / pane.size.x * width), 0, width - 1);
-    y = std::clamp(static_cast<int>((p.y - pane.min.y) / pane.size.y * height), 0, height - 1);
+    // Each pane's frame has the document's aspect and maps onto the whole render; around it
+    // (a pane that fills its cell) lies no pixel of the render.
+    const Pane& frame = m_frames[i];
+    if (!inside(frame, p)) continue;
+    x = std::clamp(static_cast<int>((p.x - frame.min.x) / frame.size.x * width), 0, width - 1);
+    y = std::clamp(static_cast<int>((p.y - frame.min.y) / frame.size.y * height), 0, height - 1);
     return true;
   }
   return false;
@@ -65,11 +78,11 @@ ImVec2 pixel_centre(const Pane& pane, int x, int y, int width, int height) {
 void Viewport::pin_inspected_pixel(ViewSettings& view, const RenderSettings& render,
                                    ImVec2 p) const {
   int x = 0, y = 0;
-  if (!view.show_inspector || !render_pixel_at(p, view.mode, render.width, render.height, x, y)) {
+  if (!view.show_inspector || !render_pixel_at(p, render.width, render.height, x, y)) {
     return;
   }
   if (view.inspect_pinned) {
-    const Pane& pane = m_panes[pane_at(p)];
+    const Pane& pane = m_frames[std::max(pane_at(p), 0)];
     const ImVec2 c =
         pixel_centre(pane, view.inspect_x, view.inspect_y, render.width, render.height);
     const float r = marker_radius(pane, render.width) + 1.0f;
@@ -88,8 +101,7 @@ void Viewport::draw_inspected_pixel(const ViewSettings& view, const RenderSettin
                                     ImDrawList* list) const {
   if (!view.show_inspector || !view.inspect_pinned) return;
   for (int i = 0; i < m_pane_count; ++i) {
-    if (view.mode == ViewMode::ab && i == 3) continue;
-    const Pane& pane = m_panes[i];
+    const Pane& pane = m_frames[i];
     const ImVec2 c =
         pixel_centre(pane, view.inspect_x, view.inspect_y, render.width, render.height);
     const float r = marker_radius(pane, render.width);
@@ -107,29 +119,27 @@ bool Viewport::moving_gesture(double now_s) const {
 }
 
 void Viewport::draw(Commands& commands, ViewSettings& view, Selection& selection,
-                    const InputState& input, double now_s, ImVec2 pos, ImVec2 size) {
+                    const InputState& input, const Snapshot* snapshot, double now_s, ImVec2 pos,
+                    ImVec2 size) {
   m_pos = pos;
   m_size = size;
   m_framebuffer_scale = ImGui::GetIO().DisplayFramebufferScale.x;
-  const bool grid = view.mode == ViewMode::terms || view.mode == ViewMode::ab;
-  m_pane_count = grid ? 4 : 1;
-  // Each cell holds one pane with the document's aspect (what the exports render), centred.
-  const ImVec2 cell = grid ? ImVec2(std::floor(size.x * 0.5f), std::floor(size.y * 0.5f)) : size;
+  // The panes in the document's aspect (what the exports render), arranged to fill the
+  // viewport (pane_layout.h); A/B's legend beside its three images.
   const RenderSettings& render = commands.scene().render;
   const float aspect = static_cast<float>(render.width) / static_cast<float>(render.height);
-  const float pane_w = std::floor(std::min(cell.x, cell.y * aspect));
-  const ImVec2 pane_size(pane_w, std::floor(pane_w / aspect));
-  // The panes touch: a 2x2 sheet is one block centred in the viewport, so the space the aspect
-  // leaves over is one band at the edges rather than gaps between the rows or columns.
-  const float columns = grid ? 2.0f : 1.0f;
-  const ImVec2 block(pane_size.x * columns, pane_size.y * columns);
-  const ImVec2 origin(std::floor(pos.x + (size.x - block.x) * 0.5f),
-                      std::floor(pos.y + (size.y - block.y) * 0.5f));
+  const PaneArrangement arrangement =
+      arrange_panes(view.mode, LayoutRect{pos.x, pos.y, size.x, size.y}, aspect);
+  m_pane_count = arrangement.count;
+  m_fill = arrangement.fill;
   for (int i = 0; i < m_pane_count; ++i) {
-    m_panes[i].min = ImVec2(origin.x + static_cast<float>(i % 2) * pane_size.x,
-                            origin.y + static_cast<float>(i / 2) * pane_size.y);
-    m_panes[i].size = pane_size;
+    const LayoutRect& r = arrangement.panes[i];
+    const LayoutRect& f = arrangement.frames[i];
+    m_panes[i] = Pane{ImVec2(r.x, r.y), ImVec2(r.w, r.h)};
+    m_frames[i] = Pane{ImVec2(f.x, f.y), ImVec2(f.w, f.h)};
   }
+  m_legend.min = ImVec2(arrangement.legend.x, arrangement.legend.y);
+  m_legend.size = ImVec2(arrangement.legend.w, arrangement.legend.h);
 
   ImGui::SetNextWindowPos(pos);
   ImGui::SetNextWindowSize(size);
@@ -148,20 +158,20 @@ void Viewport::draw(Commands& commands, ViewSettings& view, Selection& selection
     return;
   }
   if (view.mode == ViewMode::lobe) {  // the renderer keeps the render pane's size meanwhile
-    draw_lobe_view(commands.scene(), selection, view, pos, size);
+    draw_lobe_view(commands.scene(), selection, view, snapshot, m_lobe, pos, size);
     ImGui::End();
     return;
   }
-  draw_panes(view, commands.scene().render.srgb);
+  draw_panes(view, display_transform(commands.scene().render));
   // The target is copied into the back buffer under ImGui's draw lists (blit(), from
   // run_frame): the window has no background, so it shows through.
   m_visible = true;
   handle_input(commands, view, selection, input, now_s);
   ImDrawList* list = ImGui::GetWindowDrawList();
   draw_labels(view, list);
-  if (view.mode == ViewMode::ab) draw_legend(view, list, m_panes[3]);
+  if (view.mode == ViewMode::ab) draw_legend(view, list, m_legend);
   draw_light_gizmos(commands.scene(), view, selection, list);
-  draw_light_markers(commands.scene(), view, selection, list);
+  draw_light_markers(commands.scene(), selection, list);
   draw_inspected_pixel(view, commands.scene().render, list);
   if (!m_frame_a) {
     const char* text = "rendering the first frame ...";
@@ -172,10 +182,9 @@ void Viewport::draw(Commands& commands, ViewSettings& view, Selection& selection
   ImGui::End();
 }
 
-void Viewport::draw_light_markers(const Scene& scene, const ViewSettings& view,
-                                  const Selection& selection, ImDrawList* list) const {
+void Viewport::draw_light_markers(const Scene& scene, const Selection& selection,
+                                  ImDrawList* list) const {
   for (int p = 0; p < m_pane_count; ++p) {
-    if (view.mode == ViewMode::ab && p == 3) continue;  // the legend
     const Pane& pane = m_panes[p];
     const int w = static_cast<int>(pane.size.x), h = static_cast<int>(pane.size.y);
     list->PushClipRect(pane.min, ImVec2(pane.min.x + pane.size.x, pane.min.y + pane.size.y), true);
@@ -183,7 +192,7 @@ void Viewport::draw_light_markers(const Scene& scene, const ViewSettings& view,
     const int object = selection.object;
     glm::vec2 lo, hi;
     if (object >= 0 && object < static_cast<int>(scene.objects.size()) &&
-        screen_bounds(scene.camera, w, h, scene.objects[object], lo, hi)) {
+        screen_bounds(pane_camera(scene), w, h, scene.objects[object], lo, hi)) {
       const ImVec2 a(pane.min.x + lo.x - 3.0f, pane.min.y + lo.y - 3.0f);
       const ImVec2 b(pane.min.x + hi.x + 3.0f, pane.min.y + hi.y + 3.0f);
       const float arm = std::min(14.0f, 0.3f * std::min(b.x - a.x, b.y - a.y));
@@ -203,11 +212,8 @@ void Viewport::draw_light_markers(const Scene& scene, const ViewSettings& view,
     }
     for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i) {
       if (scene.lights[i].type == LightType::directional) continue;  // no position: its arrow
-      const EdgeMarker m =
-          edge_marker(scene.camera, w, h, scene.lights[i].position, kMarkerRadius + 6.0f);
-      // Off-screen arrows at the top edge sit below the pane's label.
-      const float y = m.on_screen ? m.position.y : std::max(m.position.y, 30.0f);
-      const ImVec2 centre(pane.min.x + m.position.x, pane.min.y + y);
+      const EdgeMarker m = light_marker(scene, i, pane);
+      const ImVec2 centre(pane.min.x + m.position.x, pane.min.y + m.position.y);
       const glm::vec3 c = glm::clamp(scene.lights[i].diffuse, glm::vec3(0.0f), glm::vec3(1.0f));
       const ImU32 fill = ImGui::ColorConvertFloat4ToU32(ImVec4(c.x, c.y, c.z, 1.0f));
       const bool selected = i == selection.light;
@@ -267,7 +273,8 @@ void Viewport::handle_input(Commands& commands, ViewSettings& view, Selection& s
     m_marker_pressed = false;
     m_drag_environment =
         m_drag_button == ImGuiMouseButton_Left && io.KeyCtrl && scene.environment.present();
-    if (m_drag_button == ImGuiMouseButton_Left && !io.KeyShift && !m_drag_environment) {
+    if (m_drag_button == ImGuiMouseButton_Left && !io.KeyShift && !m_drag_environment &&
+        m_drag_pane >= 0) {
       const Pane& pane = m_panes[m_drag_pane];
       m_drag_aim = aim_handle_at(scene, press);
       if (m_drag_aim >= 0) {
@@ -276,15 +283,15 @@ void Viewport::handle_input(Commands& commands, ViewSettings& view, Selection& s
       }
       for (int i = 0; i < static_cast<int>(scene.lights.size()) && m_drag_aim < 0; ++i) {
         if (scene.lights[i].type == LightType::directional) continue;
-        const EdgeMarker m =
-            edge_marker(scene.camera, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
-                        scene.lights[i].position, kMarkerRadius + 6.0f);
+        // Hit where it is drawn (light_marker, the same position as draw_light_markers).
+        const EdgeMarker m = light_marker(scene, i, pane);
         const float dx = pane.min.x + m.position.x - press.x;
         const float dy = pane.min.y + m.position.y - press.y;
         if (dx * dx + dy * dy <= (kMarkerRadius + 4.0f) * (kMarkerRadius + 4.0f)) {
-          // An off-screen light's arrow selects it; only an on-screen marker drags the light
-          // (the drag keeps the light's depth, which an off-screen light may not have).
-          m_drag_light = m.on_screen ? i : -1;
+          // A marker drags its light under the cursor at the light's depth; an off-view arrow
+          // pulls its light into view under the cursor (handled with the motion below).
+          m_drag_light = i;
+          m_drag_off_view = !m.on_screen;
           m_marker_pressed = true;
           selection.light = i;
         }
@@ -297,7 +304,7 @@ void Viewport::handle_input(Commands& commands, ViewSettings& view, Selection& s
     m_drag_last = io.MousePos;
     m_drag_distance = std::max(m_drag_distance, std::hypot(io.MousePos.x - m_drag_press.x,
                                                            io.MousePos.y - m_drag_press.y));
-    const Pane& pane = m_panes[m_drag_pane];
+    const Pane& pane = m_panes[std::max(m_drag_pane, 0)];
     const bool pan = m_drag_button != ImGuiMouseButton_Left || io.KeyShift;
     if (m_drag_environment) {
       m_marker_pressed = true;  // no pick at the release
@@ -305,17 +312,25 @@ void Viewport::handle_input(Commands& commands, ViewSettings& view, Selection& s
     } else if (m_drag_aim >= 0) {
       drag_aim_handle(commands, io.MousePos);
     } else if (m_drag_light >= 0 && m_drag_light < static_cast<int>(scene.lights.size())) {
+      const int w = static_cast<int>(pane.size.x), h = static_cast<int>(pane.size.y);
+      const Camera camera = pane_camera(scene);
+      const glm::vec3& at = scene.lights[m_drag_light].position;
       const glm::vec2 local(io.MousePos.x - pane.min.x, io.MousePos.y - pane.min.y);
+      // A marker's light follows the cursor at its own depth; an off-view light, which may sit
+      // beside or behind the eye, is brought under the cursor at the depth of the camera's
+      // target (the scene's), and follows it there from then on.
       const glm::vec3 moved =
-          point_at_depth(scene.camera, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
-                         local, scene.lights[m_drag_light].position);
+          point_at_depth(camera, w, h, local, m_drag_off_view ? camera.target : at);
       commands.execute(SetField{FieldPart::light, m_drag_light, "position", vec3_value(moved)});
     } else if (m_drag_distance > kClickSlop && !m_marker_pressed) {
       // The scene turns as if grabbed: a drag to the right carries its front to the right (the
       // eye orbits left, positive yaw in orbit_camera); a drag down shows more of its top.
-      const Camera camera = pan ? pan_camera(scene.camera, d.x, d.y, static_cast<int>(pane.size.y))
-                                : orbit_camera(scene.camera, d.x * kOrbitDegreesPerPixel,
-                                               d.y * kOrbitDegreesPerPixel);
+      // Pan at the document camera's scale: its frame's height is the document's view.
+      const Camera camera =
+          pan ? pan_camera(scene.camera, d.x, d.y,
+                           static_cast<int>(m_frames[std::max(m_drag_pane, 0)].size.y))
+              : orbit_camera(scene.camera, d.x * kOrbitDegreesPerPixel,
+                             d.y * kOrbitDegreesPerPixel);
       commands.execute(SetCamera{camera});
     }
   }
@@ -323,7 +338,7 @@ void Viewport::handle_input(Commands& commands, ViewSettings& view, Selection& s
   const RenderSettings& render = scene.render;
   if (ImGui::IsItemHovered() || ImGui::IsItemActive()) {
     int x = 0, y = 0;
-    if (render_pixel_at(io.MousePos, view.mode, render.width, render.height, x, y)) {
+    if (render_pixel_at(io.MousePos, render.width, render.height, x, y)) {
       m_hover_x = x;
       m_hover_y = y;
     }
@@ -331,11 +346,13 @@ void Viewport::handle_input(Commands& commands, ViewSettings& view, Selection& s
 
   if (ImGui::IsItemDeactivated()) {
     if (m_drag_button == ImGuiMouseButton_Left && m_drag_light < 0 && !m_marker_pressed &&
-        m_drag_distance <= kClickSlop && !(view.mode == ViewMode::ab && m_drag_pane == 3)) {
+        m_drag_distance <= kClickSlop && m_drag_pane >= 0) {
       pin_inspected_pixel(view, render, io.MousePos);
       const Pane& pane = m_panes[m_drag_pane];
+      Scene seen = scene;  // meshes are shared: a cheap copy, once per click
+      seen.camera = pane_camera(scene);
       const int hit =
-          pick_object(scene, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
+          pick_object(seen, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
                       io.MousePos.x - pane.min.x, io.MousePos.y - pane.min.y);
       if (hit >= 0) selection.object = hit;
     }

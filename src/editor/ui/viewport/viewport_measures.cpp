@@ -47,13 +47,14 @@ std::uint64_t Viewport::texture_bytes() const {
   return total + static_cast<std::uint64_t>(m_target.width()) * m_target.height() * 4;
 }
 
-ExposureHistogram Viewport::histogram(const ViewSettings& view, bool srgb, bool exact) {
+ExposureHistogram Viewport::histogram(const ViewSettings& view, const DisplayTransform& display,
+                                      bool exact) {
   const bool live_is_b = view.mode == ViewMode::ab && view.ab_source == AbSource::snapshot;
   const RenderedFrame* frame = live_is_b ? m_image_b.get() : m_image_a.get();
   if (frame == nullptr) return {};
   TermView term = view.mode == ViewMode::single ? view.single : TermView::total;
   if (frame->images.emissive.width == 0) term = TermView::total;  // terms not rendered yet
-  const HistogramKey key{frame, view.exposure, srgb, exact, term};
+  const HistogramKey key{frame, display.gain, display.tone, display.srgb, exact, term};
   if (key == m_histogram_key) return m_histogram;
   const TermImages& images = frame->images;
   const Image* image = &images.total;
@@ -79,13 +80,13 @@ ExposureHistogram Viewport::histogram(const ViewSettings& view, bool srgb, bool 
     case TermView::total:
       break;
   }
-  // At most about 16k samples (every step-th pixel of every step-th row): the panel's share
-  // then moves by well under a percent, and the histogram costs about 0.2 ms per new frame
-  // instead of 1 ms at 65k (perf during a slider drag: a quarter of the UI thread's time).
+  // At most about 16k samples in the bins (every step-th pixel of every step-th row): the
+  // histogram costs about 0.2 ms per new frame instead of 1 ms at 65k (perf during a slider
+  // drag: a quarter of the UI thread's time). The clipped pixels are counted in every pixel.
   const double pixels = static_cast<double>(image->width) * image->height;
   const int step =
       exact ? 1 : std::max(1, static_cast<int>(std::ceil(std::sqrt(pixels / 16384.0))));
-  m_histogram = exposure_histogram(*image, view.exposure, srgb, step);
+  m_histogram = exposure_histogram(*image, display, step);
   m_histogram_key = key;
   return m_histogram;
 }

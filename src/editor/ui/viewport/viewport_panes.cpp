@@ -23,16 +23,15 @@ bool Viewport::TargetKey::operator==(const TargetKey& o) const {
   return uploads == o.uploads && width == o.width && height == o.height &&
          pane_count == o.pane_count && pane_x == o.pane_x && pane_y == o.pane_y &&
          pane_w == o.pane_w && pane_h == o.pane_h && mode == o.mode && single == o.single &&
-         exposure == o.exposure && heat_scale == o.heat_scale && srgb == o.srgb &&
+         gain == o.gain && tone == o.tone && heat_scale == o.heat_scale && srgb == o.srgb &&
          show_clipped == o.show_clipped;
 }
 
-void Viewport::draw_panes(const ViewSettings& view, bool srgb) {
+void Viewport::draw_panes(const ViewSettings& view, const DisplayTransform& display) {
   const int fw = std::max(1, static_cast<int>(m_size.x * m_framebuffer_scale));
   const int fh = std::max(1, static_cast<int>(m_size.y * m_framebuffer_scale));
   DisplayParams params;
-  params.exposure = view.exposure;
-  params.srgb = srgb;
+  params.display = display;
   params.heat_scale = shown_heat_scale(view, m_max_difference);
   const TargetKey key{m_uploads,
                       fw,
@@ -44,9 +43,10 @@ void Viewport::draw_panes(const ViewSettings& view, bool srgb) {
                       m_panes[0].size.y,
                       view.mode,
                       view.single,
-                      view.exposure,
+                      display.gain,
                       params.heat_scale,
-                      srgb,
+                      display.tone,
+                      display.srgb,
                       view.show_clipped};
   if (key == m_target_key && m_target.texture() != 0) return;
   m_target_key = key;
@@ -101,7 +101,6 @@ void Viewport::draw_panes(const ViewSettings& view, bool srgb) {
         break;
     }
     if (view.mode == ViewMode::ab) {
-      if (i == 3) continue;  // the legend, drawn by ImGui
       a = i == 1 ? &m_b_total : &m_total;
       if (i == 2) {
         b = &m_b_total;
@@ -138,6 +137,12 @@ void Viewport::draw_labels(const ViewSettings& view, ImDrawList* list) const {
           ImVec2(m_panes[i].min.x + m_panes[i].size.x, m_panes[i].min.y + m_panes[i].size.y),
           IM_COL32(60, 60, 66, 255));
     }
+    if (m_fill) {
+      // The document's frame (what an export of this pane holds) in a pane that shows more.
+      const Pane& f = m_frames[i];
+      list->AddRect(f.min, ImVec2(f.min.x + f.size.x, f.min.y + f.size.y),
+                    IM_COL32(255, 255, 255, 70));
+    }
     if (labels[i] == nullptr) continue;
     const ImVec2 text = ImGui::CalcTextSize(labels[i]);
     list->AddRectFilled(ImVec2(at.x - 3, at.y - 1), ImVec2(at.x + text.x + 3, at.y + text.y + 1),
@@ -147,15 +152,20 @@ void Viewport::draw_labels(const ViewSettings& view, ImDrawList* list) const {
 }
 
 void Viewport::draw_legend(const ViewSettings& view, ImDrawList* list, const Pane& pane) const {
+  if (pane.size.x < 1.0f || pane.size.y < 1.0f) return;
+  // Laid out in the legend's own room (pane_layout.h: beside, under or after the images):
+  // title, ramp, ticks, the largest difference, the scale's kind, centred vertically.
   const float scale = shown_heat_scale(view, m_max_difference);
-  const float x0 = pane.min.x + 16.0f, x1 = pane.min.x + pane.size.x - 16.0f;
-  float y = pane.min.y + 12.0f;
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  const float bar_h = 14.0f;
+  const float content_h = line * 4.0f + bar_h + 6.0f;
+  const float x0 = pane.min.x + 12.0f;
+  const float x1 = pane.min.x + std::min(pane.size.x - 12.0f, 12.0f + 320.0f);
+  float y = pane.min.y + std::max(4.0f, (pane.size.y - content_h) * 0.5f);
   const ImU32 text = IM_COL32(225, 225, 225, 255);
-  list->AddText(ImVec2(x0, y), text, "Heat map scale");
-  y += 20.0f;
-  list->AddText(ImVec2(x0, y), text, "largest |A - B| channel, linear");
-  y += 22.0f;
-  const float bar_h = 18.0f;
+  list->PushClipRect(pane.min, ImVec2(pane.min.x + pane.size.x, pane.min.y + pane.size.y), true);
+  list->AddText(ImVec2(x0, y), text, "|A - B|, largest channel");
+  y += line;
   for (int i = 0; i + 1 < kHeatRampSize; ++i) {
     const float a = x0 + (x1 - x0) * static_cast<float>(i) / (kHeatRampSize - 1);
     const float b = x0 + (x1 - x0) * static_cast<float>(i + 1) / (kHeatRampSize - 1);
@@ -165,7 +175,7 @@ void Viewport::draw_legend(const ViewSettings& view, ImDrawList* list, const Pan
     list->AddRectFilledMultiColor(ImVec2(a, y), ImVec2(b, y + bar_h), ua, ub, ub, ua);
   }
   list->AddRect(ImVec2(x0, y), ImVec2(x1, y + bar_h), IM_COL32(120, 120, 120, 255));
-  y += bar_h + 4.0f;
+  y += bar_h + 3.0f;
   char tick[48];
   for (int i = 0; i <= 2; ++i) {
     std::snprintf(tick, sizeof tick, "%.3g", scale * 0.5f * static_cast<float>(i));
@@ -173,14 +183,14 @@ void Viewport::draw_legend(const ViewSettings& view, ImDrawList* list, const Pan
     const float w = ImGui::CalcTextSize(tick).x;
     list->AddText(ImVec2(std::clamp(x - w * 0.5f, x0, x1 - w), y), text, tick);
   }
-  y += 26.0f;
-  char line[96];
-  std::snprintf(line, sizeof line, "largest difference: %.4g", m_max_difference);
-  list->AddText(ImVec2(x0, y), text, line);
-  y += 20.0f;
-  list->AddText(ImVec2(x0, y), text,
-                view.heat_auto_scale ? "scale: automatic (the largest difference)"
-                                     : "scale: fixed (View panel)");
+  y += line + 3.0f;
+  char largest[96];
+  std::snprintf(largest, sizeof largest, "max |A - B|: %.4g", m_max_difference);
+  list->AddText(ImVec2(x0, y), text, largest);
+  y += line;
+  list->AddText(ImVec2(x0, y), IM_COL32(170, 170, 170, 255),
+                view.heat_auto_scale ? "scale: automatic (the max)" : "scale: fixed (View panel)");
+  list->PopClipRect();
 }
 
 }  // namespace gloss
