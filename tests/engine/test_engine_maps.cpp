@@ -5,7 +5,6 @@
 // swapped map or a new normal scale re-shades at the cached hits without a ray, and each
 // converged frame equals the one-shot render of its scene.
 #include <cmath>
-#include <mutex>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -13,21 +12,12 @@
 #include "engine/change_class.h"
 #include "engine/progressive_renderer.h"
 #include "engine/renderer.h"
+#include "support/progressive_frames.h"
 #include "support/scene_fixtures.h"
 #include "support/test_maps.h"
 
 namespace gloss {
 namespace {
-
-double max_abs_diff(const Image& a, const Image& b) {
-  double worst = 0;
-  for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-    for (int c = 0; c < 3; ++c) {
-      worst = std::max(worst, std::abs(double(a.pixels[i][c]) - double(b.pixels[i][c])));
-    }
-  }
-  return worst;
-}
 
 // The floor y = -1 seen straight down from (0, 4, 0), a 1 x 1 sheet at y = 0 between it and a
 // light at (1, 3, 0); the sheet's opacity map has a hole in its middle quarter. No ambient.
@@ -122,7 +112,7 @@ TEST(EngineMaps, FlatNormalMapsLeaveTheImageAsItWas) {
   // 0.5 in float is exactly flat: 2 * 0.5 - 1 = 0.
   Scene exact = plain;
   for (Material& m : exact.materials) m.map(MapSlot::normal) = constant_normal_map(0.5f, 0.5f, 1);
-  EXPECT_LE(max_abs_diff(render(exact).total, before.total), 1e-6);
+  EXPECT_LE(test::max_abs_diff(render(exact).total, before.total), 1e-6);
 
   // 8-bit (128, 128, 255) tilts n by theta = atan(sqrt(2) / 255) = 0.005546 rad (x and y of
   // n_t are 1/255 each): on a matte material the diffuse term moves by at most
@@ -136,7 +126,7 @@ TEST(EngineMaps, FlatNormalMapsLeaveTheImageAsItWas) {
   for (Material& m : matte.materials) {
     m.map(MapSlot::normal) = constant_normal_map(128 / 255.0f, 128 / 255.0f, 1);
   }
-  const double matte_moved = max_abs_diff(render(matte).total, matte_before.total);
+  const double matte_moved = test::max_abs_diff(render(matte).total, matte_before.total);
   EXPECT_LE(matte_moved, 0.6 * std::atan(std::sqrt(2.0) / 255.0) + 1e-6);
   EXPECT_LT(matte_moved, 1.0 / 255.0);
   EXPECT_GT(matte_moved, 0.0);  // the tilt is there
@@ -151,7 +141,7 @@ TEST(EngineMaps, FlatNormalMapsLeaveTheImageAsItWas) {
   for (Material& m : shiny.materials) {
     m.map(MapSlot::normal) = constant_normal_map(128 / 255.0f, 128 / 255.0f, 1);
   }
-  EXPECT_GT(max_abs_diff(render(shiny).specular, shiny_before.specular), 1.0 / 255.0);
+  EXPECT_GT(test::max_abs_diff(render(shiny).specular, shiny_before.specular), 1.0 / 255.0);
 }
 
 // A floor of 64 x 64 checks receding to the horizon, seen at a grazing angle.
@@ -201,38 +191,13 @@ TEST(EngineMaps, AFineCheckerAtADistanceConvergesToTheSupersampledImage) {
   EXPECT_LT(tri_error, 0.5 * nearest_error);
 }
 
-struct Frames {
-  std::mutex mutex;
-  std::vector<FrameInfo> seen;
-};
-
-// Converges engine on scene; the frames published on the way are kept in frames.
-std::shared_ptr<const RenderedFrame> converge(ProgressiveRenderer& engine, const Scene& scene,
-                                              Frames& frames) {
-  {
-    std::lock_guard<std::mutex> lock(frames.mutex);
-    frames.seen.clear();
-  }
-  engine.set_scene(scene);
-  EXPECT_TRUE(engine.wait_converged(60000));
-  return engine.latest();
-}
-
-// The first image after an edit: made by the edit's class from the cached hits (the passes
-// after it may refine the new image's edges, tracing those pixels' samples).
-FrameInfo first_frame(Frames& frames) {
-  std::lock_guard<std::mutex> lock(frames.mutex);
-  EXPECT_FALSE(frames.seen.empty());
-  return frames.seen.empty() ? FrameInfo{} : frames.seen.front();
-}
-
 void expect_fresh(const RenderedFrame& frame, const Scene& scene) {
   RenderOptions options;
   options.placement = &frame.refined;
   const TermImages fresh = render(scene, options);
-  EXPECT_LE(max_abs_diff(frame.images.total, fresh.total), 1e-5);
-  EXPECT_LE(max_abs_diff(frame.images.diffuse, fresh.diffuse), 1e-5);
-  EXPECT_LE(max_abs_diff(frame.images.specular, fresh.specular), 1e-5);
+  EXPECT_LE(test::max_abs_diff(frame.images.total, fresh.total), 1e-5);
+  EXPECT_LE(test::max_abs_diff(frame.images.diffuse, fresh.diffuse), 1e-5);
+  EXPECT_LE(test::max_abs_diff(frame.images.specular, fresh.specular), 1e-5);
 }
 
 Scene textured_sphere_on_floor() {
@@ -261,36 +226,36 @@ TEST(EngineMaps, EditClassesOfATexturedMaterial) {
 }
 
 TEST(EngineMaps, ConstantEditsRecombineAndMapEditsReShadeWithoutRays) {
-  Frames frames;
+  // Each edit's first image is made by its class from the cached hits; the passes after it may
+  // refine the new image's edges (tracing those pixels' samples); the last one is converged.
   ProgressiveRenderer engine;
-  engine.set_on_publish([&] {
-    std::lock_guard<std::mutex> lock(frames.mutex);
-    frames.seen.push_back(engine.latest()->info);
-  });
   Scene scene = textured_sphere_on_floor();
-  auto frame = converge(engine, scene, frames);
-  expect_fresh(*frame, scene);
+  auto frames = test::frames_of(engine, scene);
+  ASSERT_FALSE(frames.empty());
+  expect_fresh(*frames.back(), scene);
 
   scene.materials[0].diffuse = glm::vec3(0.7f, 0.2f, 0.1f);  // kd on a textured material
-  frame = converge(engine, scene, frames);
-  EXPECT_EQ(first_frame(frames).cause, ChangeClass::shade);
-  EXPECT_EQ(first_frame(frames).rays, 0);
-  expect_fresh(*frame, scene);
+  frames = test::frames_of(engine, scene);
+  ASSERT_FALSE(frames.empty());
+  EXPECT_EQ(frames.front()->info.cause, ChangeClass::shade);
+  EXPECT_EQ(frames.front()->info.rays, 0);
+  expect_fresh(*frames.back(), scene);
 
   scene.materials[0].map(MapSlot::diffuse) = test::map_of(test::uv_ramp(16), "ramp");  // a swap
-  frame = converge(engine, scene, frames);
-  EXPECT_EQ(first_frame(frames).cause, ChangeClass::texture);
-  EXPECT_EQ(first_frame(frames).rays, 0);
-  expect_fresh(*frame, scene);
+  frames = test::frames_of(engine, scene);
+  ASSERT_FALSE(frames.empty());
+  EXPECT_EQ(frames.front()->info.cause, ChangeClass::texture);
+  EXPECT_EQ(frames.front()->info.rays, 0);
+  expect_fresh(*frames.back(), scene);
 
   // The floor's normals turn: the light factors are made again from the cached hits, with their
   // shadow rays, but no primary ray (80 x 60 pixels would be 4800 at the centres alone).
   scene.materials[1].normal_scale = 0.3f;
-  frame = converge(engine, scene, frames);
-  EXPECT_EQ(first_frame(frames).cause, ChangeClass::light);
-  EXPECT_LT(first_frame(frames).rays, 80 * 60);
-  expect_fresh(*frame, scene);
-  engine.set_on_publish(nullptr);
+  frames = test::frames_of(engine, scene);
+  ASSERT_FALSE(frames.empty());
+  EXPECT_EQ(frames.front()->info.cause, ChangeClass::light);
+  EXPECT_LT(frames.front()->info.rays, 80 * 60);
+  expect_fresh(*frames.back(), scene);
 }
 
 }  // namespace

@@ -18,14 +18,8 @@ namespace gloss {
 
 namespace {
 
-// A GLSL float literal that reads back as the same float: 9 significant digits, and always a
-// '.' or an exponent (GLSL ES 3.00 has no implicit int-to-float conversion).
 std::string literal(float value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.9g", static_cast<double>(value));
-  std::string s = text;
-  if (s.find_first_of(".eE") == std::string::npos) s += ".0";
-  return s;
+  return glsl_float(value);
 }
 
 std::string vec3_literal(const glm::vec3& v) {

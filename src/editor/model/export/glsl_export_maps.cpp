@@ -13,14 +13,6 @@ namespace gloss {
 
 namespace {
 
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.9g", value);
-  std::string s = text;
-  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
-  return s;
-}
-
 // Whether the slot's map is read from the image's alpha (an opacity map of an RGBA image): its
 // level files then hold that alpha as grey.
 bool reads_alpha(MapSlot slot, const TextureMap& map) {
@@ -36,6 +28,14 @@ std::string slot_array(const char* type, const char* name, F entry) {
 }
 
 }  // namespace
+
+std::string glsl_float(float value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", static_cast<double>(value));
+  std::string s = text;
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+  return s;
+}
 
 std::string map_level_name(const std::string& shader_path, MapSlot slot, int level) {
   return std::filesystem::path(shader_path).stem().string() + "-" + map_key(slot) + "-L" +
@@ -81,12 +81,12 @@ std::string map_declarations(const Material& m, MapFilter filter, const std::str
     const double angle = static_cast<double>(map.rotation) * (3.14159265358979323846 / 180.0);
     const float c = map.rotation == 0.0f ? 1.0f : static_cast<float>(std::cos(angle));
     const float n = map.rotation == 0.0f ? 0.0f : static_cast<float>(std::sin(angle));
-    return "vec4(" + number(map.scale.x) + ", " + number(map.scale.y) + ", " + number(c) + ", " +
-           number(n) + ")";
+    return "vec4(" + glsl_float(map.scale.x) + ", " + glsl_float(map.scale.y) + ", " +
+           glsl_float(c) + ", " + glsl_float(n) + ")";
   });
   s += slot_array("vec2", "gloss_map_offset", [&](MapSlot slot) {
     const TextureMap& map = m.map(slot);
-    return "vec2(" + number(map.offset.x) + ", " + number(map.offset.y) + ")";
+    return "vec2(" + glsl_float(map.offset.x) + ", " + glsl_float(map.offset.y) + ")";
   });
   s += slot_array("ivec2", "gloss_map_info", [&](MapSlot slot) {
     const TextureMap& map = m.map(slot);
@@ -98,8 +98,8 @@ std::string map_declarations(const Material& m, MapFilter filter, const std::str
   s += "const int gloss_map_filter = " + std::to_string(static_cast<int>(filter)) +
        ";  // render.map_filter \"" + to_string(filter) +
        "\" (0 trilinear, 1 bilinear, 2 nearest)\n";
-  s += "const float gloss_normal_scale = " + number(m.normal_scale) + ";\n";
-  s += "const float gloss_bump_scale = " + number(m.bump_scale) + ";\n\n";
+  s += "const float gloss_normal_scale = " + glsl_float(m.normal_scale) + ";\n";
+  s += "const float gloss_bump_scale = " + glsl_float(m.bump_scale) + ";\n\n";
   return s;
 }
 

@@ -10,6 +10,10 @@
 
 namespace gloss {
 
+// A GLSL float literal that reads back as the same float: 9 significant digits, and always a
+// '.' or an exponent (GLSL ES 3.00 has no implicit int-to-float conversion).
+std::string glsl_float(float value);
+
 // The file of a level of a slot's map beside a shader exported to shader_path:
 // STEM-SLOT_map-LLEVEL.pfm (for example teapot-diffuse_map-L0.pfm).
 std::string map_level_name(const std::string& shader_path, MapSlot slot, int level);
