@@ -44,6 +44,8 @@ class FuzzHost : public gloss::ScriptHost {
   gloss::LineResult stats() override { return {}; }
   gloss::LineResult sleep(const gloss::SleepAction&) override { return {}; }
   gloss::LineResult quality(const gloss::QualityAction&, const std::string&) override { return {}; }
+  // `save PATH` writes no file here (any path the fuzzer makes up).
+  gloss::LineResult save(const gloss::SaveAction&, const std::string&) override { return {}; }
 
  private:
   gloss::CommandLayer m_layer;

@@ -30,11 +30,16 @@ bool eye_may_be_inside(const Object& object, const glm::vec3& eye) {
 // True when some object could block the segment from a lit surface point to a light: two or more
 // objects, or one that is not convex, or a closed convex one seen from inside (its far wall can
 // hide a light outside). Seen from outside, a convex surface never occludes itself where ndl > 0.
+// Hidden objects cast no shadow: only the visible ones count.
 bool can_cast_shadows(const Scene& scene) {
-  if (scene.objects.size() >= 2) return true;
-  if (scene.objects.size() != 1) return false;
-  const Object& only = scene.objects[0];
-  return !is_convex(only.type) || eye_may_be_inside(only, scene.camera.eye);
+  const Object* only = nullptr;
+  for (const Object& o : scene.objects) {
+    if (o.hidden) continue;
+    if (only != nullptr) return true;
+    only = &o;
+  }
+  if (only == nullptr) return false;
+  return !is_convex(only->type) || eye_may_be_inside(*only, scene.camera.eye);
 }
 }  // namespace
 

@@ -253,15 +253,24 @@ QuadratureResult EnvironmentQuadrature::diffuse(const glm::dvec3& n, double tole
   return r;
 }
 
-QuadratureResult EnvironmentQuadrature::specular(ShadingModel model, const glm::dvec3& n,
-                                                 const glm::dvec3& v, const glm::dvec3& r,
-                                                 double alpha, double tolerance) const {
+namespace {
+// The contract's specular lobe of the model at a hit (quadrature_cells.h).
+Lobe specular_lobe_at(ShadingModel model, const glm::dvec3& n, const glm::dvec3& v,
+                      const glm::dvec3& r, double alpha) {
   Lobe lobe;
   lobe.blinn = model == ShadingModel::blinn_phong;
   lobe.axis = lobe.blinn ? n : r;
   lobe.n = n;
   lobe.v = v;
   lobe.alpha = alpha;
+  return lobe;
+}
+}  // namespace
+
+QuadratureResult EnvironmentQuadrature::specular(ShadingModel model, const glm::dvec3& n,
+                                                 const glm::dvec3& v, const glm::dvec3& r,
+                                                 double alpha, double tolerance) const {
+  const Lobe lobe = specular_lobe_at(model, n, v, r, alpha);
   const QuadratureResult top = m_tree->integrate(lobe, false, tolerance);
   const QuadratureResult bottom = m_tree->integrate(lobe, true, tolerance);
   QuadratureResult out;
@@ -276,13 +285,7 @@ QuadratureResult EnvironmentQuadrature::specular(ShadingModel model, const glm::
 glm::dvec3 EnvironmentQuadrature::specular_sum(ShadingModel model, const glm::dvec3& n,
                                                const glm::dvec3& v, const glm::dvec3& r,
                                                double alpha) const {
-  Lobe lobe;
-  lobe.blinn = model == ShadingModel::blinn_phong;
-  lobe.axis = lobe.blinn ? n : r;
-  lobe.n = n;
-  lobe.v = v;
-  lobe.alpha = alpha;
-  return lobe_mean(m_tree->map->radiance, lobe, r);
+  return lobe_mean(m_tree->map->radiance, specular_lobe_at(model, n, v, r, alpha), r);
 }
 
 std::uint64_t EnvironmentQuadrature::bytes() const {

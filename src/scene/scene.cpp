@@ -20,6 +20,17 @@ const char* to_string(ObjectType type) {
   return "unknown";
 }
 
+Object sphere_object(const std::string& name, const glm::vec3& center, float radius, int material) {
+  Object o;
+  o.name = name;
+  o.type = ObjectType::sphere;
+  o.material = material;
+  o.center = o.params.center = center;
+  o.radius = o.params.radius = radius;
+  o.transform.pivot = center;
+  return o;
+}
+
 int find_material(const Scene& scene, const std::string& name) {
   for (std::size_t i = 0; i < scene.material_names.size(); ++i) {
     if (scene.material_names[i] == name) return static_cast<int>(i);

@@ -12,6 +12,7 @@
 #include "scene/geometry/mesh.h"
 #include "scene/light.h"
 #include "scene/material.h"
+#include "scene/object_transform.h"
 #include "scene/render_settings.h"
 
 namespace gloss {
@@ -25,6 +26,8 @@ inline constexpr float kDefaultCreaseAngle = 30.0f;
 
 // The parameters an object was made from, kept so a scene saves back as the user wrote it.
 struct ShapeParams {
+  glm::vec3 center{0.0f};                   // sphere: centre before the transform
+  float radius = 1.0f;                      // sphere: radius before the transform, > 0
   glm::vec3 quad[4]{};                      // quad: corners in order around the quad
   glm::vec3 box_min{-0.5f}, box_max{0.5f};  // box: axis-aligned extent before rotate_y
   std::string file;                         // mesh: model path as written in the scene
@@ -39,15 +42,25 @@ struct ShapeParams {
                                              // (io/model/model_loader.h)
 };
 
+// An object as the renderers see it (center, radius, mesh: placed, in world space) and as the
+// user wrote it (params, shape, transform, hidden). place_object (scene/geometry/placement.h)
+// makes the first from the second; whatever changes the second calls it.
 struct Object {
   std::string name;
   ObjectType type = ObjectType::sphere;
-  int material = 0;                  // index into Scene::materials
-  glm::vec3 center{0.0f};            // sphere, world units
-  float radius = 1.0f;               // sphere, > 0
-  ShapeParams params;                // what non-sphere geometry was made from
-  std::shared_ptr<const Mesh> mesh;  // world-space triangles of every non-sphere object
+  int material = 0;                   // index into Scene::materials
+  bool hidden = false;                // not rendered, casts no shadow, cannot be picked
+  glm::vec3 center{0.0f};             // sphere, placed: world units
+  float radius = 1.0f;                // sphere, placed: > 0
+  ShapeParams params;                 // what the geometry was made from (the type's own fields)
+  ObjectTransform transform;          // applied after the type's own fields
+  std::shared_ptr<const Mesh> shape;  // non-sphere: triangles of the type's own fields
+  std::shared_ptr<const Mesh> mesh;   // non-sphere, placed: world-space triangles (== shape
+                                      // while the transform is the identity)
 };
+
+// A sphere of the given centre and radius (world units), untransformed.
+Object sphere_object(const std::string& name, const glm::vec3& center, float radius, int material);
 
 struct Scene {
   Camera camera;

@@ -1,4 +1,5 @@
-// Models' maps from Debian's assimp test models (assimp-testmodels): the spider's five map_Kd
+// Maps as read: a colour map decoded from sRGB before filtering; models' maps from Debian's assimp
+// test models (assimp-testmodels): the spider's five map_Kd
 // images named with Windows paths (`.\wal67ar_small.jpg`), BoxTextured's sampler wrap modes
 // (MIRRORED_REPEAT on s, CLAMP_TO_EDGE on t), and TextureTransformTest's KHR_texture_transform
 // turned into the map's scale, rotation and offset so that the lookup lands where the
@@ -11,7 +12,10 @@
 
 #include <gtest/gtest.h>
 
+#include "io/image/image_io.h"
+#include "io/image/texture_reader.h"
 #include "io/model/model_loader.h"
+#include "texture/texture_lookup.h"
 
 namespace gloss {
 namespace {
@@ -102,6 +106,29 @@ TEST(ModelMaps, TextureTransformsLandWhereTheExtensionPutsThem) {
       EXPECT_NEAR(1.0 - got.y, want.y, 1e-5) << c.material << " at " << g.x << ", " << g.y;
     }
   }
+}
+
+// A 2 x 1 colour map of bytes 64 and 192 (written by the PNG writer as is): its midpoint, half
+// way between the two texel centres, is the mean of the sRGB-decoded values,
+// (srgb(64/255) + srgb(192/255)) / 2 = (0.051269 + 0.527115) / 2 = 0.289192, not the decoded
+// mean byte, srgb(128/255) = 0.215861; decoding twice would give 0.122027. As data (linear) the
+// midpoint is 128/255.
+TEST(ModelMaps, AColourMapsMidpointIsTheMeanOfItsDecodedTexels) {
+  const std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                     ("gloss-srgb-2x1-" + std::to_string(::getpid()) + ".png");
+  Image image(2, 1);
+  image.at(0, 0) = glm::vec3(64.0f / 255.0f);
+  image.at(1, 0) = glm::vec3(192.0f / 255.0f);
+  write_png(path.string(), image);
+  const auto colour = read_texture(path.string(), ImageData::colour);
+  const auto data = read_texture(path.string(), ImageData::linear);
+  std::filesystem::remove(path);
+  const glm::dvec4 mid = bilinear(*colour, 0, 0.5, 0.5, Wrap::clamp, Wrap::clamp);
+  EXPECT_NEAR(mid.x, 0.289192, 2e-6);
+  EXPECT_NEAR(mid.y, 0.289192, 2e-6);
+  const glm::dvec4 centre = bilinear(*colour, 0, 0.25, 0.5, Wrap::clamp, Wrap::clamp);
+  EXPECT_NEAR(centre.x, 0.051269, 2e-6);  // texel 0's centre: its own decoded value
+  EXPECT_NEAR(bilinear(*data, 0, 0.5, 0.5, Wrap::clamp, Wrap::clamp).x, 128.0 / 255.0, 2e-6);
 }
 
 TEST(ModelMaps, AMissingMapIsAWarningAndTheModelLoadsUntextured) {

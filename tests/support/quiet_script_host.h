@@ -3,6 +3,7 @@
 // the selection, and lets every host action (wait, screenshot, stats, sleep, quality) pass.
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -19,6 +20,11 @@ class QuietScriptHost : public ScriptHost {
   CommandLayer& layer() override { return m_layer; }
   ViewSettings& view() override { return m_view; }
   void select(int object) override { m_selected = object; }
+  void select_objects(const std::vector<int>& objects) override {
+    m_selected = objects.empty() ? m_selected : objects.front();
+    m_selected_all = objects;
+  }
+  const std::vector<int>& selected_all() const { return m_selected_all; }
   int selected_object() const override { return m_selected; }
   LineResult wait(const WaitAction&, const std::string&) override { return LineResult::go_on(); }
   LineResult screenshot(const ScreenshotAction&, const std::string&) override {
@@ -34,6 +40,7 @@ class QuietScriptHost : public ScriptHost {
   CommandLayer m_layer;
   ViewSettings m_view;
   int m_selected = 0;
+  std::vector<int> m_selected_all;
 };
 
 // Runs the lines of text on host until one stops, their output captured (not shown); the last

@@ -25,13 +25,8 @@ inline int add_material(Scene& scene, const std::string& name, const Material& m
 }
 
 inline void add_sphere(Scene& scene, glm::vec3 center, float radius, int material) {
-  Object o;
-  o.name = "sphere" + std::to_string(scene.objects.size());
-  o.type = ObjectType::sphere;
-  o.center = center;
-  o.radius = radius;
-  o.material = material;
-  scene.objects.push_back(o);
+  scene.objects.push_back(
+      sphere_object("sphere" + std::to_string(scene.objects.size()), center, radius, material));
 }
 
 inline void add_quad(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d,
@@ -43,7 +38,8 @@ inline void add_quad(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::v
   o.params.quad[1] = b;
   o.params.quad[2] = c;
   o.params.quad[3] = d;
-  o.mesh = std::make_shared<const Mesh>(make_quad(a, b, c, d));
+  o.shape = o.mesh = std::make_shared<const Mesh>(make_quad(a, b, c, d));
+  o.transform.pivot = 0.25f * (a + b + c + d);
   o.material = material;
   scene.objects.push_back(o);
 }
@@ -94,6 +90,32 @@ inline Scene sphere_on_floor_scene() {
   scene.render.width = 80;
   scene.render.height = 60;
   scene.render.spp = 4;
+  return scene;
+}
+
+// A floor seen straight from above with a light straight above, and a sphere between them whose
+// shadow falls on the centre of the image (33 x 33, 1 spp: the centre pixel's ray goes straight
+// down). Object 0 is the sphere, 1 the floor. With the sphere away (or hidden) the centre is
+// the lit floor: ka A + kd Ld (N.L = 1, attenuation 1, no specular) = 0.2 x 0.2 + 0.5 = 0.54.
+inline Scene shadowing_sphere_scene() {
+  Scene scene;
+  scene.camera.eye = {0, 5, 0};
+  scene.camera.target = {0, 0, 0};
+  scene.camera.up = {0, 0, -1};
+  scene.camera.fov_y = 60;
+  scene.ambient = glm::vec3(0.2f);
+  const int ball = add_material(
+      scene, "ball",
+      make_material(glm::vec3(0.1f), {0.9f, 0.1f, 0.1f}, glm::vec3(0.0f), glm::vec3(0.0f), 10.0f));
+  const int floor = add_material(
+      scene, "floor",
+      make_material(glm::vec3(0.2f), glm::vec3(0.5f), glm::vec3(0.0f), glm::vec3(0.0f), 10.0f));
+  add_sphere(scene, {0, 1, 0}, 0.5f, ball);
+  add_quad(scene, {-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, {-4, 0, -4}, floor);
+  scene.lights.push_back(make_light({0, 4, 0}));
+  scene.render.width = 33;
+  scene.render.height = 33;
+  scene.render.spp = 1;
   return scene;
 }
 

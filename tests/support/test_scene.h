@@ -28,15 +28,8 @@ inline Scene two_sphere_scene() {
   blue.shininess = 10.0f;
   scene.materials = {red, blue};
   scene.material_names = {"red", "blue"};
-  Object left;
-  left.name = "left";
-  left.center = {-1.2f, 0.0f, 0.0f};
-  left.material = 0;
-  Object right;
-  right.name = "right";
-  right.center = {1.2f, 0.0f, 0.0f};
-  right.material = 1;
-  scene.objects = {left, right};
+  scene.objects = {sphere_object("left", {-1.2f, 0.0f, 0.0f}, 1.0f, 0),
+                   sphere_object("right", {1.2f, 0.0f, 0.0f}, 1.0f, 1)};
   scene.render.width = 64;
   scene.render.height = 48;
   return scene;

@@ -44,8 +44,9 @@ float widest_cosine(const RasterView& v) {
 std::vector<DrawnBox> drawn_boxes(const Scene& scene) {
   std::vector<DrawnBox> boxes;
   for (const Object& o : scene.objects) {
-    DrawnBox b;
-    if (o.type == ObjectType::sphere) {
+    DrawnBox b;  // a hidden object's stays empty: it is not drawn, in no view, into no map
+    if (o.hidden) {
+    } else if (o.type == ObjectType::sphere) {
       b = {o.center - glm::vec3(1.01f * o.radius), o.center + glm::vec3(1.01f * o.radius), false};
     } else if (o.mesh) {
       b.empty = !mesh_bounds(*o.mesh, b.lo, b.hi);

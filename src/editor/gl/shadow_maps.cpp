@@ -54,7 +54,9 @@ bool ShadowMaps::update(const Scene& scene, const std::vector<DrawnBox>& boxes, 
     if (planned[i].kind != LightShadow::cube) add_view(planned[i].view, numbers);
   }
   for (const Object& o : scene.objects) {
-    if (o.type == ObjectType::sphere) {
+    if (o.hidden) {
+      meshes.push_back(nullptr);  // hiding or showing an object redraws the maps
+    } else if (o.type == ObjectType::sphere) {
       numbers.insert(numbers.end(), {o.center.x, o.center.y, o.center.z, o.radius});
     } else {
       meshes.push_back(o.mesh.get());

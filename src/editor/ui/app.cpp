@@ -9,6 +9,8 @@
 
 #include "base/process_memory.h"
 #include "editor/model/session/config_paths.h"
+#include "editor/model/session/file_defaults.h"
+#include "editor/model/session/material_library_folder.h"
 #include "editor/model/view/camera_controller.h"
 #include "editor/model/view/light_gizmo.h"
 #include "editor/ui/panels/quality_parts.h"
@@ -22,8 +24,12 @@ App::App(GLFWwindow* glfw_window, Scene scene) : window(glfw_window), document(s
   session.config_folder = config_dir();
   session.recent = load_recent_lists(session.config_folder);
   std::error_code ec;
-  view.screenshot_dir = std::filesystem::current_path(ec).string();
+  // Screenshots go where gloss was started, unless that is the shipped assets' folder.
+  view.screenshot_dir = save_folder(std::filesystem::current_path(ec)).string();
   library.swatches.start();
+  session.browser.last_folder = load_last_folder(session.config_folder);
+  library.folder = library_folder();
+  files.reload_library();
 }
 
 App::~App() {
@@ -97,6 +103,7 @@ void run_frame(App& app) {
   }
   app.viewport.upload_frames(frame_start);
   app.library.swatches.poll();
+  app.library.balls.poll();
   app.quality.cpu.poll();
   app.quality.raster.step(kRasterQualitySliceMs);  // GL: this thread owns the context
   if (app.exports.poll()) {                        // an export a script started failed
@@ -163,7 +170,8 @@ double idle_timeout(const App& app) {
   // what does not: the animation's next step (60 Hz), exports finishing, a script's next line.
   if (app.view.orbit_light) return 1.0 / 60.0;
   if (app.run.script || app.exports.running()) return 0.02;
-  if (app.quality.cpu.running()) return 0.1;  // rows arrive and the elapsed time counts up
+  if (app.quality.cpu.running()) return 0.1;         // rows arrive and the elapsed time counts up
+  if (app.library.balls.pending() > 0) return 0.05;  // material swatches rendering
   // Raster rows are drawn a slice per frame; while the worker renders their references, the
   // progress only needs refreshing.
   if (app.quality.raster.state() == RasterTradeoff::State::rendering) return 0.0;

@@ -73,6 +73,7 @@ struct App {
   Viewport viewport;
   MaterialPanelState material_panel;
   ReferencePanelState reference_panel;
+  OutlinerState outliner;
   InspectorState inspector;
   QualityState quality;  // the Quality window's speed/accuracy measurements
 

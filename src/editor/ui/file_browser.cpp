@@ -7,6 +7,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "editor/model/session/file_defaults.h"
 #include "io/model/model_loader.h"
 
 namespace gloss {
@@ -22,7 +23,9 @@ const char* title(BrowsePurpose purpose) {
     case BrowsePurpose::save_scene:
       return "Save scene as";
     case BrowsePurpose::save_materials:
-      return "Save materials";
+      return "Save all materials";
+    case BrowsePurpose::save_material:
+      return "Save the selected material";
     case BrowsePurpose::export_glsl:
       return "Export GLSL";
     case BrowsePurpose::export_gltf:
@@ -37,7 +40,8 @@ const char* title(BrowsePurpose purpose) {
 
 bool is_save(BrowsePurpose purpose) {
   return purpose == BrowsePurpose::save_scene || purpose == BrowsePurpose::save_materials ||
-         purpose == BrowsePurpose::export_glsl || purpose == BrowsePurpose::export_gltf;
+         purpose == BrowsePurpose::save_material || purpose == BrowsePurpose::export_glsl ||
+         purpose == BrowsePurpose::export_gltf;
 }
 
 std::vector<std::string> extensions(BrowsePurpose purpose) {
@@ -50,6 +54,7 @@ std::vector<std::string> extensions(BrowsePurpose purpose) {
       return model_extensions();
     case BrowsePurpose::load_materials:
     case BrowsePurpose::save_materials:
+    case BrowsePurpose::save_material:
       return {".json", ".mtl"};
     case BrowsePurpose::export_glsl:
       return {".frag", ".glsl"};
@@ -70,6 +75,7 @@ RecentKind recent_kind(BrowsePurpose purpose) {
       return RecentKind::model;
     case BrowsePurpose::load_materials:
     case BrowsePurpose::save_materials:
+    case BrowsePurpose::save_material:
       return RecentKind::materials;
     case BrowsePurpose::load_map:
       return RecentKind::maps;
@@ -111,6 +117,12 @@ void FileBrowser::show(BrowsePurpose what, const std::filesystem::path& start_fo
   confirm_replace.clear();
   stale = true;
   focus_name = true;
+}
+
+void FileBrowser::start(BrowsePurpose what, const std::string& scene_path,
+                        const std::string& suggested_name) {
+  show(what, is_save(what) ? save_folder(last_folder) : open_folder(last_folder, scene_path),
+       suggested_name);
 }
 
 void FileBrowser::refresh() {
@@ -155,12 +167,17 @@ bool FileBrowser::confirm(std::string& chosen) {
     stale = true;
     return false;
   }
+  if (is_save(purpose) && is_shipped_path(path)) {
+    error = path + " is a file gloss ships: save your own copy in another folder";
+    return false;
+  }
   if (is_save(purpose) && std::filesystem::exists(path, ec) && confirm_replace != path) {
     confirm_replace = path;
     error = path + " exists: press Save again to replace it";
     return false;
   }
   chosen = path;
+  last_folder = std::filesystem::path(path).parent_path();
   return true;
 }
 
@@ -181,7 +198,14 @@ bool FileBrowser::draw(const RecentFiles& recent, std::string& chosen) {
     stale = true;
   }
   ImGui::SameLine();
-  ImGui::TextUnformatted(folder.string().c_str());
+  // The folder's path, its start cut ("...") where it would run under the checkbox.
+  const float room = ImGui::GetWindowWidth() - 160.0f - ImGui::GetCursorPosX();
+  std::string shown = folder.string();
+  while (shown.size() > 4 && ImGui::CalcTextSize(shown.c_str()).x > room) {
+    shown = "..." + shown.substr(std::min<std::size_t>(shown.size(), 8));
+  }
+  ImGui::TextUnformatted(shown.c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", folder.string().c_str());
   ImGui::SameLine(ImGui::GetWindowWidth() - 150.0f);
   if (ImGui::Checkbox("all files", &show_all)) stale = true;
 

@@ -16,7 +16,8 @@ enum class BrowsePurpose {
   add_model,
   load_materials,
   save_scene,
-  save_materials,
+  save_materials,    // every material of the scene
+  save_material,     // the selected object's material alone
   export_glsl,       // issue 12: the selected object's material as a fragment shader
   open_environment,  // an environment map (HDR, EXR, PNG)
   load_map,          // an image into a map slot of a material (map_target says which)
@@ -54,8 +55,16 @@ struct FileBrowser {
     MapSlot slot = MapSlot::diffuse;
   } map_target;
 
+  // The folder of the last file the user chose here (kept between sessions by FileActions): where
+  // the next panel starts (editor/model/session/file_defaults.h).
+  std::filesystem::path last_folder;
+
   void show(BrowsePurpose what, const std::filesystem::path& start_folder,
             const std::string& suggested_name);
+  // Opens the panel where it should start for what: a save or an export in the user's last
+  // folder (never in the shipped assets) or the documents folder, an open in the last folder or
+  // the scene's; suggested_name in the path field.
+  void start(BrowsePurpose what, const std::string& scene_path, const std::string& suggested_name);
   // Draws the panel. Returns true and sets chosen when the user confirmed a path.
   bool draw(const RecentFiles& recent, std::string& chosen);
 

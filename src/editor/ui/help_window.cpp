@@ -35,6 +35,8 @@ constexpr Gesture kGestures[] = {
     {"right or middle drag, Shift + left drag", "pan"},
     {"mouse wheel", "zoom"},
     {"left click", "select the object under the cursor"},
+    {"drag a gizmo handle (Ctrl: snap)", "move, rotate or scale the selected objects"},
+    {"Ctrl+click, Shift+click an Outliner row", "add to the selection, select a range"},
     {"drag a light marker", "move the light in the plane facing you"},
     {"drag an edge arrow", "bring a light out of view under the cursor, at the target's depth"},
     {"drag a panel's inner edge", "resize the side panels (the cursor shows the arrows)"},

@@ -1,9 +1,9 @@
 // The window's layout (editor/model/layout/panel_layout.h has its rules): the menu bar on top, the
-// Material and Reference panels on the left, the Lights & Scene and View & Quality panels on the
-// right, the viewport between them, the status bar below, the floating windows and questions
-// over them. Panels collapse to strips and the viewport can take the whole width; the splitters
-// and the panels' collapse buttons are small windows kept above the panels. Each panel is handed
-// only the parts of the App it may touch (panels/panels.h).
+// Material and Reference panels on the left, the Outliner over the Lights & Scene and View &
+// Quality panels on the right, the viewport between them, the status bar below, the floating
+// windows and questions over them. Panels collapse to strips and the viewport can take the whole
+// width; the splitters and the panels' collapse buttons are small windows kept above the panels.
+// Each panel is handed only the parts of the App it may touch (panels/panels.h).
 #include <algorithm>
 #include <cmath>
 
@@ -157,8 +157,8 @@ void hide_tooltips_under_a_question() {
 
 void draw_layout(App& app) {
   keep_windows_inside();
-  draw_menu_bar(app.commands, app.view, app.snapshot, app.session, app.files, app.exports,
-                app.windows, app.layout);
+  draw_menu_bar(app.commands, app.selection, app.view, app.snapshot, app.session, app.files,
+                app.exports, app.windows, app.layout);
   LayoutState& layout = app.layout;
   const ImGuiViewport* main = ImGui::GetMainViewport();
   const ImVec2 origin = main->Pos;
@@ -167,11 +167,13 @@ void draw_layout(App& app) {
   layout.last = l;
   if (l.left.visible()) {
     draw_material_panel(app.commands, app.selection, app.view, app.material_panel, app.library,
-                        app.session.browser, at(l.left, origin), size_of(l.left));
+                        app.files, app.session.browser, at(l.left, origin), size_of(l.left));
     draw_reference_panel(app.commands, app.selection, app.view, app.reference_panel,
                          at(l.reference, origin), size_of(l.reference));
   }
   if (l.lights.visible()) {
+    draw_outliner(app.commands, app.selection, app.outliner, app.session.browser,
+                  at(l.outliner, origin), size_of(l.outliner));
     draw_lights_panel(app.commands, app.selection, app.view, app.session.browser,
                       at(l.lights, origin), size_of(l.lights));
     draw_view_panel(app.commands, app.view, app.viewport, app.snapshot, app.windows, app.exports,
@@ -185,15 +187,17 @@ void draw_layout(App& app) {
   draw_inspector(app.inspector, app.view, app.document, app.snapshot, app.viewport, viewport_pos,
                  viewport_size);
   for (const char* name :
-       {"Material", "Lights & Scene", "View & Quality", "Viewport", "##status"}) {
+       {"Material", "Outliner", "Lights & Scene", "View & Quality", "Viewport", "##status"}) {
     send_to_back(name);
   }
   // Over the panels, after them: splitters, the collapse buttons, the strips.
   PanelChoices& panels = layout.panels;
   panels.left_width = l.left_width + splitter("##split-left", l.left_split, origin, true);
   panels.right_width = l.right_width - splitter("##split-right", l.right_split, origin, true);
-  panels.lights_share +=
-      splitter("##split-lights", l.lights_split, origin, false) / std::max(l.viewport.h, 1.0f);
+  panels.outliner_share +=
+      splitter("##split-outliner", l.outliner_split, origin, false) / std::max(l.viewport.h, 1.0f);
+  panels.lights_share += splitter("##split-lights", l.lights_split, origin, false) /
+                         std::max(l.lights.h + l.view.h, 1.0f);
   panels.material_share +=
       splitter("##split-material", l.material_split, origin, false) / std::max(l.viewport.h, 1.0f);
   clamp_panel_widths(panels, main->Size.x);
@@ -204,15 +208,15 @@ void draw_layout(App& app) {
   }
   if (l.lights.visible() &&
       corner_button("##collapse-right", ">",
-                    "collapse Lights & Scene and View & Quality to a strip (])",
-                    origin.x + l.lights.right(), origin.y + l.lights.y)) {
+                    "collapse the Outliner, Lights & Scene and View & Quality to a strip (])",
+                    origin.x + l.outliner.right(), origin.y + l.outliner.y)) {
     panels.right_collapsed = true;
   }
   if (strip("##strip-left", l.left_strip, origin, "Material", "Material: click to expand ([)")) {
     panels.left_collapsed = false;
   }
-  if (strip("##strip-right", l.right_strip, origin, "Lights|View",
-            "Lights & Scene, View & Quality: click to expand (])")) {
+  if (strip("##strip-right", l.right_strip, origin, "Outliner|Lights|View",
+            "Outliner, Lights & Scene, View & Quality: click to expand (])")) {
     panels.right_collapsed = false;
   }
   if (corner_button("##maximise", panels.viewport_maximised ? "restore panels" : "maximise",

@@ -1,27 +1,32 @@
-// The main menu bar: File, Edit, View, Help. Items call the same actions as the shortcuts.
+// The main menu bar: File, Edit, Object, View, Help. Items call the same actions as the shortcuts.
+#include <algorithm>
+#include <filesystem>
+
 #include <imgui.h>
 
+#include "editor/model/document/new_objects.h"
+#include "editor/model/session/file_defaults.h"
 #include "editor/ui/panels/panels.h"
 #include "editor/ui/parts/commands.h"
 #include "editor/ui/parts/exports.h"
 #include "editor/ui/parts/file_actions.h"
 #include "editor/ui/parts/layout_state.h"
 #include "editor/ui/parts/open_windows.h"
+#include "editor/ui/parts/selection.h"
 #include "editor/ui/parts/session.h"
 
 namespace gloss {
 
 namespace {
 
-void file_menu(Commands& commands, const ViewSettings& view, Session& session, FileActions& files,
-               Exports& exports) {
+void file_menu(Commands& commands, const Selection& selection, Session& session, FileActions& files,
+               Exports& exports, const ViewSettings& view) {
   if (!ImGui::BeginMenu("File")) return;
   // A reference: it follows the document when Open recent replaces it.
   const std::string& path = commands.scene().path;
   FileBrowser& browser = session.browser;
-  if (ImGui::MenuItem("Open scene...", "Ctrl+O")) {
-    browser.show(BrowsePurpose::open_scene, scene_folder(path, view.screenshot_dir), "");
-  }
+  if (ImGui::MenuItem("Open scene...", "Ctrl+O"))
+    browser.start(BrowsePurpose::open_scene, path, "");
   if (ImGui::BeginMenu("Open recent", !session.recent.scenes.paths.empty())) {
     std::string chosen;  // opening reorders the list: act after the loop
     for (const std::string& recent : session.recent.scenes.paths) {
@@ -36,31 +41,39 @@ void file_menu(Commands& commands, const ViewSettings& view, Session& session, F
     }
     ImGui::EndMenu();
   }
-  if (ImGui::MenuItem("Add model...")) {
-    browser.show(BrowsePurpose::add_model, scene_folder(path, view.screenshot_dir), "");
-  }
+  if (ImGui::MenuItem("Add model...")) browser.start(BrowsePurpose::add_model, path, "");
   ImGui::Separator();
-  if (ImGui::MenuItem("Save scene", "Ctrl+Shift+S", false, !path.empty())) {
+  // A shipped scene is never saved over: Save asks for a name in the user's folder (Save as).
+  const bool own_file = !path.empty() && !is_shipped_path(path);
+  if (ImGui::MenuItem("Save scene", "Ctrl+Shift+S", false, own_file)) {
     try {
       files.save_scene_as(path);
     } catch (const std::exception& e) {
       commands.error(e.what());
     }
   }
+  if (!own_file && !path.empty() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+    ImGui::SetTooltip("%s is a scene gloss ships: use Save scene as", path.c_str());
+  }
   if (ImGui::MenuItem("Save scene as...")) {
-    browser.show(BrowsePurpose::save_scene, scene_folder(path, view.screenshot_dir),
-                 path.empty() ? "scene.json" : std::filesystem::path(path).filename().string());
+    browser.start(BrowsePurpose::save_scene, path, scene_file_name(path));
   }
   ImGui::Separator();
   if (ImGui::MenuItem("Load materials (JSON, MTL)...")) {
-    browser.show(BrowsePurpose::load_materials, scene_folder(path, view.screenshot_dir), "");
+    browser.start(BrowsePurpose::load_materials, path, "");
   }
-  if (ImGui::MenuItem("Save materials (JSON, MTL)...")) {
-    browser.show(BrowsePurpose::save_materials, scene_folder(path, view.screenshot_dir),
-                 "materials.mtl");
+  const Scene& scene = commands.scene();
+  if (ImGui::MenuItem("Save the selected material...")) {
+    browser.start(BrowsePurpose::save_material, path,
+                  suggested_file_name(scene, selection.object, "save-material"));
+  }
+  if (ImGui::MenuItem("Save all materials (JSON, MTL)...")) {
+    browser.start(BrowsePurpose::save_materials, path,
+                  suggested_file_name(scene, selection.object, "save-materials"));
   }
   if (ImGui::MenuItem("Export GLSL...")) {
-    browser.show(BrowsePurpose::export_glsl, scene_folder(path, view.screenshot_dir), "gloss.frag");
+    browser.start(BrowsePurpose::export_glsl, path,
+                  suggested_file_name(scene, selection.object, "export-glsl"));
   }
   if (ImGui::MenuItem("Export glTF...")) {
     browser.show(BrowsePurpose::export_gltf, scene_folder(path, view.screenshot_dir), "scene.glb");
@@ -74,6 +87,56 @@ void file_menu(Commands& commands, const ViewSettings& view, Session& session, F
   if (ImGui::MenuItem("Screenshot: linear EXR")) exports.start(ScreenshotKind::exr);
   ImGui::Separator();
   if (ImGui::MenuItem("Quit", "Ctrl+Q")) files.request_quit();
+  ImGui::EndMenu();
+}
+
+// The Object menu: add a primitive or a model, and what the Outliner's buttons and keys do to
+// the selection; the gizmo's mode.
+void object_menu(Commands& commands, Selection& selection, ViewSettings& view,
+                 FileBrowser& browser) {
+  if (!ImGui::BeginMenu("Object")) return;
+  const Scene& scene = commands.scene();
+  const int count = static_cast<int>(scene.objects.size());
+  if (ImGui::BeginMenu("Add")) {
+    const ObjectType types[4] = {ObjectType::sphere, ObjectType::quad, ObjectType::box,
+                                 ObjectType::teapot};
+    const char* labels[4] = {"Sphere", "Quad", "Box", "Teapot"};
+    for (int t = 0; t < 4; ++t) {
+      if (ImGui::MenuItem(labels[t]) && commands.execute(primitive_objects(scene, types[t]))) {
+        select_only(selection, count);
+      }
+    }
+    if (ImGui::MenuItem("Model from a file..."))
+      browser.start(BrowsePurpose::add_model, scene.path, "");
+    ImGui::EndMenu();
+  }
+  const std::vector<int> objects = selected_objects(selection, count);
+  const bool any = !objects.empty();
+  ImGui::Separator();
+  if (ImGui::MenuItem("Frame selection", "F", false, any)) frame_selection(commands, selection);
+  if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, any) &&
+      commands.execute(DuplicateObjects{objects})) {
+    std::vector<int> copies;
+    for (std::size_t k = 0; k < objects.size(); ++k) copies.push_back(count + int(k));
+    select_all_of(selection, copies);
+  }
+  if (ImGui::MenuItem("Delete", "Del", false, any) && commands.execute(DeleteObjects{objects})) {
+    select_only(selection, std::max(objects.front() - 1, 0));
+  }
+  if (ImGui::MenuItem("Hide", "H", false, any)) commands.execute(SetHidden{objects, true});
+  if (ImGui::MenuItem("Solo", "Shift+H", false, any)) commands.execute(SoloObjects{objects});
+  if (ImGui::MenuItem("Show all", "Alt+H", false, count > 0)) {
+    std::vector<int> all;
+    for (int i = 0; i < count; ++i) all.push_back(i);
+    commands.execute(SetHidden{all, false});
+  }
+  ImGui::Separator();
+  if (ImGui::MenuItem("Move", "W", view.gizmo == GizmoMode::move)) view.gizmo = GizmoMode::move;
+  if (ImGui::MenuItem("Rotate", "E", view.gizmo == GizmoMode::rotate))
+    view.gizmo = GizmoMode::rotate;
+  if (ImGui::MenuItem("Scale", "R", view.gizmo == GizmoMode::scale)) view.gizmo = GizmoMode::scale;
+  ImGui::MenuItem("Show the gizmo", nullptr, &view.show_gizmo);
+  ImGui::TextDisabled("drag a handle; Ctrl snaps");
   ImGui::EndMenu();
 }
 
@@ -174,7 +237,7 @@ void panels_menu(LayoutState& layout) {
     p.left_collapsed = !left;
     p.viewport_maximised = false;
   }
-  if (ImGui::MenuItem("Lights & Scene, View & Quality", "]", &right)) {
+  if (ImGui::MenuItem("Outliner, Lights & Scene, View & Quality", "]", &right)) {
     p.right_collapsed = !right;
     p.viewport_maximised = false;
   }
@@ -184,12 +247,13 @@ void panels_menu(LayoutState& layout) {
 
 }  // namespace
 
-void draw_menu_bar(Commands& commands, ViewSettings& view, std::optional<Snapshot>& snapshot,
-                   Session& session, FileActions& files, Exports& exports, OpenWindows& windows,
-                   LayoutState& layout) {
+void draw_menu_bar(Commands& commands, Selection& selection, ViewSettings& view,
+                   std::optional<Snapshot>& snapshot, Session& session, FileActions& files,
+                   Exports& exports, OpenWindows& windows, LayoutState& layout) {
   if (!ImGui::BeginMainMenuBar()) return;
-  file_menu(commands, view, session, files, exports);
+  file_menu(commands, selection, session, files, exports, view);
   edit_menu(commands);
+  object_menu(commands, selection, view, session.browser);
   view_menu(commands, view, snapshot, windows);
   panels_menu(layout);
   if (ImGui::BeginMenu("Help")) {

@@ -10,6 +10,7 @@
 #include "editor/model/measure/memory_report.h"
 #include "editor/model/measure/quality_measurement.h"
 #include "editor/model/script/script_runner.h"
+#include "editor/model/session/file_defaults.h"
 #include "editor/ui/app.h"
 #include "editor/ui/panels/quality_parts.h"
 #include "editor/ui/shortcuts.h"
@@ -29,6 +30,7 @@ std::string layout_text(const App& app) {
   out += line;
   rect("viewport", l.viewport);
   rect("left", l.left);
+  rect("outliner", l.outliner);
   rect("lights", l.lights);
   rect("view", l.view);
   rect("left_strip", l.left_strip);
@@ -176,7 +178,10 @@ class ScriptPlayer::Host : public ScriptHost {
 
   CommandLayer& layer() override { return m_app.document; }
   ViewSettings& view() override { return m_app.view; }
-  void select(int object) override { m_app.selection.object = object; }
+  void select(int object) override { select_only(m_app.selection, object); }
+  void select_objects(const std::vector<int>& objects) override {
+    select_all_of(m_app.selection, objects);
+  }
   int selected_object() const override { return m_app.selection.object; }
   std::optional<Snapshot>& snapshot() override { return m_app.snapshot; }
   void notify(const std::string& text) override { m_app.commands.info(text); }
@@ -196,9 +201,42 @@ class ScriptPlayer::Host : public ScriptHost {
     return LineResult::go_on();
   }
   LineResult memory() override {
-    const ViewMemory view{m_app.viewport.frame_bytes(), m_app.viewport.texture_bytes(),
-                          m_app.library.swatches.texture_bytes()};
+    const ViewMemory view{
+        m_app.viewport.frame_bytes(), m_app.viewport.texture_bytes(),
+        m_app.library.swatches.texture_bytes() + m_app.library.balls.texture_bytes()};
     std::printf("memory: %s\n", memory_text(m_app.document, view).c_str());
+    std::fflush(stdout);
+    return LineResult::go_on();
+  }
+  LineResult save(const SaveAction& a, const std::string& where) override {
+    try {
+      m_app.files.save_scene_as(a.path);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "error: %s%s\n", where.c_str(), e.what());
+      return LineResult::stop(1);
+    }
+    std::printf("saved scene %s\n", a.path.c_str());
+    std::fflush(stdout);
+    return LineResult::go_on();
+  }
+  // Opens the file panel as the File menu does, so a window screenshot shows it.
+  LineResult browse(const BrowseAction& a) override {
+    const std::pair<const char*, BrowsePurpose> kinds[] = {
+        {"save-scene", BrowsePurpose::save_scene},
+        {"save-material", BrowsePurpose::save_material},
+        {"save-materials", BrowsePurpose::save_materials},
+        {"export-glsl", BrowsePurpose::export_glsl},
+        {"open-scene", BrowsePurpose::open_scene},
+        {"add-model", BrowsePurpose::add_model}};
+    FileBrowser& browser = m_app.session.browser;
+    const Scene& scene = m_app.document.scene();
+    for (const auto& [word, purpose] : kinds) {
+      if (a.what == word) {
+        browser.start(purpose, scene.path,
+                      suggested_file_name(scene, m_app.selection.object, word));
+      }
+    }
+    std::printf("browse: %s | %s\n", browser.folder.string().c_str(), browser.name.c_str());
     std::fflush(stdout);
     return LineResult::go_on();
   }

@@ -93,10 +93,15 @@ void draw_open_modal(Session& session, Commands& commands, FileActions& files) {
     const UnsavedGuard::Outcome outcome = session.unsaved.answer(*answer);
     try {
       if (outcome.save_first) files.save_scene_as(path);
-      if (outcome.open) files.open_scene(outcome.path);
+      // The scene read before the question (FileActions::request_open_scene).
+      if (outcome.open && session.pending_open) {
+        files.open_loaded(session.pending_open, outcome.path, session.pending_warnings);
+      }
     } catch (const std::exception& e) {
       commands.error(e.what());
     }
+    session.pending_open.reset();
+    session.pending_warnings.clear();
   }
   ImGui::EndPopup();
 }

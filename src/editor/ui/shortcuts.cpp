@@ -10,6 +10,9 @@
 
 #include "editor/ui/shortcuts.h"
 
+#include <algorithm>
+
+#include "editor/model/session/file_defaults.h"
 #include "editor/ui/app.h"
 #include "editor/ui/panels/panels.h"
 
@@ -49,10 +52,47 @@ void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods)
   }
 }
 
+// The keys on objects (issue 24): those on the selection do nothing without one.
+void object_action(App& app, ShortcutAction action) {
+  using A = ShortcutAction;
+  const Scene& scene = app.document.scene();
+  const int count = static_cast<int>(scene.objects.size());
+  if (action == A::show_all_objects) {
+    std::vector<int> all(static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i) all[static_cast<std::size_t>(i)] = i;
+    if (count > 0) app.commands.execute(SetHidden{all, false});
+    return;
+  }
+  const std::vector<int> objects = selected_objects(app.selection, count);
+  if (objects.empty()) return;
+  if (action == A::frame_selection) frame_selection(app.commands, app.selection);
+  if (action == A::delete_objects && app.commands.execute(DeleteObjects{objects})) {
+    select_only(app.selection, std::max(objects.front() - 1, 0));
+  }
+  if (action == A::duplicate_objects && app.commands.execute(DuplicateObjects{objects})) {
+    std::vector<int> copies;
+    for (std::size_t k = 0; k < objects.size(); ++k) copies.push_back(count + int(k));
+    select_all_of(app.selection, copies);
+  }
+  if (action == A::hide_objects) {
+    const bool any_hidden =
+        std::any_of(objects.begin(), objects.end(), [&](int i) { return scene.objects[i].hidden; });
+    app.commands.execute(SetHidden{objects, !any_hidden});
+  }
+  if (action == A::solo_objects) app.commands.execute(SoloObjects{objects});
+  if (action == A::rename_object) {
+    app.outliner.renaming = app.selection.object;
+    app.outliner.rename_text = scene.objects[static_cast<std::size_t>(objects.front())].name;
+    app.outliner.focus_rename = true;
+  }
+}
+
+// Ctrl+Shift+S: saves over the scene's own file; a scene without one, or a file gloss ships,
+// asks for a name in the user's folder instead.
 void save_scene_shortcut(App& app) {
   const std::string& path = app.document.scene().path;
-  if (path.empty()) {
-    app.session.browser.show(BrowsePurpose::save_scene, app.view.screenshot_dir, "scene.json");
+  if (path.empty() || is_shipped_path(path)) {
+    app.session.browser.start(BrowsePurpose::save_scene, path, scene_file_name(path));
     return;
   }
   try {
@@ -115,7 +155,7 @@ void replay_key_taps(InputState& input, GLFWwindow* window) {
 }
 
 const std::vector<Shortcut>& shortcuts() {
-  constexpr int ctrl = GLFW_MOD_CONTROL, shift = GLFW_MOD_SHIFT;
+  constexpr int ctrl = GLFW_MOD_CONTROL, shift = GLFW_MOD_SHIFT, alt = GLFW_MOD_ALT;
   using A = ShortcutAction;
   static const std::vector<Shortcut> table = {
       {GLFW_KEY_F1, 0, A::help, "F1", "show or hide this help"},
@@ -141,9 +181,25 @@ const std::vector<Shortcut>& shortcuts() {
       {GLFW_KEY_LEFT_BRACKET, 0, A::toggle_left_panel, "[",
        "collapse the Material panel to a strip, or expand it", false, true},
       {GLFW_KEY_RIGHT_BRACKET, 0, A::toggle_right_panels, "]",
-       "collapse the Lights & Scene and View & Quality panels, or expand them", false, true},
+       "collapse the Outliner, Lights & Scene and View & Quality panels, or expand them", false,
+       true},
       {GLFW_KEY_ESCAPE, 0, A::close, "Esc",
        "close an open menu or list, this help, the file panel"},
+      // Objects (issue 24; docs/editor.md, "Objects").
+      {GLFW_KEY_W, 0, A::gizmo_move, "W / E / R", "the gizmo moves / rotates / scales", false,
+       true},
+      {GLFW_KEY_E, 0, A::gizmo_rotate, "", "", false, true},
+      {GLFW_KEY_R, 0, A::gizmo_scale, "", "", false, true},
+      {GLFW_KEY_F, 0, A::frame_selection, "F", "frame the selected objects", false, true},
+      {GLFW_KEY_DELETE, 0, A::delete_objects, "Delete", "delete the selected objects", false, true},
+      {GLFW_KEY_D, ctrl, A::duplicate_objects, "Ctrl+D", "duplicate the selected objects", false,
+       true},
+      {GLFW_KEY_H, 0, A::hide_objects, "H", "hide the selected objects, or show them", false, true},
+      {GLFW_KEY_H, shift, A::solo_objects, "Shift+H", "solo: show the selected objects alone",
+       false, true},
+      {GLFW_KEY_H, alt, A::show_all_objects, "Alt+H", "show every object", false, true},
+      {GLFW_KEY_F2, 0, A::rename_object, "F2", "rename the selected object (in the Outliner)",
+       false, true},
   };
   return table;
 }
@@ -168,6 +224,8 @@ std::string shortcut_name(const Shortcut& s) {
       return name + "[";
     case GLFW_KEY_RIGHT_BRACKET:
       return name + "]";
+    case GLFW_KEY_DELETE:
+      return name + "Delete";
     default:
       return name + "key " + std::to_string(s.key);
   }
@@ -205,9 +263,7 @@ void act(App& app, ShortcutAction action) {
       save_scene_shortcut(app);
       break;
     case ShortcutAction::open_scene:
-      app.session.browser.show(BrowsePurpose::open_scene,
-                               scene_folder(app.document.scene().path, app.view.screenshot_dir),
-                               "");
+      app.session.browser.start(BrowsePurpose::open_scene, app.document.scene().path, "");
       break;
     case ShortcutAction::quit:
       app.files.request_quit();
@@ -248,6 +304,24 @@ void act(App& app, ShortcutAction action) {
       app.windows.help = false;
       app.session.browser.open = false;
       close_menus();
+      break;
+    case ShortcutAction::gizmo_move:
+      app.view.gizmo = GizmoMode::move;
+      break;
+    case ShortcutAction::gizmo_rotate:
+      app.view.gizmo = GizmoMode::rotate;
+      break;
+    case ShortcutAction::gizmo_scale:
+      app.view.gizmo = GizmoMode::scale;
+      break;
+    case ShortcutAction::frame_selection:
+    case ShortcutAction::delete_objects:
+    case ShortcutAction::duplicate_objects:
+    case ShortcutAction::hide_objects:
+    case ShortcutAction::solo_objects:
+    case ShortcutAction::show_all_objects:
+    case ShortcutAction::rename_object:
+      object_action(app, action);
       break;
   }
 }

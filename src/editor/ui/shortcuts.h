@@ -40,6 +40,16 @@ enum class ShortcutAction {
   toggle_left_panel,
   toggle_right_panels,
   close,
+  gizmo_move,  // the objects' keys (issue 24)
+  gizmo_rotate,
+  gizmo_scale,
+  frame_selection,
+  delete_objects,
+  duplicate_objects,
+  hide_objects,
+  solo_objects,
+  show_all_objects,
+  rename_object,
 };
 
 struct Shortcut {

@@ -88,6 +88,7 @@ EmbreeScene::EmbreeScene(const Scene& scene)
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const Object& object = scene.objects[i];
     const auto id = static_cast<unsigned>(i);
+    if (object.hidden) continue;  // no ray meets it: not seen, no shadow, not picked
     std::unique_ptr<CutOut> cut = make_cut_out(scene, object);
     // A mesh without (u, v) reads the map's texel at (0, 0): cut out whole, or not at all.
     if (cut != nullptr && object.type != ObjectType::sphere && object.mesh &&

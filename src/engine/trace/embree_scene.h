@@ -1,6 +1,7 @@
 #pragma once
 // The Embree 3 scene built from a Scene: every ray-scene query of gloss goes through it.
 // Spheres are Embree sphere points; everything else is triangles. geomID == object index.
+// Hidden objects are left out (geometry IDs keep the object indices).
 // Built with it: the per-primitive table its hits are shaded from (surface_table.h). Objects
 // whose material has an opacity map are cut out by filter functions (cut_outs.h).
 #include <embree3/rtcore.h>

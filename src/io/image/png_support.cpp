@@ -100,20 +100,31 @@ PngFile::PngFile(const std::string& path, int max_side, PngTransforms transforms
     m_job.file_bytes = file_bytes;
     m_job.inflated_limit = 1032 * file_bytes;
   }
+  // A constructor that throws runs no destructor: the libpng state made so far is freed here.
+  const auto refuse = [&](const std::string& why) {
+    release();
+    throw InputError(path, why);
+  };
   if (!run_png_read_header(m_job, max_side, transforms)) {
-    throw InputError(path, std::string("invalid PNG: ") + m_job.error.message);
+    refuse(std::string("invalid PNG: ") + m_job.error.message);
   }
   // A header claiming more pixels than the file can inflate to is refused before the pixel
   // buffer is allocated: 57 bytes cannot hold a 16384 x 16384 image.
   if (m_job.inflated_limit > 0 && m_job.stored_bytes > m_job.inflated_limit) {
-    throw InputError(path, "invalid PNG: its header claims " + std::to_string(m_job.width) + "x" +
-                               std::to_string(m_job.height) + " pixels, more than its " +
-                               std::to_string(file_bytes) + " bytes can hold");
+    refuse("invalid PNG: its header claims " + std::to_string(m_job.width) + "x" +
+           std::to_string(m_job.height) + " pixels, more than its " + std::to_string(file_bytes) +
+           " bytes can hold");
   }
 }
 
 PngFile::~PngFile() {
+  release();
+}
+
+void PngFile::release() {
   if (m_job.png != nullptr) png_destroy_read_struct(&m_job.png, &m_job.info, nullptr);
+  m_job.png = nullptr;
+  m_job.info = nullptr;
 }
 
 void PngFile::read_rows(png_bytep* rows) {

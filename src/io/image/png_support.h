@@ -59,6 +59,8 @@ class PngFile {
   void read_rows(png_bytep* rows);
 
  private:
+  void release();  // frees the libpng state (also when the constructor refuses the file)
+
   std::string m_path;
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> m_file;
   PngReadJob m_job;

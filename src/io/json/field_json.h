@@ -38,7 +38,28 @@ void read_fields(const JsonObjectReader& reader, const FieldTable<S>& table, S& 
       if (f.required && f.applies_to(out)) reader.required(f.key);  // "missing required field"
       continue;
     }
+    if (f.one_number && reader.required(f.key).is_number()) {  // "scale": 2 for [2, 2, 2]
+      f.set(out, vec3_value(glm::vec3(reader.number(f.key))));
+      continue;
+    }
     f.set(out, read_field_value(reader, f.key, f.label, f.kind, f.min, f.max, f.choices));
+  }
+}
+
+// The fields of table whose values differ from those of defaults, in table order (optional
+// blocks such as an object's transform, written only where they say something); a one_number
+// vector with equal components as that number.
+template <class S>
+void write_changed_fields(const FieldTable<S>& table, const S& value, const S& defaults,
+                          nlohmann::ordered_json& out) {
+  for (const Field<S>& f : table) {
+    const FieldValue v = f.get(value);
+    if (v == f.get(defaults)) continue;
+    if (f.one_number && v.v.x == v.v.y && v.v.y == v.v.z) {
+      out[f.key] = float_json(v.v.x);
+    } else {
+      out[f.key] = field_value_json(f.kind, f.choices, v);
+    }
   }
 }
 

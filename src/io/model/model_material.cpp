@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iterator>
+#include <string>
 #include <utility>
 
 #include <tbb/parallel_for.h>
@@ -89,6 +90,29 @@ ModelFileMaterial file_material(const aiMaterial& in, bool pbr, const glm::vec3&
   return out;
 }
 
+// assimp's stand-in for a part without a material of its own, where it is not named
+// AI_DEFAULT_MATERIAL_NAME: an unnamed white material with no texture (the PLY reader's ka = kd =
+// ks = 1; the glTF 2.0 reader's default material, base colour 1, metallic 1, roughness 1, the
+// glTF defaults, which the glTF specification says a primitive without a material uses).
+bool is_stand_in_white(const aiMaterial& m) {
+  aiString name;
+  if (m.Get(AI_MATKEY_NAME, name) == AI_SUCCESS && name.length > 0) return false;
+  for (unsigned p = 0; p < m.mNumProperties; ++p) {
+    if (std::string(m.mProperties[p]->mKey.C_Str()).rfind("$tex.", 0) == 0) return false;
+  }
+  const glm::vec3 white(1.0f);
+  glm::vec3 c;
+  if (!get_colour(m, AI_MATKEY_COLOR_DIFFUSE, c) || c != white) return false;
+  for (const char* key : {"$clr.ambient", "$clr.specular", "$clr.base"}) {
+    if (get_colour(m, key, 0, 0, c) && c != white) return false;
+  }
+  if (get_colour(m, AI_MATKEY_COLOR_EMISSIVE, c) && c != glm::vec3(0.0f)) return false;
+  float f = 1.0f;
+  if (get_float(m, AI_MATKEY_METALLIC_FACTOR, f) && f != 1.0f) return false;
+  if (get_float(m, AI_MATKEY_ROUGHNESS_FACTOR, f) && f != 1.0f) return false;
+  return true;
+}
+
 }  // namespace
 
 NamedMaterial convert_material(const aiMaterial& in, unsigned index,
@@ -96,7 +120,7 @@ NamedMaterial convert_material(const aiMaterial& in, unsigned index,
   NamedMaterial out;
   aiString name;
   if (in.Get(AI_MATKEY_NAME, name) == AI_SUCCESS) out.name = name.C_Str();
-  out.is_default = out.name == AI_DEFAULT_MATERIAL_NAME;
+  out.is_default = out.name == AI_DEFAULT_MATERIAL_NAME || is_stand_in_white(in);
   if (out.name.empty()) out.name = "material" + std::to_string(index);
 
   Material& m = out.material;

@@ -13,7 +13,9 @@ namespace gloss {
 struct NamedMaterial {
   std::string name;  // the file's name; "material<N>" when the file gives none
   Material material;
-  bool is_default = false;     // assimp's stand-in for "no material" (AI_DEFAULT_MATERIAL_NAME)
+  // assimp's stand-in for "no material": AI_DEFAULT_MATERIAL_NAME, or the unnamed white one the
+  // PLY and glTF 2.0 readers give parts without a material; such parts get gloss's grey default.
+  bool is_default = false;
   ModelFileMaterial textures;  // the textures it names (read into maps by model_maps.h)
 };
 

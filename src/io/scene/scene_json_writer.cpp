@@ -4,6 +4,7 @@
 #include "io/scene/scene_loader.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -93,8 +94,8 @@ Json object_json(const Object& object, const std::string& material_name) {
   // Optional placement fields are written only when they differ from their defaults.
   if (placed && p.position != defaults.position) j["position"] = vec3_json(p.position);
   if (object.type == ObjectType::sphere) {
-    j["center"] = vec3_json(object.center);
-    j["radius"] = float_json(object.radius);
+    j["center"] = vec3_json(p.center);
+    j["radius"] = float_json(p.radius);
   }
   if (object.type == ObjectType::quad) {
     j["vertices"] = Json::array();
@@ -116,6 +117,13 @@ Json object_json(const Object& object, const std::string& material_name) {
   if (object.type == ObjectType::mesh && p.crease_angle != defaults.crease_angle) {
     j["crease_angle"] = float_json(p.crease_angle);
   }
+  // The transform's fields that are not the identity's; the pivot only when it was given.
+  Json transform = Json::object();
+  ObjectTransform identity;
+  identity.pivot = object.transform.pivot_set ? glm::vec3(NAN) : object.transform.pivot;
+  write_changed_fields(transform_fields(), object.transform, identity, transform);
+  if (!transform.empty()) j["transform"] = transform;
+  write_changed_fields(object_fields(), object, Object{}, j);
   j["material"] = escape_name(material_name);
   return j;
 }

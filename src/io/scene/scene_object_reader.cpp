@@ -14,12 +14,15 @@
 #include "base/error.h"
 #include "base/memory_budget.h"
 #include "base/text_distance.h"
+#include "io/json/field_json.h"
 #include "io/json/name_escape.h"
 #include "io/model/model_loader.h"
 #include "io/model/model_maps.h"
 #include "io/model/teapot_reader.h"
 #include "io/scene/scene_json_reader.h"
 #include "io/scene/scene_loader.h"
+#include "scene/fields/fields.h"
+#include "scene/geometry/placement.h"
 #include "scene/geometry/shapes.h"
 #include "scene/limits.h"
 #include "scene/memory/memory_estimate.h"
@@ -34,19 +37,32 @@ const std::vector<std::string> kTypeNames = {"sphere", "quad", "box", "teapot", 
 std::vector<std::string> allowed_keys(ObjectType type) {
   switch (type) {
     case ObjectType::sphere:
-      return {"type", "name", "material", "center", "radius"};
+      return allowed_keys(object_fields(),
+                          {"type", "name", "material", "transform", "center", "radius"});
     case ObjectType::quad:
-      return {"type", "name", "material", "vertices"};
+      return allowed_keys(object_fields(), {"type", "name", "material", "transform", "vertices"});
     case ObjectType::box:
-      return {"type", "name", "material", "min", "max", "rotate_y", "position"};
+      return allowed_keys(object_fields(), {"type", "name", "material", "transform", "min", "max",
+                                            "rotate_y", "position"});
     case ObjectType::teapot:
-      return {"type",     "name",  "material",     "position",
-              "rotate_y", "scale", "tessellation", "smooth"};
+      return allowed_keys(object_fields(), {"type", "name", "material", "transform", "position",
+                                            "rotate_y", "scale", "tessellation", "smooth"});
     case ObjectType::mesh:
-      return {"type",     "name",  "material", "file",   "group",
-              "position", "scale", "rotate_y", "smooth", "crease_angle"};
+      return allowed_keys(object_fields(),
+                          {"type", "name", "material", "transform", "file", "group", "position",
+                           "scale", "rotate_y", "smooth", "crease_angle"});
   }
   return {};
+}
+
+// The object's own fields of the table ("hidden") and its "transform" block; the pivot is left
+// unset (following the object's centre) unless the file gives it.
+void read_placement(const JsonObjectReader& reader, Object& object) {
+  read_fields(reader, object_fields(), object);
+  if (!reader.has("transform")) return;
+  const JsonObjectReader block(reader.required("transform"), reader.file(),
+                               reader.path("transform"), allowed_keys(transform_fields()));
+  read_fields(block, transform_fields(), object.transform);
 }
 
 ObjectType read_type(const nlohmann::json& value, const std::string& file,
@@ -212,7 +228,8 @@ void read_mesh(const JsonObjectReader& reader, const ObjectReadContext& context,
   auto emit = [&](Mesh mesh, Object object, std::string material_name) {
     transform_mesh(mesh, transform);
     drop_degenerate(mesh, context, reader.path());
-    object.mesh = std::make_shared<const Mesh>(std::move(mesh));
+    object.shape = std::make_shared<const Mesh>(std::move(mesh));
+    place_object(object);
     out.push_back({std::move(object), std::move(material_name), material_field});
   };
 
@@ -274,13 +291,15 @@ void read_scene_object(const nlohmann::json& value, std::size_t index,
       type == ObjectType::mesh ? reader.string("material", "") : reader.string("material"));
   if (reader.has("material") && material.empty()) reader.fail("material", "must not be empty");
   ShapeParams& params = object.params;
+  read_placement(reader, object);
   Mesh mesh;
 
   switch (type) {
     case ObjectType::sphere:
-      object.center = reader.vec3("center");
-      object.radius = reader.number("radius");
-      if (!(object.radius > 0.0f)) reader.fail("radius", "must be greater than 0");
+      params.center = reader.vec3("center");
+      params.radius = reader.number("radius");
+      if (!(params.radius > 0.0f)) reader.fail("radius", "must be greater than 0");
+      place_object(object);
       out.push_back({std::move(object), material, reader.path("material")});
       return;
     case ObjectType::quad: {
@@ -344,7 +363,8 @@ void read_scene_object(const nlohmann::json& value, std::size_t index,
   drop_degenerate(mesh, context, path);
   if (type != ObjectType::teapot)
     claim_geometry(context, path, to_string(type), mesh.triangles.size());
-  object.mesh = std::make_shared<const Mesh>(std::move(mesh));
+  object.shape = std::make_shared<const Mesh>(std::move(mesh));
+  place_object(object);
   out.push_back({std::move(object), material, reader.path("material")});
 }
 

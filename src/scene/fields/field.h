@@ -74,6 +74,7 @@ struct Field {
   bool ui_log = false;                      // slider on a logarithmic scale
   ChangeClass change = ChangeClass::full;   // what an edit of it invalidates
   bool required = false;                    // must be given in a scene file
+  bool one_number = false;                  // a vector that one number may give (s for s, s, s)
   std::vector<const char*> choices;         // names of a choice field, in enum order
   FieldValue (*get)(const S&) = nullptr;
   void (*set)(S&, const FieldValue&) = nullptr;
@@ -115,6 +116,10 @@ struct Field {
   }
   Field& only_when(bool (*condition)(const S&)) {
     applies = condition;
+    return *this;
+  }
+  Field& uniform_allowed() {
+    one_number = true;
     return *this;
   }
 };

@@ -267,14 +267,14 @@ const FieldTable<RenderSettings>& render_fields() {
                     .ui(1, 8)
                     .invalidates(ChangeClass::environment)
                     .explain("the fast path's prefiltered maps: texels per lobe width"));
-    t.push_back(scalar_field<&RenderSettings::env_samples>(whole, "env_samples",
-                                                           "environment directions")
-                    .range(0, kMaxEnvSamples)
-                    .ui(0, 4096, true)
-                    .invalidates(ChangeClass::environment)
-                    .explain("directions per sample that converge on the environment's exact "
-                             "terms (visibility included with shadows on); 0: the fast path "
-                             "alone"));
+    t.push_back(
+        scalar_field<&RenderSettings::env_samples>(whole, "env_samples", "environment directions")
+            .range(0, kMaxEnvSamples)
+            .ui(0, 4096, true)
+            .invalidates(ChangeClass::environment)
+            .explain("directions per sample that converge on the environment's exact "
+                     "terms (visibility included with shadows on); 0: the fast path "
+                     "alone"));
     t.push_back(choice_field<&RenderSettings::map_filter>("map_filter", "map filter",
                                                           {"trilinear", "bilinear", "nearest"})
                     .invalidates(ChangeClass::texture)
@@ -348,6 +348,59 @@ const FieldTable<Scene>& scene_fields() {
     return t;
   }();
   return table;
+}
+
+const FieldTable<ObjectTransform>& transform_fields() {
+  static const FieldTable<ObjectTransform> table = [] {
+    constexpr FieldKind vector = FieldKind::vector;
+    FieldTable<ObjectTransform> t;
+    t.push_back(vec3_field<&ObjectTransform::translate>(vector, "translate", "move")
+                    .range(-kMaxCoordinate, kMaxCoordinate)
+                    .ui(-100.0, 100.0)
+                    .explain("added after rotation and scale, world units"));
+    t.push_back(vec3_field<&ObjectTransform::rotate>(vector, "rotate", "rotate")
+                    .range(-1e6, 1e6)
+                    .ui(-360.0, 360.0)
+                    .explain("degrees about x, then y, then z, about the pivot"));
+    t.push_back(vec3_field<&ObjectTransform::scale>(vector, "scale", "scale")
+                    .range(-kMaxCoordinate, kMaxCoordinate)
+                    .ui(-10.0, 10.0)
+                    .uniform_allowed()
+                    .explain("per axis of the object's own frame, about the pivot; no axis 0; a "
+                             "sphere's is uniform"));
+    FieldTable<ObjectTransform>::value_type pivot =
+        vec3_field<&ObjectTransform::pivot>(vector, "pivot", "pivot")
+            .range(-kMaxCoordinate, kMaxCoordinate)
+            .ui(-100.0, 100.0)
+            .explain(
+                "the point rotation and scale keep in place, world units; default: the "
+                "object's own centre");
+    // A pivot given by the file or the user stays; an unset one follows the centre.
+    pivot.set = [](ObjectTransform& s, const FieldValue& value) {
+      s.pivot = value.v;
+      s.pivot_set = true;
+    };
+    t.push_back(pivot);
+    for (auto& f : t) f.invalidates(ChangeClass::full);  // the geometry moves
+    return t;
+  }();
+  return table;
+}
+
+const FieldTable<Object>& object_fields() {
+  static const FieldTable<Object> table = [] {
+    FieldTable<Object> t;
+    // Hiding an object takes it out of the ray-scene queries: the geometry changes.
+    t.push_back(scalar_field<&Object::hidden>(FieldKind::flag, "hidden", "hidden")
+                    .invalidates(ChangeClass::full)
+                    .explain("not rendered, casts no shadow, cannot be picked"));
+    return t;
+  }();
+  return table;
+}
+
+bool operator==(const ObjectTransform& a, const ObjectTransform& b) {
+  return same_fields(transform_fields(), a, b) && a.pivot_set == b.pivot_set;
 }
 
 bool operator==(const PhysicalReference& a, const PhysicalReference& b) {

@@ -22,6 +22,9 @@ const FieldTable<Camera>& camera_fields();
 const FieldTable<Environment>& environment_fields();
 // The scene's own fields (background, A_scene).
 const FieldTable<Scene>& scene_fields();
+// An object's transform (the "transform" block of an object) and its own fields ("hidden").
+const FieldTable<ObjectTransform>& transform_fields();
+const FieldTable<Object>& object_fields();
 
 // Whether a and b hold equal values in every field of table.
 template <class S>

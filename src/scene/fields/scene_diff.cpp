@@ -26,9 +26,10 @@ bool same_params(const ShapeParams& a, const ShapeParams& b) {
   for (int i = 0; i < 4; ++i) {
     if (a.quad[i] != b.quad[i]) return false;
   }
-  return a.box_min == b.box_min && a.box_max == b.box_max && a.file == b.file &&
-         a.group == b.group && a.position == b.position && a.scale == b.scale &&
-         a.rotate_y == b.rotate_y && a.tessellation == b.tessellation && a.smooth == b.smooth &&
+  return a.center == b.center && a.radius == b.radius && a.box_min == b.box_min &&
+         a.box_max == b.box_max && a.file == b.file && a.group == b.group &&
+         a.position == b.position && a.scale == b.scale && a.rotate_y == b.rotate_y &&
+         a.tessellation == b.tessellation && a.smooth == b.smooth &&
          a.crease_angle == b.crease_angle;
 }
 
@@ -109,10 +110,14 @@ SceneDiff diff_scenes(const Scene& before, const Scene& after) {
     for (std::size_t i = 0; i < before.objects.size(); ++i) {
       const Object& a = before.objects[i];
       const Object& b = after.objects[i];
-      if (!same_shape(a, b)) {
+      if (!same_shape(a, b) || a.hidden != b.hidden) {
         diff.change = ChangeClass::full;
         diff.geometry = diff.any = true;
       }
+      // Transforms and hidden flags by their tables (geometry changes: the placed shape above
+      // differs too, but a pivot moved under an identity transform changes only the file).
+      diff_fields(transform_fields(), a.transform, b.transform, diff);
+      diff_fields(object_fields(), a, b, diff);
       if (a.material != b.material) {
         diff.change = raise(diff.change, ChangeClass::exponent);
         diff.any = true;
@@ -121,7 +126,8 @@ SceneDiff diff_scenes(const Scene& before, const Scene& after) {
           diff.geometry = true;
         }
       }
-      diff.any = diff.any || a.name != b.name || !same_params(a.params, b.params);
+      diff.any = diff.any || a.name != b.name || !same_params(a.params, b.params) ||
+                 a.shape != b.shape || a.transform.pivot_set != b.transform.pivot_set;
     }
   }
   diff.any = diff.any || before.material_names != after.material_names || before.path != after.path;

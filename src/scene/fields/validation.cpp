@@ -1,5 +1,6 @@
 #include "scene/fields/validation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -98,6 +99,31 @@ void check_light(const std::string& file, const std::string& field, const Light&
   }
 }
 
+// The transform's fields, its scale's rules, and the placed geometry within the coordinate
+// limit (the object's own fields were checked as they were read).
+void check_transform(const std::string& file, const std::string& field, const Object& object) {
+  const ObjectTransform& t = object.transform;
+  const std::string path = field + ".transform";
+  check_fields(file, path, transform_fields(), t);
+  for (int axis = 0; axis < 3; ++axis) {
+    if (t.scale[axis] == 0.0f) fail_field(file, path + ".scale", "must not be 0 on any axis");
+  }
+  if (object.type == ObjectType::sphere && !(t.scale.x == t.scale.y && t.scale.y == t.scale.z)) {
+    fail_field(file, path + ".scale", "a sphere takes a uniform scale only (one number)");
+  }
+  if (object.type == ObjectType::sphere || !object.mesh || object.mesh == object.shape) return;
+  glm::vec3 lo, hi;
+  if (!mesh_bounds(*object.mesh, lo, hi)) return;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double reach = std::max(std::fabs(double(lo[axis])), std::fabs(double(hi[axis])));
+    if (!(reach <= kMaxCoordinate)) {
+      fail_field(file, path,
+                 "placed vertices reach " + number_text(reach) + " on axis " +
+                     std::to_string(axis) + ", beyond the limit " + number_text(kMaxCoordinate));
+    }
+  }
+}
+
 void check_object(const Scene& scene, std::size_t index) {
   const std::string& file = scene.path;
   const Object& object = scene.objects[index];
@@ -122,6 +148,7 @@ void check_object(const Scene& scene, std::size_t index) {
   } else if (!object.mesh) {
     fail_field(file, field, "has no geometry");
   }
+  check_transform(file, field, object);
 }
 
 // The geometry and the render caches against the memory budget (base/memory_budget.h), before

@@ -43,10 +43,15 @@ std::uint64_t scene_bytes_without_meshes(const Scene& scene) {
 
 std::uint64_t unshared_mesh_bytes(const Scene& held, const Scene& other) {
   std::vector<const Mesh*> mine, others;
+  // A transformed object holds its own triangles (shape) and the placed copy (mesh).
   for (const Object& o : held.objects) {
     if (o.mesh != nullptr) mine.push_back(o.mesh.get());
+    if (o.shape != nullptr) mine.push_back(o.shape.get());
   }
-  for (const Object& o : other.objects) others.push_back(o.mesh.get());
+  for (const Object& o : other.objects) {
+    others.push_back(o.mesh.get());
+    others.push_back(o.shape.get());
+  }
   std::sort(mine.begin(), mine.end());
   mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
   std::sort(others.begin(), others.end());

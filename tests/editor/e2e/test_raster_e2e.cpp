@@ -163,10 +163,12 @@ TEST_F(RasterE2E, AbComparisonsAndGouraudOnACoarseTeapot) {
 // re-trace is timed. The choice is settled by the end of drag 2 (the ray tracer is given drag
 // time when the raster delay exceeds its re-trace) and drag 3 goes to the renderer it names.
 // Figures may arrive within a drag, so each `stats` line is checked against its own figures.
+// The drags start in the background's corner: a press on the ball selects it, and its gizmo's
+// centre, at the image's centre, would take the next press as an object drag.
 TEST_F(RasterE2E, AutomaticDrawsDragsWithTheRendererMeasuredFaster) {
   const std::string drag =
-      "mouse press 0.5 0.5\nmouse move 0.53 0.5\nmouse move 0.56 0.5\nmouse move 0.59 0.5\n"
-      "mouse move 0.62 0.5\nsleep 0.2\nstats\nmouse release\nwait\nstats\n";
+      "mouse press 0.15 0.85\nmouse move 0.18 0.85\nmouse move 0.21 0.85\nmouse move 0.24 0.85\n"
+      "mouse move 0.27 0.85\nsleep 0.2\nstats\nmouse release\nwait\nstats\n";
   const EditorRun r = run_gold("renderer auto\nwait\nscreenshot before.png viewport\n" + drag +
                                "screenshot after.png viewport\n" + drag + drag + "quit\n");
   if (r.status == -1) GTEST_SKIP() << "no xvfb-run";

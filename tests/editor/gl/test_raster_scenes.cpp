@@ -11,6 +11,7 @@
 
 #include "editor/gl/egl_context.h"
 #include "editor/gl/glsl_harness.h"
+#include "editor/gl/planted_shaders.h"
 #include "editor/gl/raster_renderer.h"
 #include "io/scene/scene_loader.h"
 
@@ -250,21 +251,7 @@ TEST_F(RasterAgreement, ShadowMapDifferencesLieOnShadowEdges) {
   }
 }
 
-// Runs check with a renderer whose shaders have `from` replaced by `to` (which must occur).
-void with_planted_error(const std::string& from, const std::string& to,
-                        const std::function<void(RasterRenderer&)>& check) {
-  bool found = false;
-  RasterRenderer planted([&](const std::string& text) {
-    const std::size_t at = text.find(from);
-    if (at == std::string::npos) return text;
-    found = true;
-    std::string edited = text;
-    edited.replace(at, from.size(), to);
-    return edited;
-  });
-  ASSERT_TRUE(found) << "the planted text is not in the shaders any more: " << from;
-  check(planted);
-}
+using test::with_planted_error;
 
 // Whether scene's images from renderer pass the shadow-free agreement check on every term.
 bool agrees(RasterRenderer& renderer, const Scene& scene, ShadingFrequency f) {

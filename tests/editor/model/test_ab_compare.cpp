@@ -11,6 +11,7 @@
 #include "editor/model/view/heat_map.h"
 #include "engine/renderer.h"
 #include "support/quiet_script_host.h"
+#include "support/script_checks.h"
 #include "support/test_scene.h"
 
 namespace gloss {
@@ -19,20 +20,7 @@ namespace {
 using Host = test::QuietScriptHost;
 
 int run(const std::string& text, Host& host, std::string& errors) {
-  const Script s = parse_script(text, "ab.txt");
-  testing::internal::CaptureStdout();
-  testing::internal::CaptureStderr();
-  int status = 0;
-  for (const ScriptLine& line : s.lines) {
-    const LineResult r = run_script_line(s, line, host);
-    if (r.next == LineResult::Next::stop) {
-      status = r.status;
-      break;
-    }
-  }
-  errors = testing::internal::GetCapturedStderr();
-  testing::internal::GetCapturedStdout();
-  return status;
+  return test::run_script_text(text, "ab.txt", host, errors);
 }
 
 Image total(const Scene& scene) {

@@ -192,5 +192,22 @@ TEST(HeatMap, LargestDifferenceIsPerChannel) {
   EXPECT_EQ(max_difference(a, Image(3, 1)), 0.0f);
 }
 
+TEST(CameraController, FramingPutsTheBoxInTheMiddleAndFillsTheView) {
+  Camera camera;
+  camera.eye = {0, 0, 20};
+  camera.target = {0, 0, 0};
+  camera.fov_y = 60;
+  // A box of half-diagonal sqrt(3) at (5, 0, 0), seen at aspect 2: the vertical field is the
+  // narrower, half 30 degrees; distance 1.1 sqrt(3) / sin(30) = 2.2 sqrt(3) along +z.
+  const Camera framed = frame_camera(camera, {4, -1, -1}, {6, 1, 1}, 2.0f);
+  EXPECT_EQ(framed.target, glm::vec3(5, 0, 0));
+  EXPECT_NEAR(framed.eye.x, 5.0f, 1e-6f);
+  EXPECT_NEAR(framed.eye.z, 2.2f * std::sqrt(3.0f), 1e-5f);
+  // Tall and narrow (aspect 0.5): the horizontal half-angle, atan(tan 30 x 0.5), is narrower.
+  const float half = std::atan(std::tan(3.14159265f / 6.0f) * 0.5f);
+  EXPECT_NEAR(frame_camera(camera, {4, -1, -1}, {6, 1, 1}, 0.5f).eye.z,
+              1.1f * std::sqrt(3.0f) / std::sin(half), 1e-4f);
+}
+
 }  // namespace
 }  // namespace gloss

@@ -24,10 +24,15 @@ TEST(PanelLayout, AtLaptopSizeTheViewportKeepsHalfTheWidth) {
   EXPECT_EQ(l.viewport.y, kMenu);
   EXPECT_EQ(l.viewport.h, 640.0f - kMenu - kStatus);
   EXPECT_EQ(l.status.y, 640.0f - kStatus);
-  // Lights & Scene on top of View & Quality, half each, the column's full height; Material on
-  // top of Reference (two thirds, floor(596 x 0.66) = 393), likewise.
-  EXPECT_EQ(l.lights.h + l.view.h, l.viewport.h);
+  // The Outliner on top (floor(596 x 0.4) = 238), then Lights & Scene over View & Quality,
+  // half each of the 358 left, the column's full height; Material on top of Reference (two
+  // thirds, floor(596 x 0.66) = 393), likewise.
+  EXPECT_EQ(l.outliner.y, kMenu);
+  EXPECT_EQ(l.outliner.h, 238.0f);
+  EXPECT_EQ(l.lights.y, l.outliner.bottom());
+  EXPECT_EQ(l.lights.h, 179.0f);
   EXPECT_EQ(l.view.y, l.lights.bottom());
+  EXPECT_EQ(l.outliner.h + l.lights.h + l.view.h, l.viewport.h);
   EXPECT_EQ(l.left.h, 393.0f);
   EXPECT_EQ(l.reference.y, l.left.bottom());
   EXPECT_EQ(l.left.h + l.reference.h, l.viewport.h);
@@ -66,6 +71,7 @@ TEST(PanelLayout, CollapsedPanelsAreStripsAndGiveTheirRoomToTheViewport) {
   EXPECT_EQ(l.viewport.w, 1024.0f - kStripWidth - 256.0f);
   c.right_collapsed = true;
   l = panel_layout(c, 1024, 640, kMenu, kStatus);
+  EXPECT_FALSE(l.outliner.visible());
   EXPECT_FALSE(l.lights.visible());
   EXPECT_FALSE(l.view.visible());
   EXPECT_EQ(l.right_strip.x, 1024.0f - kStripWidth);
@@ -95,6 +101,7 @@ TEST(PanelLayout, SplittersAreSeveralPixelsWideOnTheBorders) {
   EXPECT_GE(kSplitterWidth, 6.0f);
   EXPECT_EQ(l.left_split.x + l.left_split.w * 0.5f, l.left.right());
   EXPECT_EQ(l.right_split.x + l.right_split.w * 0.5f, l.lights.x);
+  EXPECT_EQ(l.outliner_split.y + l.outliner_split.h * 0.5f, l.outliner.bottom());
   EXPECT_EQ(l.lights_split.y + l.lights_split.h * 0.5f, l.lights.bottom());
   EXPECT_EQ(l.material_split.y + l.material_split.h * 0.5f, l.left.bottom());
 }

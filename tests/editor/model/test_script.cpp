@@ -6,6 +6,7 @@
 #include "editor/model/document/command_layer.h"
 #include "editor/model/script/script.h"
 #include "editor/model/script/script_runner.h"
+#include "support/script_checks.h"
 #include "support/test_scene.h"
 
 namespace gloss {
@@ -74,17 +75,7 @@ TEST(Script, ScreenshotKindDefaultsToViewport) {
 }
 
 void expect_error_on_line(const std::string& text, int line, const std::string& words) {
-  try {
-    parse_script(text, "bad.txt");
-    ADD_FAILURE() << "no error for: " << text;
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.line(), line) << e.what();
-    EXPECT_EQ(e.file(), "bad.txt");
-    EXPECT_NE(std::string(e.what()).find("bad.txt:" + std::to_string(line) + ":"),
-              std::string::npos)
-        << e.what();
-    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
-  }
+  test::expect_script_error(text, line, words);
 }
 
 TEST(Script, BadLinesNameTheLine) {

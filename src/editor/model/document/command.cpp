@@ -14,6 +14,7 @@
 #include "io/scene/material_maps.h"
 #include "io/scene/scene_loader.h"
 #include "scene/fields/validation.h"
+#include "scene/geometry/placement.h"
 
 namespace gloss {
 
@@ -38,6 +39,14 @@ PhysicalReference& object_reference(Scene& scene, int object) {
                        "'s material has no physical reference (give it one first)");
   }
   return *m.reference;
+}
+
+Object& scene_object(Scene& scene, int object) {
+  if (object < 0 || object >= static_cast<int>(scene.objects.size())) {
+    throw CommandError("no object " + std::to_string(object) + " (the scene has " +
+                       std::to_string(scene.objects.size()) + ")");
+  }
+  return scene.objects[static_cast<std::size_t>(object)];
 }
 
 PointLight& scene_light(Scene& scene, int light) {
@@ -103,6 +112,13 @@ void set_field(const SetField& c, Scene& scene) {
       return set_in(scene_fields(), c.part, scene, c);
     case FieldPart::reference:
       return set_in(reference_fields(), c.part, object_reference(scene, c.index), c);
+    case FieldPart::transform: {
+      Object& object = scene_object(scene, c.index);
+      set_in(transform_fields(), c.part, object.transform, c);
+      return place_object(object);
+    }
+    case FieldPart::object:
+      return set_in(object_fields(), c.part, scene_object(scene, c.index), c);
     case FieldPart::environment:
       if (!scene.environment.present()) {
         throw CommandError("the scene has no environment light (give it a map first)");
@@ -134,6 +150,10 @@ std::string describe(const SetField& c) {
     case FieldPart::reference:
       return "reference " + describe(reference_fields(), c) + " (object " +
              std::to_string(c.index) + ")";
+    case FieldPart::transform:
+      return describe(transform_fields(), c) + " (object " + std::to_string(c.index) + ")";
+    case FieldPart::object:
+      return describe(object_fields(), c) + " (object " + std::to_string(c.index) + ")";
     case FieldPart::environment:
       return "environment " + describe(environment_fields(), c);
   }
@@ -161,6 +181,10 @@ bool continuous(const SetField& c) {
       return of(scene_fields());
     case FieldPart::reference:
       return of(reference_fields());
+    case FieldPart::transform:
+      return of(transform_fields());
+    case FieldPart::object:
+      return of(object_fields());
     case FieldPart::environment:
       return of(environment_fields());
   }
@@ -179,7 +203,8 @@ void set_tessellation(int level, Scene& scene) {
     any = true;
     if (o.params.tessellation == level) continue;
     o.params.tessellation = level;
-    o.mesh = std::make_shared<const Mesh>(teapot_mesh(o.params));
+    o.shape = std::make_shared<const Mesh>(teapot_mesh(o.params));
+    place_object(o);
   }
   if (!any) throw CommandError("the scene has no teapot to tessellate");
 }
@@ -247,6 +272,10 @@ const char* to_string(FieldPart part) {
       return "scene";
     case FieldPart::reference:
       return "reference";
+    case FieldPart::transform:
+      return "transform";
+    case FieldPart::object:
+      return "object";
     case FieldPart::environment:
       return "environment";
   }
@@ -301,6 +330,7 @@ void apply_command(const Command& command, Scene& scene) {
             if (c.model) next.render.model = *c.model;
           },
           [&](const SetEnvironment& c) { set_environment(c, next); },
+          [&](const auto& c) { apply_object_command(c, next); },  // object_commands.h
       },
       command);
   try {
@@ -348,6 +378,7 @@ std::string command_label(const Command& command) {
             return c.file.empty() ? std::string("remove the environment")
                                   : "set the environment to " + c.file;
           },
+          [](const auto& c) { return object_command_label(c); },  // object_commands.h
       },
       command);
 }
@@ -366,6 +397,7 @@ std::string merge_key(const Command& command) {
           },
           // A slider drag through the levels is one undo step.
           [](const SetTessellation&) { return std::string("tessellation"); },
+          [](const TransformObjects& c) { return transform_merge_key(c); },
           [](const auto&) { return std::string(); },
       },
       command);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "editor/model/document/document.h"
+#include "editor/model/document/object_commands.h"
 #include "scene/fields/fields.h"
 
 namespace gloss {
@@ -27,6 +28,8 @@ enum class FieldPart {
   camera,       // the camera
   scene,        // the scene's own fields: background, ambient
   reference,    // the physical reference of the material object `index` uses (it must have one)
+  transform,    // object `index`'s transform (translate, rotate, scale, pivot)
+  object,       // object `index`'s own fields (hidden)
   environment,  // the environment light's numbers (intensity, rotation, as_background)
 };
 const char* to_string(FieldPart part);
@@ -101,9 +104,14 @@ struct ReplaceScene {
   std::string label;
 };
 
-using Command = std::variant<SetField, ApplyPreset, SetMaterial, SetModel, AddLight, RemoveLight,
-                             SetCamera, OrbitCamera, SetTessellation, ReplaceScene, SetReference,
-                             ApplyFit, SetEnvironment>;
+using Command =
+    std::variant<SetField, ApplyPreset, SetMaterial, SetModel, AddLight, RemoveLight, SetCamera,
+                 OrbitCamera, SetTessellation, ReplaceScene, SetReference, ApplyFit,
+                 // objects and material identities (object_commands.h)
+                 AddObjects, DeleteObjects, DuplicateObjects, SetHidden, SoloObjects, RenameObject,
+                 TransformObjects, RenameMaterial, AssignMaterial, NewMaterial,
+                 // the environment light's map
+                 SetEnvironment>;
 
 // Applies command to scene and validates the result (scene/fields/validation.h, the document's one
 // validator). Throws CommandError naming the bad argument or field; scene is then unchanged.

@@ -62,15 +62,8 @@ Scene builtin_scene() {
     scene.materials.push_back(preset->material);
     scene.material_names.push_back(name);
   }
-  Object gold;
-  gold.name = "gold sphere";
-  gold.center = {-1.2f, 0.0f, 0.0f};
-  gold.material = 0;
-  Object silver;
-  silver.name = "silver sphere";
-  silver.center = {1.2f, 0.0f, 0.0f};
-  silver.material = 1;
-  scene.objects = {gold, silver};
+  scene.objects = {sphere_object("gold sphere", {-1.2f, 0.0f, 0.0f}, 1.0f, 0),
+                   sphere_object("silver sphere", {1.2f, 0.0f, 0.0f}, 1.0f, 1)};
   scene.render.width = 800;
   scene.render.height = 600;
   scene.render.spp = 4;

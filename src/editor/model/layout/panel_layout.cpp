@@ -27,6 +27,7 @@ void clamp_panel_widths(PanelChoices& c, float width) {
   c.right_width = std::clamp(c.right_width, lo, hi);
   c.lights_share = std::clamp(c.lights_share, 0.15f, 0.85f);
   c.material_share = std::clamp(c.material_share, 0.2f, 0.9f);
+  c.outliner_share = std::clamp(c.outliner_share, 0.15f, 0.7f);
   // The panels shown share half the window: past it, the wider gives way first (down to the
   // narrower's width), then both alike; never below lo.
   const float budget = std::floor(width * 0.5f);
@@ -83,11 +84,17 @@ PanelLayout panel_layout(const PanelChoices& choices, float width, float height,
     x1 = width - kStripWidth;
   } else {
     x1 = width - c.right_width;
-    const float lights_h = std::floor(body_h * c.lights_share);
-    out.lights = {x1, top, c.right_width, lights_h};
-    out.view = {x1, top + lights_h, c.right_width, body_h - lights_h};
+    const float outliner_h = std::floor(body_h * c.outliner_share);
+    const float below = body_h - outliner_h;  // Lights & Scene over View & Quality
+    const float lights_h = std::floor(below * c.lights_share);
+    const float lights_y = top + outliner_h;
+    out.outliner = {x1, top, c.right_width, outliner_h};
+    out.lights = {x1, lights_y, c.right_width, lights_h};
+    out.view = {x1, lights_y + lights_h, c.right_width, below - lights_h};
     out.right_split = {x1 - kSplitterWidth * 0.5f, top, kSplitterWidth, body_h};
-    out.lights_split = {x1, top + lights_h - kSplitterWidth * 0.5f, c.right_width, kSplitterWidth};
+    out.outliner_split = {x1, lights_y - kSplitterWidth * 0.5f, c.right_width, kSplitterWidth};
+    out.lights_split = {x1, lights_y + lights_h - kSplitterWidth * 0.5f, c.right_width,
+                        kSplitterWidth};
   }
   out.viewport = {x0, top, std::max(x1 - x0, 1.0f), body_h};
   return out;

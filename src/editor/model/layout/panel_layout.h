@@ -1,7 +1,8 @@
 #pragma once
 // Where the window's parts sit (editor/ui/layout.cpp draws them there): the menu bar on top, the
-// status bar below, the Material and Reference panels in a column on the left, the Lights & Scene
-// and View & Quality panels in a column on the right, the viewport between. GL-free, so the rules
+// status bar below, the Material and Reference panels in a column on the left, the Outliner, the
+// Lights & Scene and View & Quality panels in a column on the right, the viewport between.
+// GL-free, so the rules
 // are tested as numbers:
 //   - the viewport keeps at least half the window's width: the side panels share the other half
 //     (each between kMinPanelWidth, or a quarter of the window when that is less, and 40% of it);
@@ -17,9 +18,12 @@ constexpr float kSplitterWidth = 8.0f;    // what a user grabs to resize, centre
 
 // What the user chose: sizes dragged to (0: the default share of the window), collapsed panels,
 // the maximised viewport. lights_share: the Lights panel's part of the right column's height;
-// material_share: the Material panel's part of the left column's (the Reference panel's the rest).
+// material_share: the Material panel's part of the left column's (the Reference panel's the rest);
+// outliner_share: the Outliner's part of the right column's, at its top (lights_share is then a
+// part of what it leaves).
 struct PanelChoices {
   float left_width = 0.0f, right_width = 0.0f, lights_share = 0.5f, material_share = 0.66f;
+  float outliner_share = 0.4f;
   bool left_collapsed = false, right_collapsed = false;
   bool viewport_maximised = false;
 };
@@ -33,13 +37,15 @@ struct LayoutRect {
 
 struct PanelLayout {
   LayoutRect menu, status;
-  LayoutRect left, reference, lights, view;  // panels (left: Material); zero-sized when hidden
-  LayoutRect left_strip, right_strip;        // strips of collapsed panels; zero-sized otherwise
-  LayoutRect viewport;                       // the image's area
-  LayoutRect left_split, right_split;        // vertical splitters; zero-sized when not shown
-  LayoutRect lights_split;                   // between Lights & Scene and View & Quality
-  LayoutRect material_split;                 // between Material and Reference
-  float left_width = 0, right_width = 0;     // the widths in use (choices clamped)
+  LayoutRect left, reference;             // panels (left: Material); zero-sized when hidden
+  LayoutRect outliner, lights, view;      // the right column, top to bottom
+  LayoutRect left_strip, right_strip;     // strips of collapsed panels; zero-sized otherwise
+  LayoutRect viewport;                    // the image's area
+  LayoutRect left_split, right_split;     // vertical splitters; zero-sized when not shown
+  LayoutRect outliner_split;              // between the Outliner and Lights & Scene
+  LayoutRect lights_split;                // between Lights & Scene and View & Quality
+  LayoutRect material_split;              // between Material and Reference
+  float left_width = 0, right_width = 0;  // the widths in use (choices clamped)
 };
 
 // The layout of a window width x height with menu and status bars of the given heights.

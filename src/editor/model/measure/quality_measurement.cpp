@@ -248,6 +248,12 @@ std::optional<Command> command_for_row(const TradeoffRow& row, const Scene& scen
   if (row.knob == Knob::shadows && (row.setting == "on" || row.setting == "off")) {
     return Command(SetField{FieldPart::render, 0, "shadows", number_value(row.setting == "on")});
   }
+  if (row.knob == Knob::env_samples || row.knob == Knob::env_resolution) {
+    // "0 (fast)", "16" ...; "1", "2", "4" (the env_resolution rows have env_samples 0: "Use"
+    // sets the resolution only).
+    const int n = std::atoi(row.setting.c_str());
+    return Command(SetField{FieldPart::render, 0, to_string(row.knob), number_value(n)});
+  }
   PowMode pow = PowMode::exact;
   if (row.knob == Knob::pow && parse_pow_mode(row.setting, pow)) {
     return Command(SetField{FieldPart::render, 0, "pow", number_value(static_cast<int>(pow))});
@@ -270,6 +276,12 @@ bool row_in_use(const TradeoffRow& row, const Scene& scene, float preview_scale)
   }
   if (row.knob == Knob::shadows) return scene.render.shadows == (row.setting == "on");
   if (row.knob == Knob::pow) return to_string(scene.render.pow) == row.setting;
+  if (row.knob == Knob::env_samples) {
+    return scene.render.env_samples == std::atoi(row.setting.c_str());
+  }
+  if (row.knob == Knob::env_resolution) {
+    return scene.render.env_resolution == std::atoi(row.setting.c_str());
+  }
   if (const std::optional<float> scale = preview_scale_for_row(row)) {
     return std::fabs(*scale - preview_scale) < 1e-3f;
   }

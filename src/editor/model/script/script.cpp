@@ -1,5 +1,6 @@
 #include "editor/model/script/script.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -29,98 +30,6 @@ QualityAction parse_quality_raster(Tokens& t) {
     throw std::runtime_error("quality raster: reference spp must be 1.." + std::to_string(kMaxSpp));
   }
   return q;
-}
-
-// A map: `PATH [wrap MODE | wrap U_MODE V_MODE] [scale S | scale SU SV] [offset DU DV]
-// [rotation DEGREES] [uv_set 0|1]`, or `none` to clear the slot. The path is one word, relative
-// to the scene's folder; the image is read when the line runs (document/command.cpp).
-TextureMap parse_map(Tokens& t, const char* key) {
-  TextureMap map;
-  const std::string file = t.word(key);
-  if (file == "none") return map;
-  map.file = file;
-  auto wrap = [](const std::string& name) {
-    if (name == "repeat") return Wrap::repeat;
-    if (name == "clamp") return Wrap::clamp;
-    if (name == "mirror") return Wrap::mirror;
-    throw std::runtime_error("wrap must be repeat, clamp or mirror, got '" + name + "'");
-  };
-  auto numeric = [](const std::string& w) {
-    char* end = nullptr;
-    std::strtof(w.c_str(), &end);
-    return end != w.c_str() && *end == '\0';
-  };
-  while (!t.done()) {
-    const std::string option = t.word("map option");
-    if (option == "wrap") {
-      map.wrap[0] = map.wrap[1] = wrap(t.word("wrap mode"));
-      if (!t.done() && t.words[t.next] != "scale" && t.words[t.next] != "offset" &&
-          t.words[t.next] != "rotation" && t.words[t.next] != "uv_set") {
-        map.wrap[1] = wrap(t.word("wrap mode"));
-      }
-    } else if (option == "scale") {
-      map.scale = glm::vec2(t.number("scale"));
-      if (!t.done() && numeric(t.words[t.next])) map.scale.y = t.number("scale");
-    } else if (option == "offset") {
-      map.offset.x = t.number("offset");
-      map.offset.y = t.number("offset");
-    } else if (option == "rotation") {
-      map.rotation = t.number("rotation");
-    } else if (option == "uv_set") {
-      map.uv_set = t.index("uv_set");
-    } else {
-      throw std::runtime_error("unknown map option '" + option +
-                               "' (wrap, scale, offset, rotation, uv_set)");
-    }
-  }
-  return map;
-}
-
-// A value of field from the rest of the line: one number for a grey colour or three for R G B,
-// three for a vector, one number, a whole number, on/off, or a choice's name.
-template <class S>
-FieldValue parse_value(Tokens& t, const Field<S>& field) {
-  FieldValue value;
-  switch (field.kind) {
-    case FieldKind::colour: {
-      const float r = t.number("colour");
-      if (t.done()) {
-        value.v = glm::vec3(r);
-        break;
-      }
-      const float g = t.number("colour");
-      value.v = {r, g, t.number("colour")};
-      break;
-    }
-    case FieldKind::vector:
-      value.v = t.vec3(field.key);
-      break;
-    case FieldKind::number:
-      value.x = t.number(field.key);
-      break;
-    case FieldKind::whole:
-      value.x = t.whole(field.key);
-      break;
-    case FieldKind::flag:
-      value.x = t.on_off(field.key) ? 1.0 : 0.0;
-      break;
-    case FieldKind::map:
-      value.map = parse_map(t, field.key);
-      break;
-    case FieldKind::choice: {
-      const std::string& name = t.word(field.key);
-      const int index = choice_index(field, name);
-      if (index < 0) {
-        std::string names;
-        for (const char* c : field.choices) names += (names.empty() ? "" : ", ") + std::string(c);
-        throw std::runtime_error(std::string(field.key) + " must be one of " + names + ", got '" +
-                                 name + "'");
-      }
-      value.x = index;
-      break;
-    }
-  }
-  return value;
 }
 
 // "KEY VALUE..." of a part's table, as a SetField.
@@ -341,6 +250,11 @@ ScriptAction parse_line(Tokens& t) {
   }
   if (verb == "light") return parse_light(t);
   if (verb == "environment") return parse_environment(t);
+  // Issue 24: objects by index or name, material names (script_objects.cpp).
+  if (verb == "object" || verb == "material" || verb == "assign" || verb == "save" ||
+      verb == "browse" || verb == "gizmo") {
+    return parse_object_line(t);
+  }
   if (verb == "tessellation") {  // every teapot's segments per patch side; the command checks it
     return Command(SetTessellation{static_cast<int>(t.whole("segments per patch side"))});
   }
@@ -403,7 +317,10 @@ ScriptAction parse_line(Tokens& t) {
   if (verb == "inspect") return parse_inspect(t);
   if (verb == "reference") return parse_reference(t);
   if (verb == "fit") return parse_fit(t);
-  if (verb == "select") return SelectAction{t.index("object index")};
+  if (verb == "select") {
+    const ObjectRef ref = parse_object_ref(t);
+    return SelectAction{std::max(ref.index, 0), ref.index < 0 ? ref.name : std::string()};
+  }
   if (verb == "stats") return StatsAction{};
   if (verb == "sleep") {
     const float seconds = t.number("seconds");
@@ -457,12 +374,10 @@ Script parse_script(const std::string& text, const std::string& file) {
   std::istringstream in(text);
   std::string raw;
   for (int number = 1; std::getline(in, raw); ++number) {
-    std::string line = raw.substr(0, raw.find('#'));
-    Tokens t;
-    std::istringstream words(line);
-    for (std::string w; words >> w;) t.words.push_back(w);
-    if (t.words.empty()) continue;
+    std::string line;
     try {
+      Tokens t = split_words(raw, line);
+      if (t.words.empty()) continue;
       ScriptAction action = parse_line(t);
       t.end();
       script.lines.push_back({number, line, std::move(action)});
@@ -471,6 +386,46 @@ Script parse_script(const std::string& text, const std::string& file) {
     }
   }
   return script;
+}
+
+Tokens split_words(const std::string& line, std::string& text) {
+  Tokens t;
+  std::string word;
+  bool in_word = false, in_quotes = false, quoted = false;
+  std::size_t i = 0;
+  auto finish = [&] {
+    if (in_word) {
+      t.words.push_back(word);
+      t.quoted.push_back(quoted);
+    }
+    word.clear();
+    in_word = quoted = false;
+  };
+  for (; i < line.size(); ++i) {
+    const char c = line[i];
+    if (in_quotes) {
+      if (c == '\\' && i + 1 < line.size() && (line[i + 1] == '"' || line[i + 1] == '\\')) {
+        word += line[++i];
+      } else if (c == '"') {
+        in_quotes = false;
+      } else {
+        word += c;
+      }
+    } else if (c == '#') {
+      break;
+    } else if (c == '"') {
+      in_quotes = in_word = quoted = true;
+    } else if (c == ' ' || c == '\t' || c == '\r') {
+      finish();
+    } else {
+      word += c;
+      in_word = true;
+    }
+  }
+  if (in_quotes) throw std::runtime_error("a quote is not closed");
+  finish();
+  text = line.substr(0, i);
+  return t;
 }
 
 Script load_script(const std::string& path) {

@@ -39,8 +39,10 @@ struct ClippedOverlayAction {
 };
 // `snapshot`: keeps the current document as the A side of `view ab snapshot`.
 struct SnapshotAction {};
+// `select OBJECT`: an index, or a name resolved when the line runs (as ObjectRef below).
 struct SelectAction {
   int object = 0;
+  std::string name;  // when not empty: the object called so
 };
 // Prints the editor's frame and latency measurements on stdout, then restarts the frame-time
 // window so consecutive `stats` lines measure the interval between them.
@@ -133,6 +135,56 @@ struct MouseAction {
   int button = 0;  // 0 left (orbit), 1 right, 2 middle
 };
 
+// ---- Objects and material identities (issue 24) ----
+// An object as a line names it: an index (a bare whole number) or a name (any other word, or any
+// quoted one: `object "12" hide` names the object called 12). Resolved when the line runs, so
+// an index after a delete names the object that moved down to it.
+struct ObjectRef {
+  int index = -1;    // >= 0: by index
+  std::string name;  // index < 0: by name
+};
+// `object add sphere|quad|box|teapot`, `object add model PATH`, `object OBJECT move X Y Z`
+// (the translate), `rotate X Y Z` (degrees), `scale S` or `scale SX SY SZ`, `pivot X Y Z`,
+// `object OBJECT delete|duplicate|hide|show|solo`, `object OBJECT name TEXT`,
+// `material rename OLD NEW`, `assign OBJECT MATERIAL`.
+struct ObjectLineAction {
+  enum class Verb {
+    add,
+    add_model,
+    field,
+    remove,
+    duplicate,
+    hide,
+    show,
+    solo,
+    name,
+    rename_material,
+    assign
+  };
+  Verb verb = Verb::add;
+  ObjectRef object;
+  ObjectType type = ObjectType::sphere;  // add
+  std::string text;   // add_model: the path; name: the new name; rename_material: OLD;
+                      // assign: the material's name
+  std::string text2;  // rename_material: NEW
+  SetField field;     // field: the transform field and value (index set when the line runs)
+};
+
+// `save PATH`: the scene saved to PATH as File > Save scene as does (PATH becomes its file).
+struct SaveAction {
+  std::string path;
+};
+// `browse save-scene|save-material|save-materials|export-glsl|open-scene|add-model`: the file
+// panel opened as the File menu opens it; prints `browse: FOLDER | NAME` (where it starts and
+// the name it suggests), so a script can check and a window screenshot can show them.
+struct BrowseAction {
+  std::string what;
+};
+// `gizmo move|rotate|scale`: the viewport gizmo's mode (keys W, E, R).
+struct GizmoAction {
+  GizmoMode mode = GizmoMode::move;
+};
+
 // ---- The window's layout (issue 24) ----
 // `layout` prints where the panels, the viewport's panes, the legend and the light markers are
 // (the editor's layout of its newest frame); `layout maximise on|off`, `layout collapse
@@ -168,7 +220,7 @@ using ScriptAction =
                  InspectAction, ClippedOverlayAction, SnapshotAction, MemoryAction,
                  ExportGlslAction, RendererAction, ShadingAction, ShadowMapAction, ShadowBiasAction,
                  MouseAction, ReferenceAction, FitAction, LayoutAction, KeyAction, LobeAction,
-                 ExportGltfAction>;
+                 ObjectLineAction, SaveAction, BrowseAction, GizmoAction, ExportGltfAction>;
 
 struct ScriptLine {
   int line = 0;  // 1-based line number in the file
@@ -180,6 +232,14 @@ struct Script {
   std::string file;  // for messages
   std::vector<ScriptLine> lines;
 };
+
+// The object an ObjectRef names in scene now; throws CommandError naming the reference
+// ("no object called 'bal' (did you mean 'ball'?)", "no object 7 (the scene has 3)").
+int resolve_object(const Scene& scene, const ObjectRef& ref);
+// The command an object line makes on scene as it is now. add_model loads the model file
+// (InputError naming it; its warnings go to warnings).
+Command object_line_command(const Scene& scene, const ObjectLineAction& line,
+                            std::vector<std::string>* warnings = nullptr);
 
 // Parses every line first, so a typo anywhere fails before anything runs. Throws InputError
 // naming the file and the line ("FILE:LINE: MESSAGE").

@@ -4,12 +4,16 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "base/error.h"
 #include "base/overloaded.h"
+#include "editor/model/document/document.h"
 #include "editor/model/document/reference_fit.h"
 #include "editor/model/export/glsl_export.h"
 #include "editor/model/export/gltf_file.h"
 #include "editor/model/measure/memory_report.h"
 #include "editor/model/measure/pixel_report.h"
+#include "editor/model/session/file_defaults.h"
+#include "io/scene/scene_loader.h"
 #include "reference/pixel_inspection.h"
 
 namespace gloss {
@@ -94,6 +98,35 @@ LineResult fit_line(ScriptHost& host, const FitAction& a) {
   return LineResult::go_on();
 }
 
+// The object and material lines (issue 24): resolved against the document as it is now, then
+// one command; what was added is selected and named on stdout.
+LineResult object_line(ScriptHost& host, const ObjectLineAction& a, const std::string& where) {
+  std::vector<std::string> warnings;
+  const std::size_t before = host.layer().scene().objects.size();
+  Command command;
+  try {
+    command = object_line_command(host.layer().scene(), a, &warnings);
+  } catch (const InputError& e) {
+    return bad_line(where, e.what());
+  }
+  for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  host.layer().execute(command);
+  host.layer().seal();
+  const Scene& scene = host.layer().scene();
+  if (a.verb == ObjectLineAction::Verb::add || a.verb == ObjectLineAction::Verb::add_model) {
+    std::vector<int> added;
+    std::string names;
+    for (std::size_t i = before; i < scene.objects.size(); ++i) {
+      added.push_back(static_cast<int>(i));
+      names += (names.empty() ? "" : ", ") + std::to_string(i) + " '" + scene.objects[i].name + "'";
+    }
+    host.select_objects(added);
+    std::printf("added %s\n", names.c_str());
+    std::fflush(stdout);
+  }
+  return LineResult::go_on();
+}
+
 }  // namespace
 
 Snapshot take_snapshot(const CommandLayer& layer, const std::optional<Snapshot>& previous) {
@@ -138,7 +171,12 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
               return LineResult::go_on();
             },
             [&](const SelectAction& a) {
-              if (a.object >= static_cast<int>(host.layer().scene().objects.size())) {
+              const Scene& scene = host.layer().scene();
+              if (!a.name.empty()) {
+                host.select(resolve_object(scene, ObjectRef{-1, a.name}));  // throws when absent
+                return LineResult::go_on();
+              }
+              if (a.object >= static_cast<int>(scene.objects.size())) {
                 return bad_line(where, "no object " + std::to_string(a.object));
               }
               host.select(a.object);
@@ -212,6 +250,13 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
               host.view().raster.shadow_map_size = a.size;
               return LineResult::go_on();
             },
+            [&](const ObjectLineAction& a) { return object_line(host, a, where); },
+            [&](const SaveAction& a) { return host.save(a, where); },
+            [&](const BrowseAction& a) { return host.browse(a); },
+            [&](const GizmoAction& a) {
+              host.view().gizmo = a.mode;
+              return LineResult::go_on();
+            },
             [&](const ShadowBiasAction& a) {
               host.view().raster.shadow_bias = a.texels;
               return LineResult::go_on();
@@ -221,6 +266,32 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
   } catch (const CommandError& e) {
     return bad_line(where, e.what());
   }
+}
+
+LineResult ScriptHost::save(const SaveAction& a, const std::string& where) {
+  try {
+    Scene scene = layer().scene();
+    move_document(scene, a.path);  // relative model paths follow the new folder
+    save_scene(scene, a.path);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s%s\n", where.c_str(), e.what());
+    return LineResult::stop(1);
+  }
+  layer().set_path(a.path);
+  layer().mark_saved();
+  std::printf("saved scene %s\n", a.path.c_str());
+  std::fflush(stdout);
+  return LineResult::go_on();
+}
+
+LineResult ScriptHost::browse(const BrowseAction& a) {
+  const Scene& scene = layer().scene();
+  const bool save = a.what.rfind("save", 0) == 0 || a.what == "export-glsl";
+  const std::filesystem::path folder = save ? save_folder("") : open_folder("", scene.path);
+  std::printf("browse: %s | %s\n", folder.string().c_str(),
+              suggested_file_name(scene, selected_object(), a.what).c_str());
+  std::fflush(stdout);
+  return LineResult::go_on();
 }
 
 LineResult ScriptHost::memory() {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include <optional>
+#include <vector>
 
 #include "editor/model/document/command_layer.h"
 #include "editor/model/script/script.h"
@@ -37,6 +38,10 @@ class ScriptHost {
   virtual CommandLayer& layer() = 0;
   virtual ViewSettings& view() = 0;
   virtual void select(int object) = 0;
+  // Selects these objects (what an `object add` line added); by default the first alone.
+  virtual void select_objects(const std::vector<int>& objects) {
+    if (!objects.empty()) select(objects.front());
+  }
   // The object whose material `export glsl` writes when the line names none.
   virtual int selected_object() const { return 0; }
 
@@ -51,6 +56,12 @@ class ScriptHost {
   virtual LineResult memory();
   // A viewport gesture (script.h, MouseAction); nothing without a display.
   virtual LineResult mouse(const MouseAction&) { return LineResult::go_on(); }
+  // `save PATH`: saves the document there and makes it the document's file; the editor's host
+  // goes through its file actions (recent files, the last folder).
+  virtual LineResult save(const SaveAction& action, const std::string& where);
+  // `browse WHAT`: prints where the file panel starts and what it suggests; this default has no
+  // panel and no last folder (file_defaults.h's rules alone).
+  virtual LineResult browse(const BrowseAction& action);
   // The window's layout and keyboard shortcuts (script.h, LayoutAction and KeyAction); without a
   // display these say so on stdout and go on.
   virtual LineResult layout(const LayoutAction& action, const std::string& where);

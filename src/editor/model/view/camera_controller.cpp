@@ -128,6 +128,22 @@ bool screen_bounds(const Camera& camera, int width, int height, const Object& ob
   return true;
 }
 
+Camera frame_camera(const Camera& camera, const glm::vec3& lo, const glm::vec3& hi, float aspect) {
+  const glm::vec3 centre = 0.5f * (lo + hi);
+  const float radius = 0.5f * glm::length(hi - lo);
+  glm::vec3 back = camera.eye - camera.target;
+  const float length = glm::length(back);
+  back = length > 0.0f ? back / length : glm::vec3(0, 0, 1);
+  // Half the narrower field of view: tan(h / 2) = tan(v / 2) x aspect horizontally.
+  const float tan_v = std::tan(glm::radians(0.5f * camera.fov_y));
+  const float half = std::atan(tan_v * std::min(1.0f, std::max(aspect, 1e-3f)));
+  const float distance = radius > 0.0f ? 1.1f * radius / std::sin(half) : length;
+  Camera out = camera;
+  out.target = centre;
+  out.eye = centre + back * std::max(distance, kMinViewDistance);
+  return out;
+}
+
 glm::vec3 rotate_about_y(const glm::vec3& p, const glm::vec3& centre, float degrees) {
   const float a = glm::radians(degrees);
   const float c = std::cos(a), s = std::sin(a);

@@ -64,6 +64,12 @@ glm::vec3 move_in_view_plane(const Camera& camera, int width, int height, const 
 bool screen_bounds(const Camera& camera, int width, int height, const Object& object, glm::vec2& lo,
                    glm::vec2& hi);
 
+// The camera looking at the box lo..hi (world units) from the side it looks from now: the target
+// at the box's centre, the eye back along the view direction until the box's bounding sphere
+// fits the narrower of the two fields of view (aspect: width / height) with 10% to spare. The
+// editor's "frame the selection" (key F).
+Camera frame_camera(const Camera& camera, const glm::vec3& lo, const glm::vec3& hi, float aspect);
+
 // p rotated by degrees about the vertical (+y) axis through centre, counter-clockwise seen from
 // above.
 glm::vec3 rotate_about_y(const glm::vec3& p, const glm::vec3& centre, float degrees);

@@ -5,6 +5,7 @@
 // screenshots, exports and gloss-cli all follow it (display/display_transform.h).
 #include <string>
 
+#include "editor/model/view/gizmo.h"
 #include "editor/model/view/raster_settings.h"
 
 namespace gloss {
@@ -82,6 +83,10 @@ struct ViewSettings {
   // The plot's radius on a logarithmic scale (three decades below the largest value), so a
   // physical reference's bright peak and a Phong lobe of ks <= 1 read in one plot.
   bool lobe_log_radius = false;
+
+  // The transform gizmo over the selected objects (gizmo.h): move, rotate or scale (W, E, R).
+  GizmoMode gizmo = GizmoMode::move;
+  bool show_gizmo = true;
 
   // The pixel inspector: a pixel of the document's render size, read at its centre.
   bool show_inspector = false;

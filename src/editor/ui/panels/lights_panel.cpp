@@ -98,7 +98,7 @@ void draw_lights(Commands& commands, Selection& selection, ViewSettings& view) {
   ImGui::SliderFloat("##orbit-speed", &view.orbit_speed, -180.0f, 180.0f, "%.0f deg/s");
 }
 
-void draw_scene(Commands& commands, const ViewSettings& view, FileBrowser& browser) {
+void draw_scene(Commands& commands, FileBrowser& browser) {
   const Scene& scene = commands.scene();
   Scene edited = scene;
   for (const Field<Scene>& field : scene_fields()) field_widget(field, edited);
@@ -109,12 +109,11 @@ void draw_scene(Commands& commands, const ViewSettings& view, FileBrowser& brows
                                          edited.render)) {
     commands.execute(*render);
   }
-  ImGui::TextDisabled("%zu objects, %zu materials; click an object in the viewport to select it",
-                      scene.objects.size(), scene.materials.size());
-  const std::filesystem::path folder = scene_folder(scene.path, view.screenshot_dir);
-  if (ImGui::Button("Open scene...")) browser.show(BrowsePurpose::open_scene, folder, "");
+  ImGui::TextDisabled("%zu objects, %zu materials: the Outliner lists them", scene.objects.size(),
+                      scene.materials.size());
+  if (ImGui::Button("Open scene...")) browser.start(BrowsePurpose::open_scene, scene.path, "");
   ImGui::SameLine();
-  if (ImGui::Button("Add model...")) browser.show(BrowsePurpose::add_model, folder, "");
+  if (ImGui::Button("Add model...")) browser.start(BrowsePurpose::add_model, scene.path, "");
 }
 
 // The environment light: a shipped map or a file, none; its table's fields (intensity,
@@ -173,7 +172,7 @@ void draw_lights_panel(Commands& commands, Selection& selection, ViewSettings& v
   section_title("Environment");
   draw_environment(commands, view, browser);
   section_title("Scene");
-  draw_scene(commands, view, browser);
+  draw_scene(commands, browser);
   ImGui::PopItemWidth();
   ImGui::End();
 }

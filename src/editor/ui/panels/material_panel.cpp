@@ -11,6 +11,7 @@
 #include "editor/ui/file_browser.h"
 #include "editor/ui/panels/field_widgets.h"
 #include "editor/ui/panels/map_slots.h"
+#include "editor/ui/panels/material_parts.h"
 #include "editor/ui/panels/panel_state.h"
 #include "editor/ui/panels/panel_widgets.h"
 #include "editor/ui/panels/panels.h"
@@ -105,7 +106,7 @@ void draw_library(Commands& commands, const MaterialLibrary& library, int object
 }  // namespace
 
 void draw_material_panel(Commands& commands, Selection& selection, ViewSettings& view,
-                         MaterialPanelState& state, const MaterialLibrary& library,
+                         MaterialPanelState& state, MaterialLibrary& library, FileActions& files,
                          FileBrowser& browser, ImVec2 pos, ImVec2 size) {
   ImGui::SetNextWindowPos(pos);
   ImGui::SetNextWindowSize(size);
@@ -124,22 +125,11 @@ void draw_material_panel(Commands& commands, Selection& selection, ViewSettings&
   }
   selection.object = std::clamp(selection.object, 0, static_cast<int>(scene.objects.size()) - 1);
   const int object = selection.object;
-  const std::string current = object_label(scene, object);
-  if (ImGui::BeginCombo("object", current.c_str())) {
-    for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
-      if (ImGui::Selectable(object_label(scene, i).c_str(), i == object)) selection.object = i;
-    }
-    ImGui::EndCombo();
-  }
+  ImGui::TextDisabled("of %s", object_label(scene, object).c_str());
   const int material_index = scene.objects[object].material;
   // A copy: an executed command replaces the scene's vectors, and this is read afterwards.
   const Material material = scene.materials[material_index];
-  const long users = std::count_if(scene.objects.begin(), scene.objects.end(),
-                                   [&](const Object& o) { return o.material == material_index; });
-  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-  ImGui::TextWrapped("material '%s'%s", scene.material_names[material_index].c_str(),
-                     users > 1 ? " (shared: edits change every object using it)" : "");
-  ImGui::PopStyleColor();
+  draw_material_identity(commands, selection, state, files, browser);
 
   Material edited = material;
   ImGui::PushItemWidth(-label_room(120.0f));  // room for the longest label, "Phong exponent"
@@ -188,6 +178,10 @@ void draw_material_panel(Commands& commands, Selection& selection, ViewSettings&
     ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "swatches: %s", swatches.error().c_str());
   }
   draw_presets(commands, swatches, object, material);
+  section_title("Your library");
+  draw_user_library(commands, selection, library, files);
+  section_title("Scene materials (click: give to the selection)");
+  draw_material_list(commands, selection, state, library);
   draw_model_switch(commands, view);
   draw_library(commands, library, object);
   ImGui::End();

@@ -21,6 +21,23 @@ namespace gloss {
 struct MaterialPanelState {
   bool link_channels = false;  // colour editors move R, G, B together
   MapThumbnails thumbnails;    // the map slots' previews
+  std::string name_field;      // the selected material's name field
+  int name_field_material = -1;
+  int renaming = -1;  // the material being renamed in the list, -1 none
+  std::string rename_text;
+  bool focus_rename = false;
+};
+
+// The Outliner (outliner_panel.cpp): its filter, the name being edited in place, the anchor of
+// Shift+click ranges.
+struct OutlinerState {
+  std::string filter;       // only names holding it are listed (any case)
+  int renaming = -1;        // the object whose name is being edited in the list, -1 none
+  std::string rename_text;  // the name being typed
+  bool focus_rename = false;
+  int anchor = -1;         // the last object clicked without Shift
+  std::string name_field;  // the selected object's name field
+  int name_field_object = -1;
 };
 
 // The Reference panel: a fit in flight on a worker (a fraction of a second; the UI keeps drawing)

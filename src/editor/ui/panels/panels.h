@@ -27,22 +27,31 @@ struct MaterialLibrary;
 struct MaterialPanelState;
 struct Notices;
 struct OpenWindows;
+struct OutlinerState;
 struct QualityState;
 struct ReferencePanelState;
 struct RunState;
 struct Selection;
 struct Session;
 
-// The main menu bar: File, Edit, View, Panels, Help. Items call the same actions as the
+// The main menu bar: File, Edit, Object, View, Panels, Help. Items call the same actions as the
 // shortcuts; Panels changes the layout (collapsed panels, the maximised viewport).
-void draw_menu_bar(Commands& commands, ViewSettings& view, std::optional<Snapshot>& snapshot,
-                   Session& session, FileActions& files, Exports& exports, OpenWindows& windows,
-                   LayoutState& layout);
-// The Material panel: the selected object's material, the presets, the shading model.
-// Loading a map opens the file browser.
+void draw_menu_bar(Commands& commands, Selection& selection, ViewSettings& view,
+                   std::optional<Snapshot>& snapshot, Session& session, FileActions& files,
+                   Exports& exports, OpenWindows& windows, LayoutState& layout);
+// The Material panel: the selected object's material (its name, a copy, saving it), its
+// constants and maps, the presets and the user's library, the scene's materials, the shading
+// model. Loading a map opens the file browser.
 void draw_material_panel(Commands& commands, Selection& selection, ViewSettings& view,
-                         MaterialPanelState& state, const MaterialLibrary& library,
+                         MaterialPanelState& state, MaterialLibrary& library, FileActions& files,
                          FileBrowser& browser, ImVec2 pos, ImVec2 size);
+// The Outliner (outliner_panel.cpp): the scene's objects in a list, adding, duplicating,
+// deleting, hiding, solo, renaming, framing; the selected object's name, material and transform.
+void draw_outliner(Commands& commands, Selection& selection, OutlinerState& state,
+                   FileBrowser& browser, ImVec2 pos, ImVec2 size);
+// Turns the camera to the selected objects and fits them in the view (key F, the Outliner's
+// Frame): one command.
+void frame_selection(Commands& commands, const Selection& selection);
 // The Reference panel: the selected object's material against a physical reference, the
 // material | reference A/B view, Fit Phong / Fit Blinn-Phong (on a worker, applied in one step).
 void draw_reference_panel(Commands& commands, Selection& selection, ViewSettings& view,

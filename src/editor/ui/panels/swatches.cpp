@@ -22,7 +22,7 @@ Scene swatch_scene(const Material& material) {
   light.position = {2.5f, 3.0f, 4.0f};
   scene.lights.push_back(light);
   scene.materials.push_back(material);
-  scene.material_names.push_back(material.preset);
+  scene.material_names.push_back(material.preset.empty() ? "swatch" : material.preset);
   scene.objects.push_back(Object{});
   scene.render.width = Swatches::kSize;
   scene.render.height = Swatches::kSize;
@@ -33,23 +33,25 @@ Scene swatch_scene(const Material& material) {
 
 std::vector<std::vector<unsigned char>> render_swatches() {
   std::vector<std::vector<unsigned char>> out;
-  RenderOptions options;
-  options.terms = false;
-  for (const Preset& preset : preset_table()) {
-    const TermImages images = render(swatch_scene(preset.material), options);
-    std::vector<unsigned char> rgb;
-    rgb.reserve(images.total.pixels.size() * 3);
-    for (const glm::vec3& p : images.total.pixels) {
-      rgb.push_back(encode_channel(p.x, false));
-      rgb.push_back(encode_channel(p.y, false));
-      rgb.push_back(encode_channel(p.z, false));
-    }
-    out.push_back(std::move(rgb));
-  }
+  for (const Preset& preset : preset_table()) out.push_back(render_swatch(preset.material));
   return out;
 }
 
 }  // namespace
+
+std::vector<unsigned char> render_swatch(const Material& material) {
+  RenderOptions options;
+  options.terms = false;
+  const TermImages images = render(swatch_scene(material), options);
+  std::vector<unsigned char> rgb;
+  rgb.reserve(images.total.pixels.size() * 3);
+  for (const glm::vec3& p : images.total.pixels) {
+    rgb.push_back(encode_channel(p.x, false));
+    rgb.push_back(encode_channel(p.y, false));
+    rgb.push_back(encode_channel(p.z, false));
+  }
+  return rgb;
+}
 
 void Swatches::start() {
   m_job = std::async(std::launch::async, render_swatches);

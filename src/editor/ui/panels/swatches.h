@@ -8,6 +8,12 @@
 
 namespace gloss {
 
+struct Material;
+
+// One swatch, kSize x kSize 8-bit RGB (rows top first): a unit sphere of material lit from the
+// upper right on a dark grey background, by the core renderer (the calling thread and oneTBB's).
+std::vector<unsigned char> render_swatch(const Material& material);
+
 class Swatches {
  public:
   static constexpr int kSize = 48;  // pixels per side

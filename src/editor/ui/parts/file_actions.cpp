@@ -6,19 +6,19 @@
 #include <algorithm>
 #include <limits>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include "base/error.h"
 #include "editor/model/document/document.h"
+#include "editor/model/document/new_objects.h"
 #include "editor/model/export/glsl_export.h"
 #include "editor/model/export/gltf_file.h"
+#include "editor/model/session/file_defaults.h"
+#include "editor/model/session/material_library_folder.h"
 #include "editor/ui/parts/commands.h"
 #include "editor/ui/parts/material_library.h"
 #include "editor/ui/parts/open_windows.h"
 #include "editor/ui/parts/run_state.h"
 #include "editor/ui/parts/selection.h"
 #include "editor/ui/parts/session.h"
-#include "io/model/model_loader.h"
 #include "io/scene/material_maps.h"
 #include "io/scene/scene_loader.h"
 
@@ -31,12 +31,6 @@ bool has_extension(const std::string& path, const char* extension) {
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext == extension;
-}
-
-std::string unique_material_name(const Scene& scene, const std::string& wanted) {
-  std::string name = wanted.empty() ? std::string("material") : wanted;
-  for (int n = 2; find_material(scene, name) >= 0; ++n) name = wanted + "_" + std::to_string(n);
-  return name;
 }
 
 }  // namespace
@@ -53,74 +47,53 @@ void FileActions::remember_recent(RecentKind kind, const std::string& path) {
 void FileActions::open_scene(const std::string& requested) {
   const std::string path = requested;  // may refer into the recent list, which changes below
   std::vector<std::string> warnings;
-  auto scene = std::make_shared<Scene>(load_scene(path, &warnings));
+  open_loaded(std::make_shared<Scene>(load_scene(path, &warnings)), path, warnings);
+}
+
+void FileActions::open_loaded(std::shared_ptr<const Scene> scene, const std::string& path,
+                              const std::vector<std::string>& warnings) {
   // Undoing the open gives back the earlier document with its own saved/unsaved state.
-  m_document.open_document(scene, "open " + std::filesystem::path(path).filename().string());
-  m_selection.object = 0;
+  m_document.open_document(std::move(scene),
+                           "open " + std::filesystem::path(path).filename().string());
+  select_only(m_selection, 0);
   m_selection.light = 0;
   remember_recent(RecentKind::scene, path);
   for (const std::string& w : warnings) m_commands.info("warning: " + w);
   m_commands.info("opened " + path);
 }
 
-void FileActions::request_open_scene(const std::string& path) {
+void FileActions::request_open_scene(const std::string& requested) {
+  const std::string path = requested;
+  // Read before asking: a file that does not read is refused here, with the edits untouched
+  // and no question about them.
+  std::vector<std::string> warnings;
+  auto scene = std::make_shared<Scene>(load_scene(path, &warnings));
   // Scripts answer no questions; they replace the document as they say.
-  if (m_session.unsaved.request_open(path, m_document.dirty() && !m_run.script)) open_scene(path);
+  if (m_session.unsaved.request_open(path, m_document.dirty() && !m_run.script)) {
+    open_loaded(scene, path, warnings);
+    return;
+  }
+  m_session.pending_open = scene;
+  m_session.pending_warnings = warnings;
 }
 
 void FileActions::add_model(const std::string& path) {
-  const Model model = load_model(path);
-  // Fit the model into a 2-unit box centred on the camera target.
-  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-  for (const ModelPart& part : model.parts) {
-    glm::vec3 a, b;
-    if (!mesh_bounds(part.mesh, a, b)) continue;
-    lo = glm::min(lo, a);
-    hi = glm::max(hi, b);
-  }
-  if (!(lo.x <= hi.x)) throw InputError(path, "the model has no vertices");
-  const glm::vec3 extent = hi - lo;
-  const float size = std::max(extent.x, std::max(extent.y, extent.z));
-  const float scale = size > 0.0f ? 2.0f / size : 1.0f;
-
-  auto scene = std::make_shared<Scene>(m_document.scene());
-  const glm::vec3 position = scene->camera.target - (lo + hi) * 0.5f * scale;
-  // The scene loader's order: scale, then rotate_y (0 here), then translate.
-  const glm::mat4 transform =
-      glm::scale(glm::translate(glm::mat4(1.0f), position), glm::vec3(scale));
-  const std::string absolute = std::filesystem::absolute(path).lexically_normal().string();
-  const std::string stem = std::filesystem::path(path).stem().string();
-  for (const ModelPart& part : model.parts) {
-    Material material;
-    std::string material_name = part.material_name.empty() ? stem : part.material_name;
-    for (std::size_t i = 0; i < model.material_names.size(); ++i) {
-      if (model.material_names[i] == part.material_name) material = model.materials[i];
-    }
-    scene->materials.push_back(material);
-    scene->material_names.push_back(unique_material_name(*scene, material_name));
-    Object object;
-    object.name = stem + (part.material_name.empty() ? "" : ":" + part.material_name);
-    object.type = ObjectType::mesh;
-    object.material = static_cast<int>(scene->materials.size()) - 1;
-    object.params.file = absolute;
-    object.params.group = part.material_name;
-    object.params.position = position;
-    object.params.scale = glm::vec3(scale);
-    object.params.smooth = true;
-    Mesh mesh = part.mesh;
-    transform_mesh(mesh, transform);
-    object.mesh = std::make_shared<const Mesh>(std::move(mesh));
-    scene->objects.push_back(std::move(object));
-  }
+  // Scaled to the scene, set down on the surface below, beside the objects there (new_objects.h).
+  std::vector<std::string> warnings, notes;
+  const AddObjects add = model_objects(m_document.scene(), path, &warnings, &notes);
   const int first_new = static_cast<int>(m_document.scene().objects.size());
-  m_document.execute(ReplaceScene{scene, "add " + std::filesystem::path(path).filename().string()});
+  m_document.execute(add);
   m_document.seal();
-  m_selection.object = first_new;
+  std::vector<int> added;
+  for (int i = first_new; i < static_cast<int>(m_document.scene().objects.size()); ++i) {
+    added.push_back(i);
+  }
+  select_all_of(m_selection, added);
   remember_recent(RecentKind::model, path);
-  for (const std::string& w : model.warnings) m_commands.info("warning: " + w);
+  for (const std::string& w : warnings) m_commands.info("warning: " + w);
   // glTF materials read as the fitted Phong (or assimp's rule), with both errors.
-  for (const std::string& n : model.notes) m_commands.info(n);
-  m_commands.info("added " + std::to_string(model.parts.size()) + " object(s) from " + path);
+  for (const std::string& n : notes) m_commands.info(n);
+  m_commands.info("added " + std::to_string(add.objects.size()) + " object(s) from " + path);
 }
 
 void FileActions::save_scene_as(const std::string& requested) {
@@ -159,6 +132,37 @@ void FileActions::save_materials(const std::string& path) {
     save_materials_json(path, materials);
   }
   m_commands.info("saved " + std::to_string(materials.size()) + " material(s) to " + path);
+}
+
+void FileActions::save_selected_material(const std::string& path) {
+  const Scene& scene = m_document.scene();
+  if (scene.objects.empty()) throw std::runtime_error("the scene has no object to take it from");
+  const int i = std::clamp(m_selection.object, 0, static_cast<int>(scene.objects.size()) - 1);
+  const int m = scene.objects[static_cast<std::size_t>(i)].material;
+  const std::vector<NamedMaterial> one = {{scene.material_names.at(m), scene.materials.at(m)}};
+  if (has_extension(path, ".mtl")) {
+    save_mtl(path, one);
+  } else {
+    save_materials_json(path, one);
+  }
+  m_commands.info("saved material '" + one[0].first + "' to " + path);
+}
+
+void FileActions::save_to_library() {
+  const Scene& scene = m_document.scene();
+  if (scene.objects.empty()) return;
+  const int i = std::clamp(m_selection.object, 0, static_cast<int>(scene.objects.size()) - 1);
+  const int m = scene.objects[static_cast<std::size_t>(i)].material;
+  const std::string name = scene.material_names.at(m);
+  const std::string path = gloss::save_to_library(m_library.folder, name, scene.materials.at(m));
+  reload_library();
+  m_commands.info("saved '" + name + "' to your library: " + path);
+}
+
+void FileActions::reload_library() {
+  std::vector<std::string> errors;
+  m_library.user = read_library(m_library.folder, &errors);
+  for (const std::string& e : errors) m_commands.error("library: " + e);
 }
 
 void FileActions::export_glsl_shader(const std::string& path) {
@@ -214,6 +218,9 @@ void FileActions::browser_action(const std::string& path) {
       case BrowsePurpose::save_materials:
         save_materials(path);
         break;
+      case BrowsePurpose::save_material:
+        save_selected_material(path);
+        break;
       case BrowsePurpose::export_glsl:
         export_glsl_shader(path);
         break;
@@ -231,6 +238,7 @@ void FileActions::browser_action(const std::string& path) {
         break;
     }
     browser.open = false;
+    save_last_folder(m_session.config_folder, browser.last_folder);
   } catch (const std::exception& e) {
     // The action failed before touching the document; the panel stays open with the reason.
     browser.error = e.what();
@@ -242,7 +250,7 @@ void FileActions::recover() {
   if (!m_session.offered_recovery) return;
   const Recovery& r = *m_session.offered_recovery;
   m_document.reset(r.scene, false);
-  m_selection.object = std::max(0, r.selected_object);
+  select_only(m_selection, std::max(0, r.selected_object));
   m_commands.info("recovered the autosaved session");
   m_session.offered_recovery.reset();
 }

@@ -4,7 +4,9 @@
 // recovering a crashed session, quitting. Unlike panels these replace or re-file the whole
 // document, so they hold the command layer itself. Each throws InputError / RuntimeFailure with
 // a message for the UI; on failure the document is unchanged.
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "editor/model/document/command_layer.h"
 #include "editor/model/session/recent_files.h"
@@ -33,11 +35,20 @@ class FileActions {
   void open_scene(const std::string& path);
   // Opens path, first asking save / discard / cancel when the document has unsaved changes (the
   // question is a modal; scripts never ask). Throws as open_scene when it opens at once.
+  // The file is read first: one that cannot be read is refused (an InputError) before anything
+  // is asked, and the scene read is the one opened.
   void request_open_scene(const std::string& path);
   void add_model(const std::string& path);
   void save_scene_as(const std::string& path);
   void load_materials(const std::string& path);
+  // Every material of the scene, or the selected object's alone (issue 24: "save the selected
+  // material, not every material").
   void save_materials(const std::string& path);
+  void save_selected_material(const std::string& path);
+  // Saves the selected object's material into the user's library folder
+  // (material_library_folder.h) and reads the library again.
+  void save_to_library();
+  void reload_library();
   // Writes the selected object's material as a GLSL fragment shader
   // (editor/model/export/glsl_export.h).
   void export_glsl_shader(const std::string& path);
@@ -52,6 +63,9 @@ class FileActions {
   // Replaces the document with the offered recovery (session.offered_recovery), or declines it.
   void recover();
   void discard_recovery();
+  // Opens a scene already read (request_open_scene's, or the one that waited for the question).
+  void open_loaded(std::shared_ptr<const Scene> scene, const std::string& path,
+                   const std::vector<std::string>& warnings);
   // Quits, first asking about unsaved changes (OpenWindows::quit_question; scripts never ask).
   void request_quit();
 

@@ -124,6 +124,11 @@ void Viewport::upload_frames(double now_s) {
   (void)now_s;
 }
 
+void Viewport::forget_edits() {
+  m_cadence.forget_pending();
+  m_edit_tags.clear();
+}
+
 void Viewport::frame_shown(double now_s) {
   if (!m_show_pending) return;
   m_show_pending = false;
@@ -138,7 +143,12 @@ void Viewport::frame_shown(double now_s) {
       }
     }
   }
-  while (!m_edit_tags.empty() && m_edit_tags.front().generation <= d.generation) {
+  // Older edits are done with; the image's own edit keeps its tag until its full-size image
+  // (a preview shown first used to drop it, and with it a drag's delay whenever the ray tracer
+  // was slow enough to show previews: Automatic then never timed the ray tracer's drags).
+  while (!m_edit_tags.empty() &&
+         (m_edit_tags.front().generation < d.generation ||
+          (m_edit_tags.front().generation == d.generation && d.full_ms >= 0.0))) {
     m_edit_tags.pop_front();
   }
 }
@@ -234,6 +244,7 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
         m_a = make_cpu_renderer(terms);
         m_automatic.ray_tracer_restarted();
         m_last_generation_a = 0;
+        forget_edits();  // a new renderer counts its generations from 1 again
       } else {
         m_a->set_terms(terms);  // no work when unchanged; also a view switched while paused
       }
@@ -249,6 +260,7 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
       if (!m_reference) {
         m_reference = make_reference_preview();
         m_last_generation_b = 0;
+        forget_edits();
       }
       pushed_generation_b = m_reference->set_scene(pair.b);
       b_changed = pushed_generation_b != m_last_generation_b;
@@ -258,6 +270,7 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
       if (!m_b) {
         m_b = make_cpu_renderer(false);
         m_last_generation_b = 0;
+        forget_edits();
       }
       pushed_generation_b = m_b->set_scene(pair.b);
       b_changed = pushed_generation_b != m_last_generation_b;
@@ -304,26 +317,21 @@ void Viewport::sync(const Scene& document, std::uint64_t revision, const ViewSet
     // Generations count per renderer, so a switch of side forgets the other side's edits.
     const bool watch_b = b_changed && !a_changed;
     if (watch_b != m_watch_b) {
-      m_cadence.forget_pending();
-      m_edit_tags.clear();
-      m_edit_generation = 0;
+      forget_edits();
       m_watch_b = watch_b;
     }
     // An edit that changed no ray-traced side (a raster side shows it below; a name changes no
     // image) is not waited for: a later, unrelated frame would read as its delay.
     const bool raster_side = sides.a.raster || (ab && sides.b.raster);
     if (a_changed || b_changed || raster_side) {
-      if (m_watch_b) {
-        m_edit_generation = pushed_generation_b;
-      } else if (pushed_generation > 0) {
-        m_edit_generation = pushed_generation;
-      }
-      m_cadence.edit(m_edit_generation, now_s);
-      if (m_edit_tags.empty() || m_edit_tags.back().generation < m_edit_generation) {
-        m_edit_tags.push_back({m_edit_generation, moving_gesture(now_s), m_setup});
+      // The watched side's newest generation (on a raster-drawn edit, A's last one).
+      const std::uint64_t generation = m_watch_b ? m_last_generation_b : m_last_generation_a;
+      m_cadence.edit(generation, now_s);
+      if (m_edit_tags.empty() || m_edit_tags.back().generation < generation) {
+        m_edit_tags.push_back({generation, moving_gesture(now_s), m_setup});
         if (m_edit_tags.size() > 4096) m_edit_tags.pop_front();  // frames that never come
       } else {
-        m_edit_tags.back() = {m_edit_generation, moving_gesture(now_s), m_setup};
+        m_edit_tags.back() = {generation, moving_gesture(now_s), m_setup};
       }
     }
   }

@@ -15,15 +15,16 @@
 #include "editor/gl/gl_texture.h"
 #include "editor/gl/raster_renderer.h"
 #include "editor/gl/render_target.h"
+#include "editor/model/layout/pane_layout.h"
 #include "editor/model/measure/exposure_histogram.h"
 #include "editor/model/measure/image_cadence.h"
 #include "editor/model/view/ab_compare.h"
 #include "editor/model/view/albedo_curves.h"
 #include "editor/model/view/automatic_choice.h"
 #include "editor/model/view/camera_controller.h"
-#include "editor/model/layout/pane_layout.h"
 #include "editor/model/view/reference_preview.h"
 #include "editor/model/view/view_settings.h"
+#include "editor/ui/viewport/gizmo.h"
 #include "engine/progressive_renderer.h"
 
 namespace gloss {
@@ -148,14 +149,16 @@ class Viewport {
                               bool exact = false);
 
  private:
+  // Drops the edits waiting for an image (the image cadence's and the drag tags): their frames
+  // would come from a renderer whose generations no longer compare (a new one, or the other side).
+  void forget_edits();
   // viewport_input.cpp: gestures, light markers, picking.
   void handle_input(Commands& commands, ViewSettings& view, Selection& selection,
                     const InputState& input, double now_s);
   void draw_light_markers(const Scene& scene, const Selection& selection, ImDrawList* list) const;
   // viewport_gizmos.cpp: directional and spot lights' arrows, cones and aim handles; the
   // environment turned by Ctrl+drag.
-  void draw_light_gizmos(const Scene& scene, const ViewSettings& view, const Selection& selection,
-                         ImDrawList* list) const;
+  void draw_light_gizmos(const Scene& scene, const Selection& selection, ImDrawList* list) const;
   int aim_handle_at(const Scene& scene, ImVec2 press) const;  // light index or -1
   void drag_aim_handle(Commands& commands, ImVec2 mouse) const;
   void turn_environment(Commands& commands, float dx_px) const;
@@ -288,7 +291,6 @@ class Viewport {
     DragSetup setup;
   };
   std::deque<EditTag> m_edit_tags;
-  std::uint64_t m_edit_generation = 0;  // the cadence's generation of the newest edit
   bool m_watch_b = false;  // the newest edit changed the B side alone (A/B snapshot | live)
   LobeViewState m_lobe;    // the lobe view's (lobe_view.cpp)
 
@@ -308,6 +310,7 @@ class Viewport {
   ExposureHistogram m_histogram;
 
   // Gesture state (viewport_input.cpp).
+  ViewportGizmo m_gizmo;            // the selection's transform gizmo and its drag (gizmo.h)
   int m_drag_button = -1;           // ImGuiMouseButton being dragged in the viewport, -1 none
   int m_drag_light = -1;            // light being dragged, -1 none
   bool m_drag_off_view = false;     // ... by its off-view arrow: brought to the target's depth

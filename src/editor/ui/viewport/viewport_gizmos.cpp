@@ -27,15 +27,15 @@ ImU32 light_colour(const Light& light, float alpha) {
 
 }  // namespace
 
-void Viewport::draw_light_gizmos(const Scene& scene, const ViewSettings& view,
-                                 const Selection& selection, ImDrawList* list) const {
+void Viewport::draw_light_gizmos(const Scene& scene, const Selection& selection,
+                                 ImDrawList* list) const {
+  const Camera camera = pane_camera(scene);
   for (int p = 0; p < m_pane_count; ++p) {
-    if (view.mode == ViewMode::ab && p == 3) continue;  // the A/B legend
     const Pane& pane = m_panes[p];
     const int w = static_cast<int>(pane.size.x), h = static_cast<int>(pane.size.y);
     auto screen = [&](const glm::vec3& world, ImVec2& out) {
       glm::vec2 px;
-      if (!project_point(scene.camera, w, h, world, px)) return false;
+      if (!project_point(camera, w, h, world, px)) return false;
       out = ImVec2(pane.min.x + px.x, pane.min.y + px.y);
       return true;
     };
@@ -107,11 +107,13 @@ void Viewport::draw_light_gizmos(const Scene& scene, const ViewSettings& view,
 }
 
 int Viewport::aim_handle_at(const Scene& scene, ImVec2 press) const {
+  if (m_drag_pane < 0) return -1;
   const Pane& pane = m_panes[m_drag_pane];
+  const Camera camera = pane_camera(scene);
   for (int i = static_cast<int>(scene.lights.size()) - 1; i >= 0; --i) {
     const LightGizmo g = light_gizmo(scene.lights[i], scene.camera);
     glm::vec2 px;
-    if (!g.aimed || !project_point(scene.camera, static_cast<int>(pane.size.x),
+    if (!g.aimed || !project_point(camera, static_cast<int>(pane.size.x),
                                    static_cast<int>(pane.size.y), g.handle, px)) {
       continue;
     }
@@ -124,12 +126,12 @@ int Viewport::aim_handle_at(const Scene& scene, ImVec2 press) const {
 void Viewport::drag_aim_handle(Commands& commands, ImVec2 mouse) const {
   const Scene& scene = commands.scene();
   if (m_drag_aim < 0 || m_drag_aim >= static_cast<int>(scene.lights.size())) return;
-  const Pane& pane = m_panes[m_drag_pane];
+  const Pane& pane = m_panes[std::max(m_drag_pane, 0)];
   const Light& light = scene.lights[m_drag_aim];
   const LightGizmo g = light_gizmo(light, scene.camera);
-  const glm::vec3 p =
-      point_at_depth(scene.camera, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
-                     glm::vec2(mouse.x - pane.min.x, mouse.y - pane.min.y), g.handle);
+  const glm::vec3 p = point_at_depth(
+      pane_camera(scene), static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
+      glm::vec2(mouse.x - pane.min.x, mouse.y - pane.min.y), g.handle);
   commands.execute(SetField{FieldPart::light, m_drag_aim, "direction",
                             vec3_value(direction_for_handle(light, scene.camera, p))});
 }

@@ -114,7 +114,7 @@ void Viewport::draw_inspected_pixel(const ViewSettings& view, const RenderSettin
 
 bool Viewport::moving_gesture(double now_s) const {
   if (m_drag_button < 0) return gesture_active(now_s);  // a recent wheel zoom
-  return m_drag_light >= 0 || m_drag_aim >= 0 || m_drag_environment ||
+  return m_drag_light >= 0 || m_drag_aim >= 0 || m_drag_environment || m_gizmo.dragging() ||
          (m_drag_distance > kClickSlop && !m_marker_pressed);
 }
 
@@ -170,8 +170,10 @@ void Viewport::draw(Commands& commands, ViewSettings& view, Selection& selection
   ImDrawList* list = ImGui::GetWindowDrawList();
   draw_labels(view, list);
   if (view.mode == ViewMode::ab) draw_legend(view, list, m_legend);
-  draw_light_gizmos(commands.scene(), view, selection, list);
+  draw_light_gizmos(commands.scene(), selection, list);
   draw_light_markers(commands.scene(), selection, list);
+  m_gizmo.draw(commands.scene(), pane_camera(commands.scene()), selection, view, m_panes[0].min,
+               m_panes[0].size, ImGui::GetIO().MousePos, list);
   draw_inspected_pixel(view, commands.scene().render, list);
   if (!m_frame_a) {
     const char* text = "rendering the first frame ...";
@@ -188,26 +190,33 @@ void Viewport::draw_light_markers(const Scene& scene, const Selection& selection
     const Pane& pane = m_panes[p];
     const int w = static_cast<int>(pane.size.x), h = static_cast<int>(pane.size.y);
     list->PushClipRect(pane.min, ImVec2(pane.min.x + pane.size.x, pane.min.y + pane.size.y), true);
-    // The selected object: corner brackets around its projected bounds, and its name.
-    const int object = selection.object;
-    glm::vec2 lo, hi;
-    if (object >= 0 && object < static_cast<int>(scene.objects.size()) &&
-        screen_bounds(pane_camera(scene), w, h, scene.objects[object], lo, hi)) {
+    // The selected objects: corner brackets around their projected bounds (the primary's in
+    // yellow, with its name), dashed for a hidden one.
+    const Camera camera = pane_camera(scene);
+    for (int object : selected_objects(selection, static_cast<int>(scene.objects.size()))) {
+      glm::vec2 lo, hi;
+      if (!screen_bounds(camera, w, h, scene.objects[object], lo, hi)) continue;
+      const bool primary = object == selection.object;
       const ImVec2 a(pane.min.x + lo.x - 3.0f, pane.min.y + lo.y - 3.0f);
       const ImVec2 b(pane.min.x + hi.x + 3.0f, pane.min.y + hi.y + 3.0f);
       const float arm = std::min(14.0f, 0.3f * std::min(b.x - a.x, b.y - a.y));
-      const ImU32 colour = IM_COL32(255, 200, 40, 230);
+      const ImU32 colour = primary ? IM_COL32(255, 200, 40, 230) : IM_COL32(255, 140, 40, 200);
+      const float thick = scene.objects[object].hidden ? 1.0f : 2.0f;
       const ImVec2 corners[4] = {a, ImVec2(b.x, a.y), b, ImVec2(a.x, b.y)};
       for (int c = 0; c < 4; ++c) {
         const float sx = (c == 1 || c == 2) ? -1.0f : 1.0f;
         const float sy = c >= 2 ? -1.0f : 1.0f;
         const ImVec2 k = corners[c];
-        list->AddLine(k, ImVec2(k.x + sx * arm, k.y), colour, 2.0f);
-        list->AddLine(k, ImVec2(k.x, k.y + sy * arm), colour, 2.0f);
+        list->AddLine(k, ImVec2(k.x + sx * arm, k.y), colour, thick);
+        list->AddLine(k, ImVec2(k.x, k.y + sy * arm), colour, thick);
       }
-      if (p == 0) {
-        list->AddText(ImVec2(a.x, std::max(a.y - 16.0f, pane.min.y + 20.0f)), colour,
-                      object_label(scene, object).c_str());
+      if (p == 0 && primary) {
+        // Inside the pane where the object's box reaches past its left or right edge.
+        const std::string label = object_label(scene, object);
+        const float width = ImGui::CalcTextSize(label.c_str()).x;
+        const float x =
+            std::max(std::min(a.x, pane.min.x + pane.size.x - width - 2.0f), pane.min.x + 2.0f);
+        list->AddText(ImVec2(x, std::max(a.y - 16.0f, pane.min.y + 20.0f)), colour, label.c_str());
       }
     }
     for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i) {
@@ -271,10 +280,18 @@ void Viewport::handle_input(Commands& commands, ViewSettings& view, Selection& s
     m_drag_light = -1;
     m_drag_aim = -1;
     m_marker_pressed = false;
-    m_drag_environment =
-        m_drag_button == ImGuiMouseButton_Left && io.KeyCtrl && scene.environment.present();
-    if (m_drag_button == ImGuiMouseButton_Left && !io.KeyShift && !m_drag_environment &&
-        m_drag_pane >= 0) {
+    m_drag_environment = false;
+    // The selection's gizmo takes a press on its handles first (gizmo.h); then Ctrl+drag turns
+    // the environment; then the lights' handles and markers.
+    if (m_drag_button == ImGuiMouseButton_Left && !io.KeyShift && m_drag_pane == 0 &&
+        view.mode != ViewMode::lobe &&
+        m_gizmo.press(scene, pane_camera(scene), selection, view, m_panes[0].min, m_panes[0].size,
+                      press)) {
+      m_marker_pressed = true;  // no orbit, no pick
+    } else if (m_drag_button == ImGuiMouseButton_Left && io.KeyCtrl &&
+               scene.environment.present()) {
+      m_drag_environment = true;
+    } else if (m_drag_button == ImGuiMouseButton_Left && !io.KeyShift && m_drag_pane >= 0) {
       const Pane& pane = m_panes[m_drag_pane];
       m_drag_aim = aim_handle_at(scene, press);
       if (m_drag_aim >= 0) {
@@ -306,7 +323,9 @@ void Viewport::handle_input(Commands& commands, ViewSettings& view, Selection& s
                                                            io.MousePos.y - m_drag_press.y));
     const Pane& pane = m_panes[std::max(m_drag_pane, 0)];
     const bool pan = m_drag_button != ImGuiMouseButton_Left || io.KeyShift;
-    if (m_drag_environment) {
+    if (m_gizmo.dragging()) {
+      m_gizmo.drag(commands, io.KeyCtrl, io.MousePos);
+    } else if (m_drag_environment) {
       m_marker_pressed = true;  // no pick at the release
       turn_environment(commands, d.x);
     } else if (m_drag_aim >= 0) {
@@ -354,12 +373,13 @@ void Viewport::handle_input(Commands& commands, ViewSettings& view, Selection& s
       const int hit =
           pick_object(seen, static_cast<int>(pane.size.x), static_cast<int>(pane.size.y),
                       io.MousePos.x - pane.min.x, io.MousePos.y - pane.min.y);
-      if (hit >= 0) selection.object = hit;
+      if (hit >= 0) select_only(selection, hit);
     }
     m_drag_button = -1;
     m_drag_light = -1;
     m_drag_aim = -1;
     m_drag_environment = false;
+    m_gizmo.release();
   }
 
   if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
