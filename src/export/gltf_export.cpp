@@ -17,7 +17,7 @@
 #include "base/error.h"
 #include "base/version.h"
 #include "export/gltf_buffer.h"
-#include "io/scene/material_maps.h"
+#include "export/map_export.h"
 
 namespace gloss {
 
@@ -75,32 +75,19 @@ struct Writer {
 
   // The texture for a map; -1 (with a notice) when it cannot be carried.
   int texture(const TextureMap& map, const std::string& material, MapSlot slot) {
-    const std::string what = "material '" + material + "': " + to_string(slot) + " map ";
-    if (map.file.find('#') != std::string::npos) {
-      result.notices.push_back(what + "not carried: it is a model's own map (" + map.file + ")");
+    const MapImage image_file = map_image(scene, map, path);
+    if (!image_file.problem.empty()) {
+      result.notices.push_back("material '" + material + "': " + to_string(slot) +
+                               " map not carried: " + image_file.problem);
       return -1;
-    }
-    const std::string base_dir = fs::path(scene.path).parent_path().string();
-    const std::string file = resolve_map_path(map.file, base_dir);
-    const std::string ext = lower(fs::path(file).extension().string());
-    const char* mime = ext == ".png"                       ? "image/png"
-                       : (ext == ".jpg" || ext == ".jpeg") ? "image/jpeg"
-                                                           : nullptr;
-    if (mime == nullptr) {
-      result.notices.push_back(what + "not carried: glTF images are PNG or JPEG (" + map.file +
-                               ")");
-      return -1;
-    }
-    if (!plain_settings(map)) {
-      result.notices.push_back(what + "carried without its scale, rotation and offset");
     }
     json image;
     if (binary) {
-      const std::string bytes = read_text_file(file);
-      image = {{"bufferView", buffer.add_view(bytes.data(), bytes.size(), 0)}, {"mimeType", mime}};
+      const std::string bytes = read_text_file(image_file.file);
+      image = {{"bufferView", buffer.add_view(bytes.data(), bytes.size(), 0)},
+               {"mimeType", image_file.mime}};
     } else {
-      const fs::path out_dir = fs::absolute(fs::path(path)).parent_path();
-      image = {{"uri", fs::relative(fs::absolute(file), out_dir).generic_string()}};
+      image = {{"uri", image_file.uri}};
     }
     doc["images"].push_back(image);
     doc["samplers"].push_back({{"wrapS", wrap_mode(map.wrap[0])},
@@ -110,6 +97,23 @@ struct Writer {
     doc["textures"].push_back(
         {{"source", doc["images"].size() - 1}, {"sampler", doc["samplers"].size() - 1}});
     return static_cast<int>(doc["textures"].size()) - 1;
+  }
+
+  // A textureInfo for map's texture t, with KHR_texture_transform when the map is scaled,
+  // turned or moved.
+  json texture_info(const TextureMap& map, int t) {
+    json info = {{"index", t}, {"texCoord", map.uv_set}};
+    if (map.scale == glm::vec2(1.0f) && map.rotation == 0.0f && map.offset == glm::vec2(0.0f)) {
+      return info;
+    }
+    const GltfTextureTransform transform = gltf_texture_transform(map);
+    info["extensions"]["KHR_texture_transform"] = {
+        {"offset", {transform.offset.x, transform.offset.y}},
+        {"rotation", transform.rotation},
+        {"scale", {transform.scale.x, transform.scale.y}},
+        {"texCoord", map.uv_set}};
+    used_extension("KHR_texture_transform");
+    return info;
   }
 
   json material(std::size_t index) {
@@ -148,7 +152,7 @@ struct Writer {
       }
       const int t = texture(map, c.name, slot);
       if (t < 0) continue;
-      json info = {{"index", t}, {"texCoord", map.uv_set}};
+      json info = texture_info(map, t);
       if (slot == MapSlot::normal) info["scale"] = m.normal_scale;
       if (slot == MapSlot::diffuse) {
         out["pbrMetallicRoughness"][key] = info;

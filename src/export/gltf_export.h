@@ -4,7 +4,8 @@
 // as the metallic-roughness material fitted to its lobe (export/material_conversion.h), with the
 // exact Phong constants in the material's `extras.gloss`, which gloss's model reader takes
 // back exactly (io/model). Diffuse, normal and emission maps become the base colour, normal and
-// emissive textures.
+// emissive textures, a scaled, turned or moved map with KHR_texture_transform
+// (export/map_export.h).
 //
 // Written by hand with nlohmann-json, not through assimp's exporter: assimp's glTF 2.0 exporter
 // writes neither KHR_lights_punctual nor material extras, which carry the lights and the exact

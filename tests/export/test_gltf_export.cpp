@@ -173,6 +173,66 @@ TEST_F(GltfExport, LightIntensitiesAndMaterialByHand) {
   EXPECT_EQ(doc["buffers"][0]["uri"], "out.bin");
 }
 
+// A scaled, turned and moved diffuse map and a normal map: KHR_texture_transform worked by hand
+// (scale (2, 3), 30 degrees, offset (0.25, -0.5) on meshes carrying (u, 1 - v): offset
+// (0.25 - 3 sin 30, 1 + 0.5 - 3 cos 30) = (-1.25, -1.0980762)), declared in extensionsUsed, and
+// gloss reading the file back (through assimp's transform) with the same map coordinates.
+TEST_F(GltfExport, MapTransformsRoundTrip) {
+  TextureMap& diffuse = scene.materials[0].map(MapSlot::diffuse);
+  diffuse.scale = {2.0f, 3.0f};
+  diffuse.rotation = 30.0f;
+  diffuse.offset = {0.25f, -0.5f};
+  diffuse.wrap = {Wrap::mirror, Wrap::clamp};
+  TextureMap normal = diffuse;
+  normal.scale = glm::vec2(1.0f);
+  normal.rotation = 0.0f;
+  normal.offset = glm::vec2(0.0f);
+  normal.wrap = {Wrap::repeat, Wrap::repeat};
+  scene.materials[0].map(MapSlot::normal) = normal;
+  scene.materials[0].normal_scale = 0.5f;
+  for (const char* name : {"maps.gltf", "maps.glb"}) {
+    SCOPED_TRACE(name);
+    const std::string path = folder.file(name);
+    export_gltf(scene, conversions, path);
+    if (std::string(name) == "maps.gltf") {
+      const nlohmann::json doc = read_json(path);
+      const nlohmann::json& used = doc["extensionsUsed"];
+      EXPECT_NE(std::find(used.begin(), used.end(), "KHR_texture_transform"), used.end());
+      const nlohmann::json& material = doc["materials"][0];
+      const nlohmann::json& base = material["pbrMetallicRoughness"]["baseColorTexture"];
+      const nlohmann::json& t = base["extensions"]["KHR_texture_transform"];
+      EXPECT_NEAR(t["offset"][0].get<double>(), -1.25, 1e-6);
+      EXPECT_NEAR(t["offset"][1].get<double>(), -1.0980762, 1e-6);
+      EXPECT_NEAR(t["rotation"].get<double>(), kPi / 6.0, 1e-6);
+      EXPECT_EQ(t["scale"], nlohmann::json::array({2.0, 3.0}));
+      EXPECT_EQ(t["texCoord"], 0);
+      const nlohmann::json& sampler = doc["samplers"][base["index"].get<int>()];
+      EXPECT_EQ(sampler["wrapS"], 33648);  // MIRRORED_REPEAT
+      EXPECT_EQ(sampler["wrapT"], 33071);  // CLAMP_TO_EDGE
+      // The plain normal map has no transform, and its scale.
+      EXPECT_FALSE(material["normalTexture"].contains("extensions"));
+      EXPECT_EQ(material["normalTexture"]["scale"], 0.5);
+    }
+    const Model model = load_model(path);
+    const auto at = std::find(model.material_names.begin(), model.material_names.end(),
+                              scene.material_names[0]);
+    ASSERT_NE(at, model.material_names.end());
+    const Material& got = model.materials[at - model.material_names.begin()];
+    ASSERT_TRUE(got.has_map(MapSlot::diffuse));
+    const TextureMap& back = got.map(MapSlot::diffuse);
+    EXPECT_NEAR(back.scale.x, 2.0f, 1e-5f);
+    EXPECT_NEAR(back.scale.y, 3.0f, 1e-5f);
+    EXPECT_NEAR(back.rotation, 30.0f, 1e-4f);
+    EXPECT_NEAR(back.offset.x, 0.25f, 1e-5f);
+    EXPECT_NEAR(back.offset.y, -0.5f, 1e-5f);
+    EXPECT_EQ(back.wrap[0], Wrap::mirror);
+    EXPECT_EQ(back.wrap[1], Wrap::clamp);
+    ASSERT_TRUE(got.has_map(MapSlot::normal));
+    EXPECT_TRUE(plain_settings(got.map(MapSlot::normal)));
+    EXPECT_FLOAT_EQ(got.normal_scale, 0.5f);
+  }
+}
+
 // Another extension is refused, naming the file; a folder that does not exist leaves nothing.
 TEST_F(GltfExport, BadPathsFailCleanly) {
   EXPECT_THROW(export_gltf(scene, conversions, folder.file("out.obj")), InputError);

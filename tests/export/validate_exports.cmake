@@ -1,7 +1,8 @@
 # The Khronos glTF-Validator (npm package gltf-validator, run by node) on gloss-cli export-gltf's
-# files: the shipped scenes as .gltf and .glb, and spheres.json with a spot, a directional light
-# and a PNG diffuse map. Fails on any validator error; without node it says SKIPPED and passes
-# (scripts/common.sh installs node and the validator with the other packages).
+# files: the shipped scenes as .gltf and .glb, and spheres.json with a spot, a directional light,
+# a transformed PNG diffuse map and a normal map. Fails on any validator error; without node it
+# says SKIPPED and passes (scripts/common.sh installs node and the validator with the other
+# packages).
 # cmake -DCLI=gloss-cli -DNODE=node -DROOT=source -DOUT=folder -P validate_exports.cmake
 # Bad input first (no node needed): an output that is not .gltf/.glb is one error line naming
 # it, exit 2, and nothing written.
@@ -27,13 +28,16 @@ if(NPM)
   set(node_path "${npm_root}:${node_path}")
 endif()
 
-# spheres.json with more lights and a map.
+# spheres.json with more lights, a scaled, turned and moved diffuse map (KHR_texture_transform)
+# and a normal map.
 file(READ "${ROOT}/assets/scenes/spheres.json" scene)
 string(JSON scene SET "${scene}" lights 1
   "{\"type\": \"spot\", \"position\": [0, 4, 1], \"direction\": [0, -1, 0], \"cutoff\": 30, \"inner\": 20}")
 string(JSON scene SET "${scene}" lights 2
   "{\"type\": \"directional\", \"direction\": [1, -1, -1], \"diffuse\": [0.3, 0.3, 0.3]}")
-string(JSON scene SET "${scene}" materials floor diffuse_map "\"${ROOT}/assets/icon/gloss.png\"")
+string(JSON scene SET "${scene}" materials floor diffuse_map
+  "{\"file\": \"${ROOT}/assets/icon/gloss.png\", \"scale\": [2, 3], \"rotation\": 30, \"offset\": [0.25, -0.5]}")
+string(JSON scene SET "${scene}" materials floor normal_map "\"${ROOT}/assets/icon/gloss.png\"")
 file(WRITE "${OUT}/textured.json" "${scene}")
 
 set(scenes "${ROOT}/assets/scenes/spheres.json" "${ROOT}/assets/scenes/cornell-teapot.json"
