@@ -41,6 +41,14 @@ Scene load(const ExportArgs& args) {
   return scene;
 }
 
+void write_threejs(const Scene& scene, const std::vector<MaterialConversion>& conversions,
+                   const std::string& path) {
+  const ThreejsExport out = threejs_export(scene, conversions, path);
+  for (const std::string& notice : out.notices) std::cout << "note: " << notice << "\n";
+  write_text_atomically(path, out.json);
+  std::cout << "wrote " << path << "\n";
+}
+
 void run_export_gltf(const ExportArgs& args) {
   if (!is_gltf_path(args.out)) {
     throw InputError(args.out, "a glTF export is written to FILE.gltf or FILE.glb");
@@ -55,10 +63,7 @@ void run_export_gltf(const ExportArgs& args) {
   const GltfExportResult result = export_gltf(scene, conversions, args.out, options);
   for (const std::string& notice : result.notices) std::cout << "note: " << notice << "\n";
   report(conversions, args);
-  if (!args.threejs.empty()) {
-    write_text_atomically(args.threejs, threejs_materials_json(scene, conversions));
-    std::cout << "wrote " << args.threejs << "\n";
-  }
+  if (!args.threejs.empty()) write_threejs(scene, conversions, args.threejs);
   std::cout << "wrote " << args.out << " (" << result.bytes << " bytes)\n";
 }
 
@@ -66,8 +71,7 @@ void run_export_threejs(const ExportArgs& args) {
   const Scene scene = load(args);
   const std::vector<MaterialConversion> conversions = convert_materials(scene);
   report(conversions, args);
-  write_text_atomically(args.out, threejs_materials_json(scene, conversions));
-  std::cout << "wrote " << args.out << "\n";
+  write_threejs(scene, conversions, args.out);
 }
 
 }  // namespace

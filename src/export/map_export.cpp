@@ -57,7 +57,7 @@ ThreejsTextureTransform threejs_texture_transform(const TextureMap& map) {
   ThreejsTextureTransform t;
   t.repeat = glm::dvec2(map.scale);
   t.offset = glm::dvec2(map.offset);
-  t.rotation = -static_cast<double>(map.rotation) * kPi / 180.0;
+  t.rotation = map.rotation == 0.0f ? 0.0 : -static_cast<double>(map.rotation) * kPi / 180.0;
   const bool half_turns = std::remainder(static_cast<double>(map.rotation), 180.0) == 0.0;
   t.exact = map.scale.x == map.scale.y || half_turns;
   return t;

@@ -17,7 +17,6 @@
 #include "base/error.h"
 #include "base/image.h"
 #include "export/gltf_export.h"
-#include "export/threejs_export.h"
 #include "io/image/image_io.h"
 #include "io/model/model_loader.h"
 #include "io/scene/material_maps.h"
@@ -238,16 +237,6 @@ TEST_F(GltfExport, BadPathsFailCleanly) {
   EXPECT_THROW(export_gltf(scene, conversions, folder.file("out.obj")), InputError);
   EXPECT_THROW(export_gltf(scene, conversions, folder.file("missing/out.gltf")), RuntimeFailure);
   EXPECT_FALSE(std::filesystem::exists(folder.file("missing")));
-}
-
-// three.js's hex colours are sRGB-encoded bytes: 0 -> 0, 1 -> 255, linear 0.5 -> 188
-// (1.055 0.5^(1/2.4) - 0.055 = 0.7354, times 255 = 187.5 -> 188), 0.0031308 -> 10.3 -> 10.
-TEST(ThreejsExport, SrgbBytesByHand) {
-  EXPECT_EQ(srgb_byte(0.0), 0);
-  EXPECT_EQ(srgb_byte(1.0), 255);
-  EXPECT_EQ(srgb_byte(2.0), 255);
-  EXPECT_EQ(srgb_byte(0.5), 188);
-  EXPECT_EQ(srgb_byte(0.0031308), 10);
 }
 
 }  // namespace
