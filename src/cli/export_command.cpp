@@ -9,8 +9,8 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
-#include "base/printable_text.h"
 #include "cli/commands.h"
+#include "cli/scene_messages.h"
 #include "export/gltf_export.h"
 #include "export/material_conversion.h"
 #include "export/threejs_export.h"
@@ -34,10 +34,9 @@ void report(const std::vector<MaterialConversion>& conversions, const ExportArgs
 }
 
 Scene load(const ExportArgs& args) {
-  std::vector<std::string> warnings;
-  Scene scene = load_scene(args.scene, &warnings);
-  for (const std::string& warning : warnings)
-    std::cerr << "warning: " << printable_text(warning) << "\n";
+  std::vector<std::string> warnings, notes;
+  Scene scene = load_scene(args.scene, &warnings, &notes);
+  print_scene_messages(notes, warnings);
   return scene;
 }
 
