@@ -52,8 +52,13 @@ TEST(GltfScript, SummaryNamesEachMaterialsFit) {
   const Scene scene = test::two_sphere_scene();
   const std::string summary = write_gltf_file(scene, folder.file("s.gltf"), false);
   EXPECT_EQ(summary.rfind("exported " + folder.file("s.gltf") + ":", 0), 0u) << summary;
+  // Each material's fit with its residual in both metrics (l2 relative, then L*).
   for (const std::string& name : scene.material_names) {
-    EXPECT_NE(summary.find(" " + name + " roughness "), std::string::npos) << summary;
+    const std::size_t at = summary.find(" " + name + " roughness ");
+    ASSERT_NE(at, std::string::npos) << summary;
+    const std::size_t error = summary.find(" error ", at);
+    ASSERT_NE(error, std::string::npos) << summary;
+    EXPECT_NE(summary.find(" % (L* ", error), std::string::npos) << summary;
   }
 }
 

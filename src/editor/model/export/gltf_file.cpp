@@ -17,10 +17,11 @@ std::string write_gltf_file(const Scene& scene, const std::string& path, bool pr
   std::string summary = "exported " + path + ":";
   for (std::size_t i = 0; i < conversions.size(); ++i) {
     const MaterialConversion& c = conversions[i];
-    char text[128];
-    std::snprintf(text, sizeof text, " %s roughness %.2f metallic %.2f error %.1f %%%s",
+    char text[160];
+    std::snprintf(text, sizeof text, " %s roughness %.2f metallic %.2f error %.1f %% (L* %.2g)%s",
                   c.name.c_str(), c.gltf.material.roughness, c.gltf.material.metallic,
-                  100.0 * c.gltf.residual.l2_relative, i + 1 < conversions.size() ? "," : "");
+                  100.0 * c.gltf.residual.l2_relative, c.gltf.residual.lightness,
+                  i + 1 < conversions.size() ? "," : "");
     summary += text;
   }
   if (!result.notices.empty()) {
