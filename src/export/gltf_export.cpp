@@ -18,6 +18,7 @@
 #include "base/version.h"
 #include "export/gltf_buffer.h"
 #include "export/map_export.h"
+#include "scene/geometry/tangent_space.h"
 
 namespace gloss {
 
@@ -60,6 +61,33 @@ int wrap_mode(Wrap wrap) {
       break;
   }
   return 10497;
+}
+
+// A mesh for a normal-mapped material: glTF viewers make a primitive's missing tangents each in
+// their own way (the validator warns), so a flat mesh gets its face normals (corners unwelded)
+// and the mesh MikkTSpace tangents (scene/geometry/tangent_space.h), the ones gloss shades with.
+Mesh with_tangent_space(const Mesh& in) {
+  if (in.smooth() && in.tangents.size() == in.positions.size()) return in;
+  Mesh out = in;
+  if (!in.smooth()) {
+    out = Mesh{};
+    for (const glm::uvec3& t : in.triangles) {
+      const glm::vec3 e1 = in.positions[t[1]] - in.positions[t[0]];
+      const glm::vec3 e2 = in.positions[t[2]] - in.positions[t[0]];
+      const glm::vec3 n = glm::normalize(glm::cross(e1, e2));
+      const auto base = static_cast<unsigned>(out.positions.size());
+      for (int k = 0; k < 3; ++k) {
+        out.positions.push_back(in.positions[t[k]]);
+        out.normals.push_back(n);
+        for (int set = 0; set < 2; ++set) {
+          if (in.uv[set].size() == in.positions.size()) out.uv[set].push_back(in.uv[set][t[k]]);
+        }
+      }
+      out.triangles.emplace_back(base, base + 1, base + 2);
+    }
+  }
+  generate_tangents(out);
+  return out;
 }
 
 struct Writer {
@@ -252,8 +280,14 @@ struct Writer {
         meshes.push_back(
             {{"name", o.name}, {"primitives", {mesh_primitive(buffer, sphere, o.material)}}});
       } else if (o.mesh != nullptr && !o.mesh->triangles.empty()) {
+        const bool normal_mapped = o.material >= 0 &&
+                                   o.material < static_cast<int>(scene.materials.size()) &&
+                                   scene.materials[o.material].map(MapSlot::normal).named();
+        Mesh tangent_mesh;
+        if (normal_mapped) tangent_mesh = with_tangent_space(*o.mesh);
+        const Mesh& mesh = normal_mapped ? tangent_mesh : *o.mesh;
         meshes.push_back(
-            {{"name", o.name}, {"primitives", {mesh_primitive(buffer, *o.mesh, o.material)}}});
+            {{"name", o.name}, {"primitives", {mesh_primitive(buffer, mesh, o.material)}}});
       } else {
         continue;
       }

@@ -232,6 +232,37 @@ TEST_F(GltfExport, MapTransformsRoundTrip) {
   }
 }
 
+// A flat mesh (spheres.json's floor quad, no normals) under a normal-mapped material is written
+// with face normals (its 2 triangles unwelded: 6 vertices) and tangents, so no viewer has to
+// make its own tangent space. The normal follows the winding, as gloss's face normal: (8,0,-8) -
+// (-8,0,-8) = (16,0,0) cross (8,0,6) - (-8,0,-8) = (16,0,14) is (0,-224,0), -Y (the material is
+// double-sided); the tangent runs along x, as u does.
+TEST_F(GltfExport, NormalMappedFlatMeshGetsNormalsAndTangents) {
+  const auto floor = std::find(scene.material_names.begin(), scene.material_names.end(), "floor");
+  ASSERT_NE(floor, scene.material_names.end());
+  scene.materials[floor - scene.material_names.begin()].map(MapSlot::normal) =
+      scene.materials[0].map(MapSlot::diffuse);
+  const std::string path = folder.file("flat.gltf");
+  export_gltf(scene, conversions, path);
+  const nlohmann::json doc = read_json(path);
+  const auto mesh = std::find_if(doc["meshes"].begin(), doc["meshes"].end(),
+                                 [](const nlohmann::json& m) { return m["name"] == "floor"; });
+  ASSERT_NE(mesh, doc["meshes"].end());
+  const nlohmann::json& attributes = (*mesh)["primitives"][0]["attributes"];
+  ASSERT_TRUE(attributes.contains("NORMAL") && attributes.contains("TANGENT")) << attributes;
+  EXPECT_EQ(doc["accessors"][attributes["POSITION"].get<int>()]["count"], 6);
+  Assimp::Importer importer;
+  const aiScene* s = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+  ASSERT_NE(s, nullptr) << importer.GetErrorString();
+  for (unsigned m = 0; m < s->mNumMeshes; ++m) {
+    if (std::string(s->mMeshes[m]->mName.C_Str()) != "floor") continue;
+    const aiMesh& quad = *s->mMeshes[m];
+    ASSERT_TRUE(quad.HasNormals() && quad.HasTangentsAndBitangents());
+    EXPECT_NEAR(quad.mNormals[0].y, -1.0f, 1e-6f);
+    EXPECT_NEAR(std::abs(quad.mTangents[0].x), 1.0f, 1e-5f);
+  }
+}
+
 // Another extension is refused, naming the file; a folder that does not exist leaves nothing.
 TEST_F(GltfExport, BadPathsFailCleanly) {
   EXPECT_THROW(export_gltf(scene, conversions, folder.file("out.obj")), InputError);
