@@ -11,5 +11,6 @@ void add_presets_command(CLI::App& app);   // presets_command.cpp
 void add_bench_command(CLI::App& app);     // bench_command.cpp
 void add_tradeoff_command(CLI::App& app);  // tradeoff_command.cpp
 void add_fit_command(CLI::App& app);       // fit_command.cpp
+void add_export_commands(CLI::App& app);   // export_command.cpp: export-gltf, export-threejs
 
 }  // namespace gloss

@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
   gloss::add_bench_command(app);
   gloss::add_tradeoff_command(app);
   gloss::add_fit_command(app);
+  gloss::add_export_commands(app);
 
   // Run: the chosen subcommand's callback runs inside parse.
   try {

@@ -18,10 +18,10 @@
 
 #include "base/assets.h"
 #include "base/error.h"
-#include "base/printable_text.h"
 #include "base/text_distance.h"
 #include "base/version.h"
 #include "cli/commands.h"
+#include "cli/scene_messages.h"
 #include "engine/renderer.h"
 #include "io/image/exr_writer.h"
 #include "io/image/image_io.h"
@@ -194,8 +194,8 @@ class OutputWriter {
 };
 
 void run_render(RenderArgs args) {
-  std::vector<std::string> warnings;
-  Scene scene = load_scene(args.scene, &warnings);
+  std::vector<std::string> warnings, notes;
+  Scene scene = load_scene(args.scene, &warnings, &notes);
   apply_overrides(args, scene);
   if (args.physical) args.precision = "double";
 
@@ -267,8 +267,7 @@ void run_render(RenderArgs args) {
   }
   std::cout << "\n";
   for (const std::string& path : writer.commit()) std::cout << "wrote " << path << "\n";
-  for (const std::string& warning : warnings)
-    std::cerr << "warning: " << printable_text(warning) << "\n";
+  print_scene_messages(notes, warnings);
 }
 
 }  // namespace

@@ -23,6 +23,7 @@
 #include "base/atomic_file.h"
 #include "base/error.h"
 #include "cli/commands.h"
+#include "cli/scene_messages.h"
 #include "io/scene/scene_loader.h"
 
 extern char** environ;
@@ -117,8 +118,8 @@ void print_row(const TradeoffRow& r) {
 }
 
 void run_tradeoff_command(const TradeoffArgs& args) {
-  std::vector<std::string> warnings;
-  const Scene scene = load_scene(args.scene, &warnings);
+  std::vector<std::string> warnings, notes;
+  const Scene scene = load_scene(args.scene, &warnings, &notes);
   TradeoffOptions options = args.quick ? quick_tradeoff_options() : TradeoffOptions{};
   if (args.width > 0) options.width = args.width;
   if (args.height > 0) options.height = args.height;
@@ -205,7 +206,7 @@ void run_tradeoff_command(const TradeoffArgs& args) {
     if (!temp_csv.empty()) std::remove(temp_csv.c_str());
     std::cout << "wrote " << args.plot << "\n";
   }
-  for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
+  print_scene_messages(notes, warnings);
 }
 
 }  // namespace

@@ -246,6 +246,38 @@ TEST_F(Cli, APngWithoutASceneExitsTwoSayingSo) {
                  "written by gloss or gloss-cli reopen as scenes");
 }
 
+// A scene naming a glTF model: render prints the model's import notes on stderr as the editor's
+// Add model lists them (each glTF material as the fitted Phong or by assimp's rule), prefixed
+// with the scene file and the object's field, and still exits 0. The model: one triangle, its
+// positions (0,0,0) (1,0,0) (0,1,0) in a data: URI, material "red" (base colour (0.8, 0.1, 0.1),
+// metallic 0, roughness 0.5).
+TEST_F(Cli, RenderPrintsTheGltfModelsImportNotes) {
+  write("tri.gltf", R"({
+    "asset": {"version": "2.0"},
+    "buffers": [{"byteLength": 36,
+                 "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+    "bufferViews": [{"buffer": 0, "byteLength": 36}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                   "min": [0, 0, 0], "max": [1, 1, 0]}],
+    "materials": [{"name": "red", "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.1, 0.1, 1],
+                   "metallicFactor": 0, "roughnessFactor": 0.5}}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+    "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})");
+  std::string text = kTinyScene;
+  const std::string sphere = R"("radius": 1, "material": "m"})";
+  text.replace(text.find(sphere), sphere.size(),
+               std::string(sphere) + R"(, {"type": "mesh", "file": "tri.gltf"})");
+  write("with-model.json", text);
+  const CliRun r = run("render " + scene("with-model.json") + " -o out.png");
+  EXPECT_EQ(r.status, 0) << r.err;
+  const std::string note = "note: " + inputs.file("with-model.json") +
+                           ": objects[1].file: material 'red': metallic-roughness ";
+  const std::vector<std::string> lines = lines_of(r.err);
+  EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [&](const std::string& line) {
+    return line.rfind(note, 0) == 0;
+  })) << r.err;
+}
+
 TEST_F(Cli, AMaterialsFileAsTheSceneSaysToLoadItAsMaterials) {
   write("library.json", R"({"materials": {"red": {"diffuse": [0.6, 0.1, 0.1]}}})");
   expect_failure(run("render " + scene("library.json") + " -o out.png"), 2,

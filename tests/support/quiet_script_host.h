@@ -5,7 +5,10 @@
 #include <utility>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "editor/model/document/command_layer.h"
+#include "editor/model/script/script.h"
 #include "editor/model/script/script_runner.h"
 #include "editor/model/view/view_settings.h"
 
@@ -39,5 +42,21 @@ class QuietScriptHost : public ScriptHost {
   int m_selected = 0;
   std::vector<int> m_selected_all;
 };
+
+// Runs the lines of text on host until one stops, their output captured (not shown); the last
+// line's result.
+inline LineResult run_quietly(const std::string& text, QuietScriptHost& host) {
+  const Script s = parse_script(text, "run.txt");
+  LineResult r;
+  testing::internal::CaptureStdout();
+  testing::internal::CaptureStderr();
+  for (const ScriptLine& line : s.lines) {
+    r = run_script_line(s, line, host);
+    if (r.next == LineResult::Next::stop) break;
+  }
+  testing::internal::GetCapturedStderr();
+  testing::internal::GetCapturedStdout();
+  return r;
+}
 
 }  // namespace gloss::test

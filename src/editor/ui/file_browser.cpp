@@ -28,6 +28,8 @@ const char* title(BrowsePurpose purpose) {
       return "Save the selected material";
     case BrowsePurpose::export_glsl:
       return "Export GLSL";
+    case BrowsePurpose::export_gltf:
+      return "Export glTF";
     case BrowsePurpose::open_environment:
       return "Environment map";
     case BrowsePurpose::load_map:
@@ -38,7 +40,8 @@ const char* title(BrowsePurpose purpose) {
 
 bool is_save(BrowsePurpose purpose) {
   return purpose == BrowsePurpose::save_scene || purpose == BrowsePurpose::save_materials ||
-         purpose == BrowsePurpose::save_material || purpose == BrowsePurpose::export_glsl;
+         purpose == BrowsePurpose::save_material || purpose == BrowsePurpose::export_glsl ||
+         purpose == BrowsePurpose::export_gltf;
 }
 
 std::vector<std::string> extensions(BrowsePurpose purpose) {
@@ -55,6 +58,8 @@ std::vector<std::string> extensions(BrowsePurpose purpose) {
       return {".json", ".mtl"};
     case BrowsePurpose::export_glsl:
       return {".frag", ".glsl"};
+    case BrowsePurpose::export_gltf:
+      return {".glb", ".gltf"};
     case BrowsePurpose::open_environment:
       return {".hdr", ".exr", ".png"};
     case BrowsePurpose::load_map:
@@ -77,6 +82,7 @@ RecentKind recent_kind(BrowsePurpose purpose) {
     case BrowsePurpose::open_scene:
     case BrowsePurpose::save_scene:
     case BrowsePurpose::export_glsl:
+    case BrowsePurpose::export_gltf:
       break;
   }
   return RecentKind::scene;

@@ -21,6 +21,7 @@ enum class BrowsePurpose {
   export_glsl,       // issue 12: the selected object's material as a fragment shader
   open_environment,  // an environment map (HDR, EXR, PNG)
   load_map,          // an image into a map slot of a material (map_target says which)
+  export_gltf,       // issue 26: the scene as glTF 2.0 (.gltf, .glb)
 };
 // The recent list the panel offers for purpose (scenes for scenes, models for Add model, ...).
 RecentKind recent_kind(BrowsePurpose purpose);

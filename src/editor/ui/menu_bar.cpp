@@ -75,6 +75,9 @@ void file_menu(Commands& commands, const Selection& selection, Session& session,
     browser.start(BrowsePurpose::export_glsl, path,
                   suggested_file_name(scene, selection.object, "export-glsl"));
   }
+  if (ImGui::MenuItem("Export glTF...")) {
+    browser.show(BrowsePurpose::export_gltf, scene_folder(path, view.screenshot_dir), "scene.glb");
+  }
   ImGui::Separator();
   if (ImGui::MenuItem("Screenshot", "Ctrl+S")) exports.start(view.screenshot_kind);
   if (ImGui::MenuItem("Screenshot: viewport render")) exports.start(ScreenshotKind::viewport);

@@ -184,6 +184,7 @@ class ScriptPlayer::Host : public ScriptHost {
   }
   int selected_object() const override { return m_app.selection.object; }
   std::optional<Snapshot>& snapshot() override { return m_app.snapshot; }
+  void notify(const std::string& text) override { m_app.commands.info(text); }
 
   LineResult wait(const WaitAction& a, const std::string&) override {
     return hold(Waiting::converge, m_now + a.timeout_s);

@@ -44,7 +44,8 @@ std::string embedded_scene_text(const Scene& scene) {
   return scene_to_json_text(copy);
 }
 
-Scene load_scene_from_png(const std::string& path, std::vector<std::string>* warnings) {
+Scene load_scene_from_png(const std::string& path, std::vector<std::string>* warnings,
+                          std::vector<std::string>* notes) {
   const Png8 png = read_png(path);
   const std::string* text = nullptr;
   for (const auto& [keyword, value] : png.text) {
@@ -56,7 +57,7 @@ Scene load_scene_from_png(const std::string& path, std::vector<std::string>* war
   }
   // The label names the PNG and what inside it is meant; its folder is the PNG's, so a relative
   // model path (from a PNG written before paths were made absolute) resolves beside the PNG.
-  Scene scene = parse_scene(*text, path + " (embedded scene)", warnings);
+  Scene scene = parse_scene(*text, path + " (embedded scene)", warnings, notes);
   make_model_paths_absolute(scene, fs::path(path).parent_path());
   scene.path.clear();
   return scene;

@@ -25,6 +25,7 @@ std::string embedded_scene_text(const Scene& scene);
 // InputError naming the PNG: one line when it carries no scene, and for an error inside the
 // embedded JSON the PNG plus the place ("shot.png (embedded scene):3:7: ...",
 // "shot.png (embedded scene): objects[1].radius: ...").
-Scene load_scene_from_png(const std::string& path, std::vector<std::string>* warnings = nullptr);
+Scene load_scene_from_png(const std::string& path, std::vector<std::string>* warnings = nullptr,
+                          std::vector<std::string>* notes = nullptr);
 
 }  // namespace gloss

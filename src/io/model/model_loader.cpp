@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -22,6 +23,7 @@
 #include <glm/geometric.hpp>
 
 #include "base/error.h"
+#include "io/model/gltf_extras.h"
 #include "io/model/model_maps.h"
 #include "io/model/model_material.h"
 #include "io/model/model_process.h"
@@ -299,10 +301,27 @@ Model import_with_assimp(const std::string& path, const ModelOptions& options) {
   }
 
   Model model;
+  // gloss's own glTF files carry the exact Phong constants, found by the material's name (assimp
+  // numbers glTF's materials in the order meshes first use them). It appends a default material
+  // of its own (unnamed in assimp 5.2), which no part of a file whose every mesh names its
+  // material uses: a glTF's materials past the file's count are it.
+  const bool gltf = lower_extension(path) == ".gltf" || lower_extension(path) == ".glb";
+  const GltfMaterialExtras extras = gltf ? read_gloss_extras(path) : GltfMaterialExtras{};
   std::map<unsigned, std::string> name_of;  // material index -> name, default material absent
   for (unsigned i = 0; i < scene->mNumMaterials; ++i) {
     NamedMaterial named = convert_material(*scene->mMaterials[i], i, path);
+    if (extras.parsed && i >= extras.materials.size()) named.is_default = true;
     if (named.is_default) continue;
+    if (const GlossExtras* found = find_gloss_extras(extras, named.name)) {
+      const GlossExtras& e = *found;
+      Material& m = named.material;
+      m.ambient = e.ambient;
+      m.diffuse = e.diffuse;
+      m.specular = e.specular;
+      m.emission = e.emission;
+      m.shininess = e.shininess;
+      named.textures.gloss_exact = true;
+    }
     std::string name = named.name;
     for (int k = 2; std::count(model.material_names.begin(), model.material_names.end(), name);
          ++k) {
@@ -397,6 +416,10 @@ Model load_model(const std::string& path, const ModelOptions& options) {
     if (mesh.tangents.size() != mesh.positions.size()) mesh.tangents.clear();
   }
   model.file_materials.resize(model.materials.size());
+  model.exact_materials =
+      static_cast<int>(std::count_if(model.file_materials.begin(), model.file_materials.end(),
+                                     [](const ModelFileMaterial& m) { return m.gloss_exact; }));
+  fit_metal_rough_materials(model);
   if (options.read_maps) read_model_maps(path, model, options);
   return model;
 }

@@ -45,6 +45,13 @@ struct ModelFileMaterial {
   float metallic = 1.0f, roughness = 1.0f;
   std::string alpha_mode;  // glTF: "OPAQUE", "MASK", "BLEND"
   float alpha_cutoff = 0.5f;
+  bool gloss_exact = false;  // the Phong constants came exactly from gloss's extras
+  // glTF without extras: the Phong lobe's error against the metallic-roughness lobe
+  // (physical/lobe_metrics.h, l2 relative) for assimp's rule and for the fit; the fit's
+  // constants are taken when it is closer (fitted) and no metallic-roughness texture varies
+  // them per texel. -1: not measured.
+  double rule_residual = -1.0, fit_residual = -1.0;
+  bool fitted = false;
 };
 
 // An image inside the file (a .glb's buffer, a data: URI).
@@ -67,7 +74,9 @@ struct Model {
   std::vector<Material> materials;
   std::vector<ModelFileMaterial> file_materials;  // parallel to materials
   std::vector<ModelEmbeddedImage> embedded;
+  int exact_materials = 0;      // materials read exactly from gloss's glTF extras
   std::uint64_t map_bytes = 0;  // what the maps read took (textures already in memory not counted)
+  std::vector<std::string> notes;     // e.g. a glTF material read as the fitted Phong, its error
   std::vector<std::string> warnings;  // e.g. degenerate triangles dropped, a map missing
   // What the file asks for that gloss cannot use (an unknown map option, alpha blending, a
   // missing image): the editor's notice lists these. Each is also a warning.

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <string>
 #include <utility>
+
+#include <tbb/parallel_for.h>
 
 #include <assimp/GltfMaterial.h>
 #include <assimp/material.h>
@@ -12,6 +15,7 @@
 #include <glm/common.hpp>
 
 #include "base/error.h"
+#include "physical/metal_rough_fit.h"
 
 namespace gloss {
 
@@ -152,6 +156,64 @@ NamedMaterial convert_material(const aiMaterial& in, unsigned index,
     throw InputError(model_file, "must be finite and >= 0", 0, 0, "material '" + out.name + "' Ns");
   }
   return out;
+}
+
+void fit_metal_rough_materials(Model& model) {
+  // Files repeat materials (one per part): each distinct (base, metallic, roughness) is fitted
+  // once, the distinct ones in parallel.
+  struct Job {
+    MetalRough pbr;
+    PhongFit fit;
+  };
+  std::vector<Job> jobs;
+  std::vector<int> job_of(model.materials.size(), -1);
+  for (std::size_t i = 0; i < model.materials.size(); ++i) {
+    const ModelFileMaterial& f = model.file_materials[i];
+    if (!f.gltf || f.gloss_exact) continue;
+    MetalRough pbr;
+    pbr.base_colour = glm::clamp(glm::dvec3(glm::vec3(f.base_colour)), 0.0, 1.0);
+    pbr.metallic = std::clamp(static_cast<double>(f.metallic), 0.0, 1.0);
+    pbr.roughness = std::clamp(static_cast<double>(f.roughness), kMinFitRoughness, 1.0);
+    const auto same = std::find_if(jobs.begin(), jobs.end(), [&](const Job& j) {
+      return j.pbr.base_colour == pbr.base_colour && j.pbr.metallic == pbr.metallic &&
+             j.pbr.roughness == pbr.roughness;
+    });
+    job_of[i] = static_cast<int>(same - jobs.begin());
+    if (same == jobs.end()) jobs.push_back({pbr, {}});
+  }
+  tbb::parallel_for(std::size_t(0), jobs.size(),
+                    [&](std::size_t j) { jobs[j].fit = fit_phong_to_metal_rough(jobs[j].pbr); });
+  for (std::size_t i = 0; i < model.materials.size(); ++i) {
+    if (job_of[i] < 0) continue;
+    ModelFileMaterial& f = model.file_materials[i];
+    Material& m = model.materials[i];
+    const Job& job = jobs[static_cast<std::size_t>(job_of[i])];
+    f.fit_residual = job.fit.residual.l2_relative;
+    f.rule_residual =
+        residual_to_metal_rough(phong_lobe(m, ShadingModel::phong, false), job.pbr).l2_relative;
+    const bool textured = std::any_of(f.textures.begin(), f.textures.end(), [](const auto& t) {
+      return t.type == aiTextureType_UNKNOWN;  // glTF's metallic-roughness texture
+    });
+    if (f.fit_residual < f.rule_residual && !textured) {
+      m.diffuse = glm::vec3(job.fit.lobe.kd);
+      m.ambient = m.diffuse;
+      m.specular = glm::vec3(job.fit.lobe.ks);
+      m.shininess = static_cast<float>(job.fit.lobe.alpha);
+      f.fitted = true;
+    }
+  }
+  for (std::size_t i = 0; i < model.materials.size(); ++i) {
+    const ModelFileMaterial& f = model.file_materials[i];
+    if (f.fit_residual < 0.0) continue;
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  ": metallic-roughness as %s Phong (error %.3g %%; fitted %.3g %%, "
+                  "assimp's rule %.3g %%)",
+                  f.fitted ? "the fitted" : "assimp's rule of",
+                  100.0 * (f.fitted ? f.fit_residual : f.rule_residual), 100.0 * f.fit_residual,
+                  100.0 * f.rule_residual);
+    model.notes.push_back("material '" + model.material_names[i] + "'" + text);
+  }
 }
 
 }  // namespace gloss

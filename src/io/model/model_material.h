@@ -28,4 +28,10 @@ struct NamedMaterial {
 // colour component that is negative or not finite, or a negative or non-finite exponent.
 NamedMaterial convert_material(const aiMaterial& in, unsigned index, const std::string& model_file);
 
+// glTF 2.0 materials (not gloss's own, which carry exact constants): kd, ks and Ns replaced by
+// the Phong lobe closest to the metallic-roughness lobe (physical/metal_rough_fit.h; ka = kd as
+// the rule has it) where that is closer than the rule above and no metallic-roughness texture
+// varies the material per texel; both errors measured, a note per material in model.notes.
+void fit_metal_rough_materials(Model& model);
+
 }  // namespace gloss

@@ -129,6 +129,7 @@ void write_file_material(Writer& w, const ModelFileMaterial& m) {
   w.raw(m.roughness);
   w.text(m.alpha_mode);
   w.raw(m.alpha_cutoff);
+  w.raw(m.gloss_exact);
 }
 
 ModelFileMaterial read_file_material(Reader& r) {
@@ -158,6 +159,7 @@ ModelFileMaterial read_file_material(Reader& r) {
   m.roughness = r.raw<float>();
   m.alpha_mode = r.text();
   m.alpha_cutoff = r.raw<float>();
+  m.gloss_exact = r.raw<bool>();
   return m;
 }
 

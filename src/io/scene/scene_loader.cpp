@@ -152,7 +152,7 @@ bool has_mtl_extension(const std::string& path) {
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& path,
-                  std::vector<std::string>* warnings) {
+                  std::vector<std::string>* warnings, std::vector<std::string>* notes) {
   const nlohmann::json root = parse_json_text(text, path);
   refuse_materials_file(root, path);
   const JsonObjectReader top(root, path, "",
@@ -173,6 +173,7 @@ Scene parse_scene(const std::string& text, const std::string& path,
   context.file = path;
   context.base_dir = std::filesystem::path(path).parent_path().string();  // "" = current folder
   context.warnings = warnings;
+  context.notes = notes;
   std::uint64_t claimed_bytes = 0;
   context.budget_bytes = memory_budget_bytes();
   context.claimed_bytes = &claimed_bytes;
@@ -196,12 +197,13 @@ Scene parse_scene(const std::string& text, const std::string& path,
   return scene;
 }
 
-Scene load_scene(const std::string& path, std::vector<std::string>* warnings) {
-  if (has_png_signature(path)) return load_scene_from_png(path, warnings);
+Scene load_scene(const std::string& path, std::vector<std::string>* warnings,
+                 std::vector<std::string>* notes) {
+  if (has_png_signature(path)) return load_scene_from_png(path, warnings, notes);
   if (has_mtl_extension(path)) {
     throw InputError(path, std::string("this MTL file ") + kLoadMaterialsHint);
   }
-  return parse_scene(read_text_file(path), path, warnings);
+  return parse_scene(read_text_file(path), path, warnings, notes);
 }
 
 void save_scene(const Scene& scene, const std::string& path) {

@@ -10,12 +10,16 @@
 namespace gloss {
 
 // Reads, validates and resolves (presets, meshes, teapot) a scene file. Warnings (such as
-// dropped degenerate triangles) are appended to *warnings when given.
-Scene load_scene(const std::string& path, std::vector<std::string>* warnings = nullptr);
+// dropped degenerate triangles) are appended to *warnings when given; notes (how a model's glTF
+// materials were read: each as the fitted Phong or by assimp's rule, with both errors), each
+// prefixed with the file and the object's field, to *notes.
+Scene load_scene(const std::string& path, std::vector<std::string>* warnings = nullptr,
+                 std::vector<std::string>* notes = nullptr);
 
 // The same from text; path is used for messages and relative file resolution.
 Scene parse_scene(const std::string& text, const std::string& path,
-                  std::vector<std::string>* warnings = nullptr);
+                  std::vector<std::string>* warnings = nullptr,
+                  std::vector<std::string>* notes = nullptr);
 
 // The scene as JSON text that parse_scene reads back to an equal scene. save_scene writes it
 // atomically.

@@ -193,6 +193,10 @@ void read_mesh(const JsonObjectReader& reader, const ObjectReadContext& context,
     if (context.warnings)
       context.warnings->push_back(context.file + ": " + reader.path("file") + ": " + warning);
   }
+  for (const std::string& note : model.notes) {
+    if (context.notes)
+      context.notes->push_back(context.file + ": " + reader.path("file") + ": " + note);
+  }
   if (context.claimed_bytes != nullptr) *context.claimed_bytes += model.map_bytes;
   // The model's maps named as the scene names files: relative to the scene's folder.
   for (Material& material : model.materials) {

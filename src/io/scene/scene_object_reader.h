@@ -24,6 +24,7 @@ struct ObjectReadContext {
   std::string file;      // the scene file, for messages
   std::string base_dir;  // the folder relative paths resolve against; empty: the current one
   std::vector<std::string>* warnings = nullptr;
+  std::vector<std::string>* notes = nullptr;  // a model's import notes (Model::notes)
   // The memory budget (base/memory_budget.h) and the geometry claimed by the objects read so far
   // (scene/memory/memory_estimate.h), both in bytes; an object that would pass the budget is
   // refused before its triangles are made where their count is known beforehand (teapots).

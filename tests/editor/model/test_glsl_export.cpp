@@ -79,17 +79,7 @@ TEST(GlslExport, RefusesAMissingMaterial) {
 using Host = test::QuietScriptHost;
 
 LineResult run(const std::string& text, Host& host) {
-  const Script s = parse_script(text, "run.txt");
-  LineResult r;
-  testing::internal::CaptureStdout();
-  testing::internal::CaptureStderr();
-  for (const ScriptLine& line : s.lines) {
-    r = run_script_line(s, line, host);
-    if (r.next == LineResult::Next::stop) break;
-  }
-  testing::internal::GetCapturedStderr();
-  testing::internal::GetCapturedStdout();
-  return r;
+  return test::run_quietly(text, host);
 }
 
 TEST(GlslExportScript, Parses) {

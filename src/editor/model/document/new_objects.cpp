@@ -291,7 +291,7 @@ AddObjects primitive_objects(const Scene& scene, ObjectType type) {
 }
 
 AddObjects model_objects(const Scene& scene, const std::string& path,
-                         std::vector<std::string>* warnings) {
+                         std::vector<std::string>* warnings, std::vector<std::string>* notes) {
   const Model model = load_model(path);
   glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
   for (const ModelPart& part : model.parts) {
@@ -353,6 +353,7 @@ AddObjects model_objects(const Scene& scene, const std::string& path,
   }
   if (warnings != nullptr)
     warnings->insert(warnings->end(), model.warnings.begin(), model.warnings.end());
+  if (notes != nullptr) notes->insert(notes->end(), model.notes.begin(), model.notes.end());
   add.label = "add " + std::filesystem::path(path).filename().string();
   return add;
 }

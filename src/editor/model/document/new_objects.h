@@ -42,8 +42,10 @@ AddObjects primitive_objects(const Scene& scene, ObjectType type);
 // The parts of the model file at path (model_loader.h), one object per material, each with the
 // file's material (parts with none share the grey "default"), scaled together to
 // new_object_size and placed together. Throws InputError naming the file. warnings: the
-// loader's (degenerate triangles dropped ...).
+// loader's (degenerate triangles dropped ...); notes: how its glTF materials were read (the
+// fitted Phong or assimp's rule, with both errors).
 AddObjects model_objects(const Scene& scene, const std::string& path,
-                         std::vector<std::string>* warnings = nullptr);
+                         std::vector<std::string>* warnings = nullptr,
+                         std::vector<std::string>* notes = nullptr);
 
 }  // namespace gloss

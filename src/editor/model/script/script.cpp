@@ -355,7 +355,14 @@ ScriptAction parse_line(Tokens& t) {
   // Issue 12: the GLSL path.
   if (verb == "export") {
     const std::string& what = t.word("export kind");
-    if (what != "glsl") throw std::runtime_error("export must be 'glsl PATH', got '" + what + "'");
+    if (what == "gltf") {
+      ExportGltfAction e;
+      e.path = t.word("glTF path");
+      return e;
+    }
+    if (what != "glsl") {
+      throw std::runtime_error("export must be 'glsl PATH' or 'gltf PATH', got '" + what + "'");
+    }
     ExportGlslAction e;
     e.path = t.word("shader path");
     if (!t.done()) e.object = t.index("object index");

@@ -91,6 +91,12 @@ struct ExportGlslAction {
   int object = -1;  // -1: the host's selected object
 };
 
+// `export gltf PATH` (issue 26): the scene as glTF 2.0 (.gltf or .glb, export/gltf_export.h),
+// each material's conversion error printed and shown as a notice.
+struct ExportGltfAction {
+  std::string path;
+};
+
 // ---- The physical reference (issue 23) ----
 // `reference METAL ROUGHNESS`, `reference dielectric R G B ROUGHNESS`, `reference none`: gives
 // the selected object's material a physical reference (or removes it), one undo step.
@@ -218,7 +224,7 @@ using ScriptAction =
                  InspectAction, ClippedOverlayAction, UvCheckerAction, SnapshotAction, MemoryAction,
                  ExportGlslAction, RendererAction, ShadingAction, ShadowMapAction, ShadowBiasAction,
                  MouseAction, ReferenceAction, FitAction, LayoutAction, KeyAction, LobeAction,
-                 ObjectLineAction, SaveAction, BrowseAction, GizmoAction>;
+                 ObjectLineAction, SaveAction, BrowseAction, GizmoAction, ExportGltfAction>;
 
 struct ScriptLine {
   int line = 0;  // 1-based line number in the file

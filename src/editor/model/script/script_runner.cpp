@@ -9,6 +9,7 @@
 #include "editor/model/document/document.h"
 #include "editor/model/document/reference_fit.h"
 #include "editor/model/export/glsl_export.h"
+#include "editor/model/export/gltf_file.h"
 #include "editor/model/measure/memory_report.h"
 #include "editor/model/measure/pixel_report.h"
 #include "editor/model/session/file_defaults.h"
@@ -59,6 +60,22 @@ LineResult export_glsl_line(ScriptHost& host, const ExportGlslAction& a, const s
   }
   std::printf("export glsl: %s (material %d of object %d)\n", a.path.c_str(), material, object);
   std::fflush(stdout);
+  return LineResult::go_on();
+}
+
+// `export gltf PATH` (issue 26): the same for both hosts; the conversions' errors printed, the
+// summary as a notice.
+LineResult export_gltf_line(ScriptHost& host, const ExportGltfAction& a, const std::string& where) {
+  std::string summary;
+  try {
+    summary = write_gltf_file(host.layer().scene(), a.path, true);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s%s\n", where.c_str(), e.what());
+    return LineResult::stop(1);
+  }
+  std::printf("export gltf: %s\n", summary.c_str());
+  std::fflush(stdout);
+  host.notify(summary);
   return LineResult::go_on();
 }
 
@@ -222,6 +239,7 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
             },
             [&](const KeyAction& a) { return host.key(a, where); },
             [&](const ExportGlslAction& a) { return export_glsl_line(host, a, where); },
+            [&](const ExportGltfAction& a) { return export_gltf_line(host, a, where); },
             [&](const ReferenceAction& a) { return reference_line(host, a); },
             [&](const FitAction& a) { return fit_line(host, a); },
             [&](const RendererAction& a) {

@@ -66,6 +66,9 @@ class ScriptHost {
   // display these say so on stdout and go on.
   virtual LineResult layout(const LayoutAction& action, const std::string& where);
   virtual LineResult key(const KeyAction& action, const std::string& where);
+  // A message for the user beside what the line prints (the editor's notices and status bar);
+  // nothing without a window.
+  virtual void notify(const std::string&) {}
 
   // The snapshot `snapshot` takes and `view ab snapshot` compares with. Kept here by default
   // (headless runs, tests); the editor keeps it in its App so the panel's button shares it.

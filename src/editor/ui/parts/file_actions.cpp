@@ -10,6 +10,7 @@
 #include "editor/model/document/document.h"
 #include "editor/model/document/new_objects.h"
 #include "editor/model/export/glsl_export.h"
+#include "editor/model/export/gltf_file.h"
 #include "editor/model/session/file_defaults.h"
 #include "editor/model/session/material_library_folder.h"
 #include "editor/ui/parts/commands.h"
@@ -78,8 +79,8 @@ void FileActions::request_open_scene(const std::string& requested) {
 
 void FileActions::add_model(const std::string& path) {
   // Scaled to the scene, set down on the surface below, beside the objects there (new_objects.h).
-  std::vector<std::string> warnings;
-  const AddObjects add = model_objects(m_document.scene(), path, &warnings);
+  std::vector<std::string> warnings, notes;
+  const AddObjects add = model_objects(m_document.scene(), path, &warnings, &notes);
   const int first_new = static_cast<int>(m_document.scene().objects.size());
   m_document.execute(add);
   m_document.seal();
@@ -90,6 +91,8 @@ void FileActions::add_model(const std::string& path) {
   select_all_of(m_selection, added);
   remember_recent(RecentKind::model, path);
   for (const std::string& w : warnings) m_commands.info("warning: " + w);
+  // glTF materials read as the fitted Phong (or assimp's rule), with both errors.
+  for (const std::string& n : notes) m_commands.info(n);
   m_commands.info("added " + std::to_string(add.objects.size()) + " object(s) from " + path);
 }
 
@@ -173,6 +176,10 @@ void FileActions::export_glsl_shader(const std::string& path) {
   m_commands.info("exported the GLSL shader of " + object_label(scene, selected) + " to " + path);
 }
 
+void FileActions::export_gltf_scene(const std::string& path) {
+  m_commands.info(write_gltf_file(m_document.scene(), path, false));
+}
+
 void FileActions::load_map(int object, MapSlot slot, const std::string& path) {
   const Scene& scene = m_document.scene();
   if (object < 0 || object >= static_cast<int>(scene.objects.size())) {
@@ -216,6 +223,9 @@ void FileActions::browser_action(const std::string& path) {
         break;
       case BrowsePurpose::export_glsl:
         export_glsl_shader(path);
+        break;
+      case BrowsePurpose::export_gltf:
+        export_gltf_scene(path);
         break;
       case BrowsePurpose::load_map:
         load_map(browser.map_target.object, browser.map_target.slot, path);

@@ -52,6 +52,8 @@ class FileActions {
   // Writes the selected object's material as a GLSL fragment shader
   // (editor/model/export/glsl_export.h).
   void export_glsl_shader(const std::string& path);
+  // The scene as glTF; the notice (status bar) gives each material's fit and its error.
+  void export_gltf_scene(const std::string& path);
   // Reads the image at path into the map slot of object's material (keeping the slot's wrap,
   // scale and offset), as one command; throws InputError naming the file when it cannot be read.
   void load_map(int object, MapSlot slot, const std::string& path);
