@@ -282,10 +282,12 @@ std::string format_bench_table(const BenchReport& r) {
   row("threads_speedup", r.threads_speedup, "x", "target >= 1.7");
   row("cache_bytes_per_pixel", r.cache_bytes_per_pixel, "B", "per-pixel factors");
   row("sample_cache_bytes_per_sample", r.sample_cache_bytes_per_sample, "B", "per-sample cache");
-  row("textured_retrace_ms", r.textured_retrace_ms, "ms", "2048^2 maps everywhere, normals on quads");
+  row("textured_retrace_ms", r.textured_retrace_ms, "ms",
+      "2048^2 maps everywhere, normals on quads");
   row("textured_retrace_ratio", r.textured_retrace_ratio, "", "over the untextured; target <= 1.3");
   row("textured_reshade_ms", r.textured_reshade_ms, "ms", "kd edit on the textured scene");
-  row("textured_reshade_ratio", r.textured_reshade_ratio, "", "over today's re-shade; target <= 1.5");
+  row("textured_reshade_ratio", r.textured_reshade_ratio, "",
+      "over today's re-shade; target <= 1.5");
   row("textured_bandwidth_floor_ms", r.textured_bandwidth_floor_ms, "ms",
       "streaming the textured re-shade's bytes");
   row("textured_cache_bytes_per_pixel", r.textured_cache_bytes_per_pixel, "B",

@@ -28,7 +28,8 @@ std::shared_ptr<const Texture> colour_map(int side) {
   image.samples.resize(static_cast<std::size_t>(side) * side * 4);
   for (int y = 0; y < side; ++y) {
     for (int x = 0; x < side; ++x) {
-      const unsigned h = (static_cast<unsigned>(x) * 73856093u) ^ (static_cast<unsigned>(y) * 19349663u);
+      const unsigned h =
+          (static_cast<unsigned>(x) * 73856093u) ^ (static_cast<unsigned>(y) * 19349663u);
       const float speckle = static_cast<float>(h % 1024) / 4096.0f;
       const bool tile = ((x / 64) + (y / 64)) % 2 == 0;
       float* t = &image.samples[(static_cast<std::size_t>(y) * side + x) * 4];
@@ -121,8 +122,10 @@ void measure_textured(const Scene& scene, const BenchOptions& options, BenchRepo
   Image total, textured_total;
   const int runs = std::max(15, 2 * options.runs);
   const Paired retrace = paired(
-      runs, [&] { render_1spp(textured, textured_embree, textured_cache, textured_factors,
-                              textured_total); },
+      runs,
+      [&] {
+        render_1spp(textured, textured_embree, textured_cache, textured_factors, textured_total);
+      },
       [&] { render_1spp(scene, embree, cache, factors, total); });
   report.textured_retrace_ms = retrace.f_ms;
   report.textured_retrace_ratio = retrace.ratio;
@@ -141,13 +144,14 @@ void measure_textured(const Scene& scene, const BenchOptions& options, BenchRepo
   report.textured_reshade_ms = reshade.f_ms;
   report.textured_reshade_ratio = reshade.ratio;
   const std::size_t pixels = static_cast<std::size_t>(scene.render.width) * scene.render.height;
-  const std::size_t read = textured_factors.bytes() +
-                           textured_factors.texel_channels * pixels * sizeof(float);
+  const std::size_t read =
+      textured_factors.bytes() + textured_factors.texel_channels * pixels * sizeof(float);
   report.textured_cache_bytes_per_pixel = static_cast<double>(read) / pixels;
   StreamingPass stream(read, pixels * sizeof(glm::vec3));
   report.textured_bandwidth_floor_ms =
-      paired(short_runs, [&] { stream.run(); },
-             [&] { combine_terms(textured_factors, textured_ctx, a, false); })
+      paired(
+          short_runs, [&] { stream.run(); },
+          [&] { combine_terms(textured_factors, textured_ctx, a, false); })
           .f_ms;
 }
 

@@ -5,9 +5,9 @@
 #include <mutex>
 #include <queue>
 
+#include <tbb/parallel_for.h>
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
-#include <tbb/parallel_for.h>
 
 #include "reference/lobe_sum.h"
 #include "reference/quadrature_cells.h"
@@ -122,7 +122,8 @@ struct EnvironmentQuadrature::Tree {
     double radius;
     Moments m;
     if (c.level >= 0) {
-      const std::size_t at = static_cast<std::size_t>(c.j) * level_width[static_cast<std::size_t>(c.level)] + c.i;
+      const std::size_t at =
+          static_cast<std::size_t>(c.j) * level_width[static_cast<std::size_t>(c.level)] + c.i;
       const glm::dvec4& cone = cones[static_cast<std::size_t>(c.level)][at];
       centre = glm::dvec3(cone);
       radius = cone.w;
@@ -215,7 +216,8 @@ EnvironmentQuadrature::EnvironmentQuadrature(std::shared_ptr<const EnvironmentMa
     const std::vector<Moments>& below = t.moments.back();
     for (int j = 0; j < h; ++j) {
       for (int i = 0; i < w; ++i) {
-        up[static_cast<std::size_t>(j / 2) * cw + i / 2] += below[static_cast<std::size_t>(j) * w + i];
+        up[static_cast<std::size_t>(j / 2) * cw + i / 2] +=
+            below[static_cast<std::size_t>(j) * w + i];
       }
     }
     t.moments.push_back(std::move(up));

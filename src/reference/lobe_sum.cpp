@@ -20,12 +20,14 @@ glm::dvec3 lobe_mean(const Image& map, const quadrature::Lobe& lobe, const glm::
   if (lobe.blinn) reach = std::min(kPi, 2.0 * reach);
   const double part = 0.049 / std::sqrt(a + 1.0);
   const int s = std::clamp(static_cast<int>(std::ceil((kPi / map.height) / part)), 1, 4096);
-  const long long w = static_cast<long long>(map.width) * s, h = static_cast<long long>(map.height) * s;
+  const long long w = static_cast<long long>(map.width) * s,
+                  h = static_cast<long long>(map.height) * s;
   // Parts near the horizon are cut 4 x 4 finer again.
   const double edge = 2.0 * kPi / std::min<long long>(w, 2 * h);
   const double theta_m = std::acos(std::clamp(mirror.y, -1.0, 1.0));
   const double phi_m = std::atan2(mirror.x, -mirror.z);
-  const long long row0 = std::max(0LL, static_cast<long long>(std::floor((theta_m - reach) / kPi * h)) - 1);
+  const long long row0 =
+      std::max(0LL, static_cast<long long>(std::floor((theta_m - reach) / kPi * h)) - 1);
   const long long row1 =
       std::min(h - 1, static_cast<long long>(std::floor((theta_m + reach) / kPi * h)) + 1);
   glm::dvec3 top(0.0);
@@ -47,7 +49,9 @@ glm::dvec3 lobe_mean(const Image& map, const quadrature::Lobe& lobe, const glm::
       const double x = (std::cos(reach) - std::cos(theta_m) * std::cos(theta)) / sm;
       if (x > 1.0 && std::abs(theta - theta_m) > 2.0 * kPi / h) continue;
       if (x > -1.0) {
-        half = static_cast<long long>(std::ceil(std::acos(std::clamp(x, -1.0, 1.0)) / (2.0 * kPi) * w)) + 2;
+        half = static_cast<long long>(
+                   std::ceil(std::acos(std::clamp(x, -1.0, 1.0)) / (2.0 * kPi) * w)) +
+               2;
       }
     }
     const long long centre = static_cast<long long>(std::floor((phi_m / (2.0 * kPi) + 0.5) * w));

@@ -33,9 +33,9 @@ struct LightBreakdown {
 // The environment's terms at the pixel's hit (reference_environment.h): exact integrals with
 // error bounds when shadows are off, estimates with standard errors when they are on.
 struct EnvironmentBreakdown {
-  bool present = false;   // the scene has an environment and the pixel a hit
+  bool present = false;    // the scene has an environment and the pixel a hit
   bool estimated = false;  // shadows on: estimates (error = standard error) not bounds
-  glm::dvec3 diffuse{0.0}, specular{0.0};            // kd (1/pi) int L cos vis, ks lobe mean
+  glm::dvec3 diffuse{0.0}, specular{0.0};  // kd (1/pi) int L cos vis, ks lobe mean
   glm::dvec3 diffuse_error{0.0}, specular_error{0.0};
   glm::dvec3 unshadowed_diffuse{0.0}, unshadowed_specular{0.0};  // the same without vis
   double visibility = 1.0;  // the visible share of the irradiance (1 with shadows off)

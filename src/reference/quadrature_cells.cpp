@@ -88,7 +88,7 @@ Moments rectangle_moments(const Image& map, bool unit, double u0, double u1, dou
 }
 
 Moments unit_moments(double u0, double u1, double t0, double t1) {
-  const double a0 = kPi * t0, a1 = kPi * t1;               // theta
+  const double a0 = kPi * t0, a1 = kPi * t1;                              // theta
   const double p0 = 2.0 * kPi * (u0 - 0.5), p1 = 2.0 * kPi * (u1 - 0.5);  // phi
   const double c0 = std::cos(a0), c1 = std::cos(a1), s0 = std::sin(a0), s1 = std::sin(a1);
   // Integrals over theta of sin, sin^2, sin^3, sin^2 cos, cos^2 sin, sin cos (all times dtheta).
@@ -107,7 +107,8 @@ Moments unit_moments(double u0, double u1, double t0, double t1) {
   Moments m;
   m.m0 = glm::dvec3(i_s * j_1);
   const glm::dvec3 m1(i_s2 * j_s, i_sc * j_1, -i_s2 * j_c);
-  const double m2[6] = {i_s3 * j_s2, i_s2c * j_s, -i_s3 * j_sc, i_c2s * j_1, -i_s2c * j_c, i_s3 * j_c2};
+  const double m2[6] = {i_s3 * j_s2, i_s2c * j_s,  -i_s3 * j_sc,
+                        i_c2s * j_1, -i_s2c * j_c, i_s3 * j_c2};
   for (int c = 0; c < 3; ++c) {
     m.m1[c] = m1;
     for (int k = 0; k < 6; ++k) m.m2[c][k] = m2[k];

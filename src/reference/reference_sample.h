@@ -70,7 +70,7 @@ struct Job {
   PowMode pow = PowMode::exact;
   MapFilter filter = MapFilter::trilinear;
   bool gouraud = false;
-  T fov_y = T(45);            // degrees: the ray cone's spread (texture/footprint.h)
+  T fov_y = T(45);                      // degrees: the ray cone's spread (texture/footprint.h)
   Vec3<T> ambient_light{0};             // A_scene + sum_i La_i
   std::vector<LightSource<T>> sources;  // per scene light, resolved in T (light_source.h)
   const ReferenceEnvironment* environment = nullptr;  // the scene's, when it has one
@@ -87,9 +87,8 @@ bool sky_shown(const Job<T>& job) {
 
 // The environment's terms at hit h (reference_environment.h), added to sum and recorded.
 template <class T>
-void shade_environment(const Job<T>& job, int object, const ReferenceHit<T>& h,
-                       const Material& m, std::uint32_t seed, PixelSums<T>& sum,
-                       PixelBreakdown* record) {
+void shade_environment(const Job<T>& job, int object, const ReferenceHit<T>& h, const Material& m,
+                       std::uint32_t seed, PixelSums<T>& sum, PixelBreakdown* record) {
   const Scene& scene = *job.scene;
   const Surface s{glm::vec3(h.p), glm::vec3(h.n), glm::vec3(h.ng), glm::vec3(h.v)};
   const glm::vec3 origin = shadow_ray_origin(s, static_cast<float>(h.t));
@@ -113,10 +112,10 @@ void shade_environment(const Job<T>& job, int object, const ReferenceHit<T>& h,
     rtcOccluded1(job.rtc, &context, &ray);
     return ray.tfar == -std::numeric_limits<float>::infinity();
   };
-  const ReferenceEnvironment::Reading e = job.environment->at(
-      glm::dvec3(h.n), glm::dvec3(h.v), m.shininess, scene.render.model,
-      m.diffuse != glm::vec3(0.0f), m.specular != glm::vec3(0.0f), scene.render.shadows, seed,
-      blocked);
+  const ReferenceEnvironment::Reading e =
+      job.environment->at(glm::dvec3(h.n), glm::dvec3(h.v), m.shininess, scene.render.model,
+                          m.diffuse != glm::vec3(0.0f), m.specular != glm::vec3(0.0f),
+                          scene.render.shadows, seed, blocked);
   sum.diffuse += Vec3<T>(m.diffuse) * Vec3<T>(e.diffuse);
   sum.specular += Vec3<T>(m.specular) * Vec3<T>(e.specular);
   if (record != nullptr) {
@@ -183,9 +182,9 @@ LightFactors<T> light_weights(const Job<T>& job, const Vec3<T>& p, const Vec3<T>
 // and a point outside a spot's cone add nothing as for Phong; f is 0 where n.v <= 0 (a shading
 // normal turned away from the eye).
 template <class T>
-void physical_terms(const ReferenceBrdf& brdf, const Vec3<T>& p, const Vec3<T>& n,
-                    const Vec3<T>& v, const LightSource<T>& light, const Light& colours,
-                    glm::dvec3& diffuse, glm::dvec3& specular) {
+void physical_terms(const ReferenceBrdf& brdf, const Vec3<T>& p, const Vec3<T>& n, const Vec3<T>& v,
+                    const LightSource<T>& light, const Light& colours, glm::dvec3& diffuse,
+                    glm::dvec3& specular) {
   const LightFactors<T> f = source_factors<T>(p, n, v, light, spot_at<T>(p, light), T(1));
   diffuse = specular = glm::dvec3(0.0);
   if (!(f.diffuse_weight > T(0))) return;
@@ -295,16 +294,16 @@ void shade_sample(const Job<T>& job, int x, int y, int s, int count, PixelSums<T
   }
   const Object& object = scene.objects[rh.hit.geomID];
   const bool is_mesh = object.type != ObjectType::sphere;
-  ReferenceHit<T> h =
-      is_mesh ? triangle_reference_hit<T>(*object.mesh, rh.hit.primID, job.camera.eye, dir,
-                                          T(rh.ray.tfar), T(rh.hit.u), T(rh.hit.v))
-              : sphere_reference_hit<T>(object, job.camera.eye, dir, T(rh.ray.tfar));
+  ReferenceHit<T> h = is_mesh
+                          ? triangle_reference_hit<T>(*object.mesh, rh.hit.primID, job.camera.eye,
+                                                      dir, T(rh.ray.tfar), T(rh.hit.u), T(rh.hit.v))
+                          : sphere_reference_hit<T>(object, job.camera.eye, dir, T(rh.ray.tfar));
   const Material& m = scene.materials[static_cast<std::size_t>(object.material)];
   MapValues<T> maps;  // 1, and n unchanged, where the material has no map
   MapFrame<T> frame;
   if (m.textured()) {
-    maps = hit_maps(job.fov_y, job.height, job.filter, object, rh.hit.primID, dir, count, h, m,
-                    frame);
+    maps =
+        hit_maps(job.fov_y, job.height, job.filter, object, rh.hit.primID, dir, count, h, m, frame);
     h.n = maps.n;
   }
   key.object = static_cast<std::int32_t>(rh.hit.geomID);
@@ -378,10 +377,10 @@ void shade_sample(const Job<T>& job, int x, int y, int s, int count, PixelSums<T
     }
   }
   if (job.environment != nullptr && job.environment->present()) {
-    const std::uint32_t seed = mix_bits(scene.render.seed ^
-                                        mix_bits(static_cast<std::uint32_t>(x) ^
-                                                 mix_bits(static_cast<std::uint32_t>(y) ^
-                                                          mix_bits(static_cast<std::uint32_t>(s)))));
+    const std::uint32_t seed =
+        mix_bits(scene.render.seed ^ mix_bits(static_cast<std::uint32_t>(x) ^
+                                              mix_bits(static_cast<std::uint32_t>(y) ^
+                                                       mix_bits(static_cast<std::uint32_t>(s)))));
     Material shaded = m;  // the constants times what the maps gave here
     shaded.diffuse = glm::vec3(kd);
     shaded.specular = glm::vec3(ks);

@@ -22,7 +22,7 @@ struct EnvironmentMap {
 struct Environment {
   std::string file;  // as the scene names it (relative to the scene's folder); "" with no map
   std::shared_ptr<const EnvironmentMap> map;  // null: no environment light
-  float intensity = 1.0f;     // radiance scale, >= 0
+  float intensity = 1.0f;                     // radiance scale, >= 0
   float rotation = 0.0f;      // degrees about +y; positive turns the map counter-clockwise
                               // seen from above
   bool as_background = true;  // primary rays that hit nothing see the map (else `background`)

@@ -16,7 +16,7 @@
 namespace gloss {
 namespace {
 
-const char* const kShippedScenes[] = {"spheres", "cornell",  "cornell-teapot",
+const char* const kShippedScenes[] = {"spheres", "cornell", "cornell-teapot",
                                       "teapot",  "presets", "studio-metals"};
 
 std::string shipped_scene(const std::string& name) {

@@ -10,8 +10,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "shading/environment.h"
 
@@ -74,15 +74,24 @@ TEST(EnvironmentQuadrature, AUniformMapGivesItsRadianceForEveryLobe) {
 double sh(int k, const D3& w) {
   const double x = w.x, y = w.y, z = w.z;
   switch (k) {
-    case 0: return 0.282095;
-    case 1: return 0.488603 * y;
-    case 2: return 0.488603 * z;
-    case 3: return 0.488603 * x;
-    case 4: return 1.092548 * x * y;
-    case 5: return 1.092548 * y * z;
-    case 6: return 0.315392 * (3.0 * z * z - 1.0);
-    case 7: return 1.092548 * x * z;
-    default: return 0.546274 * (x * x - y * y);
+    case 0:
+      return 0.282095;
+    case 1:
+      return 0.488603 * y;
+    case 2:
+      return 0.488603 * z;
+    case 3:
+      return 0.488603 * x;
+    case 4:
+      return 1.092548 * x * y;
+    case 5:
+      return 1.092548 * y * z;
+    case 6:
+      return 0.315392 * (3.0 * z * z - 1.0);
+    case 7:
+      return 1.092548 * x * z;
+    default:
+      return 0.546274 * (x * x - y * y);
   }
 }
 
@@ -91,8 +100,8 @@ TEST(EnvironmentQuadrature, SphericalHarmonicsGiveTheKnownIrradiance) {
   const double coeff[3][9] = {{2.0, 0.4, -0.3, 0.2, 0.15, -0.1, 0.2, 0.05, -0.12},
                               {1.5, -0.2, 0.1, 0.3, -0.05, 0.2, -0.1, 0.1, 0.08},
                               {1.8, 0.1, 0.35, -0.25, 0.1, 0.05, 0.15, -0.2, 0.1}};
-  const double band[9] = {kPi, 2 * kPi / 3, 2 * kPi / 3, 2 * kPi / 3, kPi / 4,
-                          kPi / 4, kPi / 4, kPi / 4, kPi / 4};
+  const double band[9] = {kPi,     2 * kPi / 3, 2 * kPi / 3, 2 * kPi / 3, kPi / 4,
+                          kPi / 4, kPi / 4,     kPi / 4,     kPi / 4};
   const auto map = map_of(1024, 512, [&](const D3& w) {
     glm::vec3 l(0.0f);
     for (int c = 0; c < 3; ++c) {
@@ -163,7 +172,8 @@ TEST(EnvironmentQuadrature, StudioMapCostsAndBoundsArePrinted) {
       continue;
     }
     const QuadratureResult s = q.specular(ShadingModel::phong, n, v, r, alpha);
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     std::printf("[quadrature] specular alpha %g: %.6g +- %.2g, %lld cells, %.2f ms\n", alpha,
                 s.value.x, s.bound.x, s.cells, ms);
     // The images' texel sum agrees within the bound (and its own ~1e-4).
@@ -172,15 +182,16 @@ TEST(EnvironmentQuadrature, StudioMapCostsAndBoundsArePrinted) {
     }
     const auto t1 = std::chrono::steady_clock::now();
     const double sum = q.specular_sum(ShadingModel::phong, n, v, r, alpha).x;
-    std::printf("[quadrature] texel sum alpha %g: %.6g in %.2f ms\n", alpha, sum,
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count());
+    std::printf(
+        "[quadrature] texel sum alpha %g: %.6g in %.2f ms\n", alpha, sum,
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count());
     EXPECT_LE(std::abs(sum - s.value.x), s.bound.x + 2e-4 * s.value.x) << alpha;
   }
   const auto t0 = std::chrono::steady_clock::now();
   const QuadratureResult d = q.diffuse(n);
-  std::printf("[quadrature] diffuse: %.6g +- %.2g, %lld cells, %.2f ms\n", d.value.x, d.bound.x,
-              d.cells,
-              std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  std::printf(
+      "[quadrature] diffuse: %.6g +- %.2g, %lld cells, %.2f ms\n", d.value.x, d.bound.x, d.cells,
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
 }
 
 }  // namespace

@@ -6,8 +6,8 @@
 // 1 x 1 map, alpha 0 to 1e6).
 #include <cmath>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "engine/renderer.h"
 #include "reference/reference_renderer.h"
@@ -24,13 +24,13 @@ std::shared_ptr<const EnvironmentMap> constant_map(int w, int h, const glm::vec3
 }
 
 // One sphere in an environment, no lights, no ambient; kd and ks given.
-Scene sphere_in(std::shared_ptr<const EnvironmentMap> map, const glm::vec3& kd,
-                const glm::vec3& ks, float alpha) {
+Scene sphere_in(std::shared_ptr<const EnvironmentMap> map, const glm::vec3& kd, const glm::vec3& ks,
+                float alpha) {
   Scene scene;
   scene.camera.eye = {0.0f, 0.5f, 4.0f};
   scene.ambient = glm::vec3(0.0f);
-  const int m =
-      test::add_material(scene, "m", test::make_material(glm::vec3(0.0f), kd, ks, glm::vec3(0.0f), alpha));
+  const int m = test::add_material(
+      scene, "m", test::make_material(glm::vec3(0.0f), kd, ks, glm::vec3(0.0f), alpha));
   test::add_sphere(scene, {0, 0, 0}, 1.0f, m);
   scene.environment.map = std::move(map);
   scene.environment.file = "test";

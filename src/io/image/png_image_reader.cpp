@@ -75,7 +75,8 @@ FloatImage read_png_image(const std::string& path, const ImageReadOptions& optio
   image.samples.resize(static_cast<std::size_t>(job.width) * job.height * channels);
   const std::size_t count = image.samples.size();
   for (std::size_t i = 0; i < count; ++i) {
-    const std::size_t v = depth == 8 ? raw[i] : reinterpret_cast<const std::uint16_t*>(raw.data())[i];
+    const std::size_t v =
+        depth == 8 ? raw[i] : reinterpret_cast<const std::uint16_t*>(raw.data())[i];
     const bool is_alpha = alpha >= 0 && static_cast<int>(i % channels) == alpha;
     image.samples[i] = is_alpha ? plain[v] : linear[v];
   }

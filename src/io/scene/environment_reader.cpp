@@ -48,9 +48,8 @@ std::shared_ptr<const EnvironmentMap> read_environment_map(const std::string& pa
   if (negative > 0 && warnings != nullptr && -lowest > 0.01 * mean) {
     char text[64];
     std::snprintf(text, sizeof text, "%g", static_cast<double>(lowest));
-    warnings->push_back(path + ": " + std::to_string(negative) +
-                        " negative samples (down to " + text +
-                        ") read as 0: radiance is never negative");
+    warnings->push_back(path + ": " + std::to_string(negative) + " negative samples (down to " +
+                        text + ") read as 0: radiance is never negative");
   }
   return map;
 }

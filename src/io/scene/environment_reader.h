@@ -18,9 +18,8 @@ std::uint64_t environment_extra_bytes_per_texel();
 
 // Reads path against budget_bytes (0: the memory budget) already less what the scene holds
 // besides. Throws InputError naming path; appends warnings (negative samples set to 0).
-std::shared_ptr<const EnvironmentMap> read_environment_map(const std::string& path,
-                                                           std::uint64_t budget_bytes = 0,
-                                                           std::vector<std::string>* warnings =
-                                                               nullptr);
+std::shared_ptr<const EnvironmentMap> read_environment_map(
+    const std::string& path, std::uint64_t budget_bytes = 0,
+    std::vector<std::string>* warnings = nullptr);
 
 }  // namespace gloss

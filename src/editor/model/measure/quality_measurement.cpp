@@ -77,8 +77,8 @@ void QualityMeasurement::start(const Scene& scene, TradeoffOptions options) {
     // Knobs a scene has no rows for (tradeoff.h): no teapot, no environment, no maps.
     const bool maps = knob == Knob::map_filter || knob == Knob::map_resolution;
     const bool environment = knob == Knob::env_samples || knob == Knob::env_resolution;
-    if (chosen && (knob != Knob::tessellation || has_teapot(scene)) &&
-        (!maps || has_maps(scene)) && (!environment || scene.environment.present())) {
+    if (chosen && (knob != Knob::tessellation || has_teapot(scene)) && (!maps || has_maps(scene)) &&
+        (!environment || scene.environment.present())) {
       m_knobs.push_back(knob);
     }
   }
