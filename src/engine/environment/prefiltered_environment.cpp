@@ -247,14 +247,22 @@ LevelBlend PrefilteredEnvironment::blend(float alpha) const {
 
 glm::vec3 PrefilteredEnvironment::diffuse(const glm::vec3& n) const {
   const glm::vec2 uv = map_uv(n);
-  return map_bilinear<float>(m_levels[1], uv.x, uv.y);
+  return diffuse_at(uv.x, uv.y);
 }
 
 glm::vec3 PrefilteredEnvironment::specular(const LevelBlend& b, const glm::vec3& r) const {
   const glm::vec2 uv = map_uv(r);
-  const glm::vec3 la = map_bilinear<float>(image(b.a), uv.x, uv.y);
-  if (b.wb == 0.0f) return la;
-  return la + (map_bilinear<float>(image(b.b), uv.x, uv.y) - la) * b.wb;
+  return specular_at(b, uv.x, uv.y);
+}
+
+glm::vec3 PrefilteredEnvironment::diffuse_at(float u, float t) const {
+  return map_bilinear<float>(m_levels[1], u, t);
+}
+
+glm::vec3 PrefilteredEnvironment::specular_at(const LevelBlend& b, float u, float t) const {
+  const glm::vec3 la = map_bilinear<float>(image(b.a), u, t);
+  if (b.wb == 0.0f) return la;  // one level (or the map) alone: the second read is not needed
+  return la + (map_bilinear<float>(image(b.b), u, t) - la) * b.wb;
 }
 
 std::uint64_t PrefilteredEnvironment::bytes() const {

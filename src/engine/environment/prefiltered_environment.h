@@ -63,6 +63,10 @@ class PrefilteredEnvironment {
   glm::vec3 specular(float alpha, const glm::vec3& r) const { return specular(blend(alpha), r); }
   // The same with the levels already chosen (per material, once: EnvironmentContext).
   glm::vec3 specular(const LevelBlend& blend, const glm::vec3& r) const;
+  // The same at map coordinates (u, t) already computed (the lanes compute them all at once:
+  // environment_uv_lanes.h).
+  glm::vec3 diffuse_at(float u, float t) const;
+  glm::vec3 specular_at(const LevelBlend& blend, float u, float t) const;
 
   std::uint64_t bytes() const;
 
