@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "engine/environment/environment_taps.h"
 #include "engine/environment/environment_uv_lanes.h"
 #include "engine/environment/prefiltered_environment.h"
 #include "engine/trace/sample_packet.h"
@@ -50,14 +51,50 @@ void environment_lanes(const SamplePacket& packet, const SurfaceLanes& surfaces,
   const PrefilteredEnvironment& maps = *env.maps;
   LaneDirections d;
   lane_directions(surfaces, env.rotation, d);
+  // Per lane its material's terms and levels (lanes without a specular term read level 1, as
+  // the diffuse term: valid taps, never used).
+  alignas(64) std::int32_t diffuse_on[kLanes], level_a[kLanes], level_b[kLanes];
+  alignas(64) std::int32_t dw[kLanes], dh[kLanes], aw[kLanes], ah[kLanes], bw[kLanes], bh[kLanes];
+  alignas(64) float wb[kLanes];
+  const Image& diffuse_level = maps.image(1);
+  bool any_b = false;
   for (int i = 0; i < kLanes; ++i) {
-    glm::vec3 diffuse(0.0f), specular(0.0f);
     const std::int32_t object = packet.object[i];
+    diffuse_on[i] = 0;
+    level_a[i] = level_b[i] = -1;
+    wb[i] = 0.0f;
     if (surfaces.hit[i] != 0 && object >= 0) {
       const auto m =
           static_cast<std::size_t>(env.object_material[static_cast<std::size_t>(object)]);
-      if (env.diffuse[m] != 0) diffuse = maps.diffuse_at(d.nu[i], d.nt[i]);
-      if (env.specular[m] != 0) specular = maps.specular_at(env.blend[m], d.ru[i], d.rt[i]);
+      diffuse_on[i] = env.diffuse[m];
+      if (env.specular[m] != 0) {
+        const LevelBlend& b = env.blend[m];
+        level_a[i] = b.a;
+        if (b.wb != 0.0f) {  // one level (or the map) alone: no second read
+          level_b[i] = b.b;
+          wb[i] = b.wb;
+          any_b = true;
+        }
+      }
+    }
+    const Image& a = maps.image(level_a[i] < 0 ? 1 : level_a[i]);
+    const Image& b = maps.image(level_b[i] < 0 ? 1 : level_b[i]);
+    dw[i] = diffuse_level.width, dh[i] = diffuse_level.height;
+    aw[i] = a.width, ah[i] = a.height, bw[i] = b.width, bh[i] = b.height;
+  }
+  BilinearTaps diffuse_taps, a_taps, b_taps;
+  bilinear_taps(d.nu, d.nt, dw, dh, diffuse_taps);
+  bilinear_taps(d.ru, d.rt, aw, ah, a_taps);
+  if (any_b) bilinear_taps(d.ru, d.rt, bw, bh, b_taps);
+  for (int i = 0; i < kLanes; ++i) {
+    glm::vec3 diffuse(0.0f), specular(0.0f);
+    if (diffuse_on[i] != 0) diffuse = bilinear_value(diffuse_level.pixels.data(), diffuse_taps, i);
+    if (level_a[i] >= 0) {  // PrefilteredEnvironment::specular_at, the same blend
+      specular = bilinear_value(maps.image(level_a[i]).pixels.data(), a_taps, i);
+      if (level_b[i] >= 0) {
+        const glm::vec3 lb = bilinear_value(maps.image(level_b[i]).pixels.data(), b_taps, i);
+        specular = specular + (lb - specular) * wb[i];
+      }
     }
     for (int c = 0; c < 3; ++c) {
       out[c].diffuse_weight[i] = diffuse[c];

@@ -1,7 +1,10 @@
 #include "engine/environment/environment_stage.h"
 
+#include <cstdint>
 #include <vector>
 
+#include "engine/environment/environment_taps.h"
+#include "engine/environment/environment_uv_lanes.h"
 #include "engine/parallel_loops.h"
 #include "engine/trace/refined_samples.h"
 #include "engine/trace/sample_packet.h"
@@ -32,13 +35,28 @@ void store_environment(const SamplePacket& packet, const SampleCache& cache,
 
 void sky_lanes(const SamplePacket& packet, const Environment& environment,
                const EnvironmentRotation<float>& rotation, glm::vec3 (&out)[kLanes]) {
+  // The map-frame directions of every lane, then their map coordinates in one vector loop
+  // (environment_uv_lanes.h: the scalar atan2f / acosf per missed lane cost as much as the rest).
+  alignas(64) float mx[kLanes], my[kLanes], mz[kLanes], u[kLanes], t[kLanes];
+  const float c = rotation.cos_a, sn = rotation.sin_a;
+  for (int i = 0; i < kLanes; ++i) {  // masked-off lanes: +y, never read
+    const bool on = packet.valid[i] != 0;
+    const float dx = on ? static_cast<float>(packet.dir_x[i]) : 0.0f;
+    const float dz = on ? static_cast<float>(packet.dir_z[i]) : 0.0f;
+    mx[i] = dx * c - dz * sn;  // to_map_frame (shading/environment.h)
+    my[i] = on ? static_cast<float>(packet.dir_y[i]) : 1.0f;
+    mz[i] = dx * sn + dz * c;
+  }
+  map_uv_lanes(mx, my, mz, u, t);
+  const Image& map = environment.map->radiance;
+  alignas(64) std::int32_t width[kLanes], height[kLanes];
+  for (int i = 0; i < kLanes; ++i) width[i] = map.width, height[i] = map.height;
+  BilinearTaps taps;  // map_bilinear's, for all lanes at once (environment_taps.h)
+  bilinear_taps(u, t, width, height, taps);
   for (int i = 0; i < kLanes; ++i) {
     out[i] = glm::vec3(0.0f);
     if (packet.valid[i] == 0 || packet.object[i] >= 0) continue;
-    const glm::vec3 d(static_cast<float>(packet.dir_x[i]), static_cast<float>(packet.dir_y[i]),
-                      static_cast<float>(packet.dir_z[i]));
-    const glm::vec2 uv = map_uv(to_map_frame(d, rotation));
-    out[i] = map_bilinear<float>(environment.map->radiance, uv.x, uv.y);
+    out[i] = bilinear_value(map.pixels.data(), taps, i);
   }
 }
 
