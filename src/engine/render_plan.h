@@ -49,7 +49,11 @@ struct TexturePlan {
 struct PlaneShape {
   std::size_t slots = 0;
   std::size_t texels = 0;
-  PlaneShape(std::size_t s, std::size_t t = 0) : slots(s), texels(t) {}  // NOLINT: from a count
+  // The last this many slots have cosines of 1 everywhere (the environment's: its lobe is in its
+  // weights), so their cosine arrays are neither stored nor kept (sample_cache.h).
+  std::size_t unit_cosine_slots = 0;
+  PlaneShape(std::size_t s, std::size_t t = 0, std::size_t u = 0)  // NOLINT: from a count
+      : slots(s), texels(t), unit_cosine_slots(u) {}
 };
 
 struct RenderPlan {
@@ -75,7 +79,9 @@ struct RenderPlan {
 
   // Slots of light factors per sample: the planned lights, then the environment's three.
   std::size_t slots() const { return lights.size() + (environment ? 3 : 0); }
-  PlaneShape plane_shape() const { return {slots(), textures.channels()}; }
+  PlaneShape plane_shape() const {
+    return {slots(), textures.channels(), environment ? std::size_t(3) : std::size_t(0)};
+  }
   std::size_t environment_slot(int channel) const {
     return lights.size() + static_cast<std::size_t>(channel);
   }

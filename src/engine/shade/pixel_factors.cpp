@@ -156,7 +156,7 @@ bool build_centre_factors(const SampleCache& cache, const RenderContext& ctx, Pi
         for (std::size_t li = 0; li < lights; ++li) {
           const LightFactorPlane& f = plane.lights[li];
           single_sample_light(exponents, pow_mode, &out.material[idx], &f.diffuse_weight[idx],
-                              &f.spec_weight[idx], f.cosine(model) + idx, m,
+                              &f.spec_weight[idx], f.cosine(model, idx), m,
                               &out.diffuse[li * pixels + idx], &out.specular[li * pixels + idx],
                               scaled);
         }
@@ -216,10 +216,10 @@ bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pix
                 ctx, alpha_channel >= 0 ? plane.texels[alpha_channel].data() + idx0 : nullptr, m,
                 storage);
             if (scaled != nullptr) {
-              scaled_power_lanes(exponents, mat, f.cosine(model) + idx0, power, m, pow_mode,
+              scaled_power_lanes(exponents, mat, f.cosine(model, idx0), power, m, pow_mode,
                                  *scaled);
             } else {
-              specular_power_lanes(exponents, mat, f.cosine(model) + idx0, power, m, pow_mode);
+              specular_power_lanes(exponents, mat, f.cosine(model, idx0), power, m, pow_mode);
             }
             for (int i = 0; i < m; ++i) spec[i] = f.spec_weight[idx0 + i] * power[i];
           }

@@ -68,10 +68,10 @@ bool refine_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pi
               ctx, alpha_channel >= 0 ? plane.texels[alpha_channel].data() + e0 + s0 : nullptr, m,
               storage);
           if (scaled != nullptr) {
-            scaled_power_lanes(exponents, &material[s0], f.cosine(model) + e0 + s0, power, m,
+            scaled_power_lanes(exponents, &material[s0], f.cosine(model, e0 + s0), power, m,
                                scene.render.pow, *scaled);
           } else {
-            specular_power_lanes(exponents, &material[s0], f.cosine(model) + e0 + s0, power, m,
+            specular_power_lanes(exponents, &material[s0], f.cosine(model, e0 + s0), power, m,
                                  scene.render.pow);
           }
           for (int i = 0; i < m; ++i) {

@@ -136,6 +136,12 @@ bool copy_kept_samples(const SamplePlane& from, SamplePlane& to,
       for (std::size_t li = 0; li < to.lights.size(); ++li) {
         copy(from.lights[li].diffuse_weight, to.lights[li].diffuse_weight);
         copy(from.lights[li].spec_weight, to.lights[li].spec_weight);
+        if (to.lights[li].unit_cosines) continue;  // no arrays (sample_cache.h)
+        if (from.lights[li].unit_cosines) {        // all 1, not kept
+          std::fill(&to.lights[li].cos_phong[b], &to.lights[li].cos_phong[b] + spp, 1.0f);
+          std::fill(&to.lights[li].cos_blinn[b], &to.lights[li].cos_blinn[b] + spp, 1.0f);
+          continue;
+        }
         copy(from.lights[li].cos_phong, to.lights[li].cos_phong);
         copy(from.lights[li].cos_blinn, to.lights[li].cos_blinn);
       }

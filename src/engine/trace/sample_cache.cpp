@@ -14,15 +14,19 @@ void size_plane(SamplePlane& plane, std::size_t pixels, PlaneShape shape) {
   plane.u.resize(pixels);
   plane.v.resize(pixels);
   plane.lights.resize(shape.slots);
-  for (LightFactorPlane& l : plane.lights) l.resize(pixels);
+  for (std::size_t k = 0; k < shape.slots; ++k) {
+    plane.lights[k].resize(pixels, k + shape.unit_cosine_slots >= shape.slots);
+  }
   plane.texels.resize(shape.texels);
   for (UninitializedBuffer<float>& t : plane.texels) t.resize(pixels);
 }
 
 namespace {
 std::size_t plane_bytes(const SamplePlane& p) {
+  std::size_t cosines = 0;  // empty in the unit_cosines slots
+  for (const LightFactorPlane& l : p.lights) cosines += l.cos_phong.size() + l.cos_blinn.size();
   return p.object.size() * (sizeof(std::int32_t) + sizeof(std::uint32_t) + 3 * sizeof(float)) +
-         p.object.size() * p.lights.size() * 4 * sizeof(float) +
+         p.object.size() * p.lights.size() * 2 * sizeof(float) + cosines * sizeof(float) +
          p.object.size() * p.texels.size() * sizeof(float);
 }
 }  // namespace

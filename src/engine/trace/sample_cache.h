@@ -10,23 +10,35 @@
 
 #include "base/uninitialized_buffer.h"
 #include "engine/render_context.h"
+#include "engine/simd/lanes.h"
 #include "scene/camera.h"
 #include "shading/shading.h"
 
 namespace gloss {
 
+// Cosines of 1 for up to kLanes lanes: what a slot with unit_cosines reads.
+alignas(64) inline constexpr float kUnitCosines[kLanes] = {1, 1, 1, 1, 1, 1, 1, 1,
+                                                           1, 1, 1, 1, 1, 1, 1, 1};
+
 // shading.h's LightFactors of one planned light for every pixel of a plane.
 struct LightFactorPlane {
   UninitializedBuffer<float> diffuse_weight, spec_weight, cos_phong, cos_blinn;
+  // The cosines are 1 everywhere (the environment's slots) and their arrays are empty: 8 bytes
+  // per sample and slot neither written by the first pass nor read back.
+  bool unit_cosines = false;
 
-  void resize(std::size_t pixels) {
+  void resize(std::size_t pixels, bool unit = false) {
+    unit_cosines = unit;
     diffuse_weight.resize(pixels);
     spec_weight.resize(pixels);
-    cos_phong.resize(pixels);
-    cos_blinn.resize(pixels);
+    cos_phong.resize(unit ? 0 : pixels);
+    cos_blinn.resize(unit ? 0 : pixels);
   }
-  const float* cosine(ShadingModel model) const {
-    return model == ShadingModel::phong ? cos_phong.data() : cos_blinn.data();
+  // The cosines of the model from sample `at` on; with unit_cosines, kLanes of them (every
+  // reader takes at most kLanes at a time).
+  const float* cosine(ShadingModel model, std::size_t at) const {
+    if (unit_cosines) return kUnitCosines;
+    return (model == ShadingModel::phong ? cos_phong.data() : cos_blinn.data()) + at;
   }
 };
 

@@ -302,6 +302,7 @@ void store_light(const SamplePacket& packet, int width, const LightLanes& lanes,
                  LightFactorPlane& plane) {
   stream_lanes(packet, width, lanes.diffuse_weight, plane.diffuse_weight.data());
   stream_lanes(packet, width, lanes.spec_weight, plane.spec_weight.data());
+  if (plane.unit_cosines) return;  // all 1, not kept (sample_cache.h)
   stream_lanes(packet, width, lanes.cos_phong, plane.cos_phong.data());
   stream_lanes(packet, width, lanes.cos_blinn, plane.cos_blinn.data());
 }
