@@ -3,7 +3,8 @@
 // geometry factors of the shading contract (shading.h LightFactors). Stored plane by plane
 // (plane s holds sample s of every pixel), so progressive passes append planes. Every field is
 // its own array (structure of arrays): packets store and re-shading loops read them as vectors.
-// Bytes per sample: 20 for the hit + 16 per planned light + 4 per texel channel (maps).
+// Bytes per sample: 20 for the hit + 16 per planned light (8 per environment slot: no cosines)
+// + 4 per texel channel (maps).
 #include <cstdint>
 #include <functional>
 #include <vector>
