@@ -9,7 +9,7 @@ GLOSS_JOBS="${GLOSS_JOBS:-$(nproc)}"
 GLOSS_PACKAGES=(
   cmake g++ clang libglfw3-dev libimgui-dev libglm-dev python3-glad libstb-dev
   libassimp-dev assimp-testmodels libembree-dev libtbb-dev nlohmann-json3-dev libcli11-dev libpng-dev
-  libopenexr-dev libboost-dev libgtest-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri libegl-dev libclang-rt-14-dev
+  libjpeg-dev libopenexr-dev libboost-dev libgtest-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri libegl-dev libclang-rt-14-dev
   imagemagick xdotool python3-matplotlib desktop-file-utils nodejs curl
 )
 

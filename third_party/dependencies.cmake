@@ -23,6 +23,8 @@ find_package(PNG REQUIRED)
 # OpenEXR (io only, private to gloss_io): the linear image as 32-bit float EXR beside the PFM.
 # Debian 12: libopenexr-dev 3.1.5 (with Imath 3.1.6).
 find_package(OpenEXR 3 REQUIRED)
+# JPEG maps through libjpeg-turbo (libjpeg-dev 2.1.5; io/image/jpeg_reader.cpp says why not stb).
+find_package(JPEG REQUIRED)
 # Numerical integration (analysis only, private, header only): Boost.Math's adaptive
 # Gauss-Kronrod quadrature with its error estimate, for the lobe view's directional albedo.
 # Debian 12: libboost-dev 1.74.

@@ -1,6 +1,6 @@
 #pragma once
 // Map images read into linear float (base/float_image.h): PNG (8 and 16 bits, every colour type,
-// through libpng), JPEG (stb_image), Radiance HDR (stb_image) and OpenEXR (the OpenEXR library:
+// through libpng), JPEG (libjpeg-turbo), Radiance HDR (stb_image) and OpenEXR (the OpenEXR library:
 // Blender's studio lights are DWAB-compressed). Environment maps and textures read them; each
 // reader checks the size its header claims against the limits and the memory budget
 // (base/memory_budget.h) before it allocates, and refuses samples that are not finite. Every

@@ -1,7 +1,7 @@
 #pragma once
 // Reading a file's bytes through stb_image's callbacks (io's own, private): stb reads past the
 // end of a truncated file as zeros without an error, but it asks its callbacks for more when it
-// does, which is how a truncated file is told from a whole one (the HDR and JPEG readers).
+// does, which is how a truncated file is told from a whole one (the HDR reader).
 #include <cstddef>
 #include <string>
 #include <vector>
