@@ -29,4 +29,9 @@ ChangeClass classify_change(const Scene& before, const Scene& after, const Scene
   return change;
 }
 
+bool changes_sky(const Scene& before, const Scene& after, ChangeClass change) {
+  return change == ChangeClass::full || before.environment.map != after.environment.map ||
+         before.environment.rotation != after.environment.rotation;
+}
+
 }  // namespace gloss

@@ -14,4 +14,11 @@ ChangeClass classify_change(const Scene& before, const Scene& after);
 // The same from their diff_scenes, for a caller that needs the diff too.
 ChangeClass classify_change(const Scene& before, const Scene& after, const SceneDiff& diff);
 
+// Whether an edit of class `change` from before to after changes the sky (the map seen where
+// primary rays miss, environment/environment_stage.h): it follows the camera and the samples
+// (`full`), the environment's map (another, none or a first one) and its rotation. Its intensity
+// and as_background are applied as the terms are recombined, and every other edit keeps the
+// primary rays: those keep the sky, whatever their class (a `texture` or `light` edit too).
+bool changes_sky(const Scene& before, const Scene& after, ChangeClass change);
+
 }  // namespace gloss

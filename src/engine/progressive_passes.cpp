@@ -74,6 +74,7 @@ bool ProgressiveRenderer::Impl::step() {
       dirty == ChangeClass::none && samples_done() ? next_environment_steps(ctx, environment) : 0;
   if (restart) {
     redo = ChangeClass::full;
+    sky_current = false;
     ok = trace_single_sample(cache, ctx, factors, total);
     factors_done = total_done = true;
   } else if (dirty == ChangeClass::environment) {
@@ -96,6 +97,7 @@ bool ProgressiveRenderer::Impl::step() {
   } else if (next_level) {
     // The next resolution is traced aside; the current one stays until it is complete.
     redo = ChangeClass::exponent;  // cancelled: the factors must be rebuilt from `previous`
+    sky_current = false;
     ok = trace_single_sample(cache, ctx, factors, total);
     factors_done = total_done = true;
     if (ok) {
@@ -112,7 +114,11 @@ bool ProgressiveRenderer::Impl::step() {
   } else if (dirty == ChangeClass::none && adaptive()) {
     redo = ChangeClass::exponent;  // cancelled: the factors are rebuilt from the samples
     const std::vector<std::uint32_t> placed = cache.refined.pixels;
+    // The same placement keeps the refined samples' hits (re-lit at most), and so the sky.
+    const bool sky_kept = sky_current;
+    sky_current = false;
     ok = refine(total, total_done);
+    sky_current = sky_kept && ok && cache.refined.pixels == placed;
     // A new placement of the refined samples (re-chosen after an edit): the environment's
     // estimates start again, their sums being per refined entry and new entries holding the
     // fast path (remapping the kept entries' sums instead would keep their estimates). The centre
@@ -125,19 +131,20 @@ bool ProgressiveRenderer::Impl::step() {
   } else if (dirty == ChangeClass::none) {
     // Double the samples each pass: 1, 2, 4, 8 ... up to the target.
     const int have = cache.samples();
+    sky_current = false;
     ok = add_samples(cache, ctx, std::min(have, scene->render.spp - have));
   }
   if (ok && dirty != ChangeClass::shade && !factors_done) {
     redo = std::max(redo, ChangeClass::exponent);
     ok = adaptive_state.build_factors(cache, ctx, factors);
   }
-  // The sky follows the camera, the samples and the environment's map and rotation (a fused
-  // pass with the total made it already).
+  // The sky follows the camera, the samples and the environment's map and rotation, whatever
+  // the edit's class (changes_sky): it is made again only when one of those changed, unless a
+  // fused pass with the total made it already (emptied when the plan has none).
   const bool fused_total = total_done && total != nullptr;
-  if (ok && ctx.plan.sky && dirty != ChangeClass::shade && dirty != ChangeClass::exponent &&
-      !fused_total) {
-    ok = environment_sky(cache, ctx, factors);
-  }
+  const bool sky_made = !sky_current && !fused_total;
+  if (ok && sky_made) ok = environment_sky(cache, ctx, factors);
+  if (ok) sky_current = true;
   ctx.rays = nullptr;
   if (!ok) {
     dirty = std::max(dirty, redo);
@@ -150,6 +157,7 @@ bool ProgressiveRenderer::Impl::step() {
   const double pass_ms = ms_between(start, Clock::now());
   if ((restart || next_level) && level == options.preview_levels) last_full_pass_ms = pass_ms;
   if (edit_pass) edit_preview.first_pass(edit, pass_ms, true);
+  frame->info.sky_sampled = ctx.plan.sky && (sky_made || fused_total);
   publish(frame, pass_ms, rays.load(), converged_state());
   return true;
 }
@@ -164,6 +172,7 @@ bool ProgressiveRenderer::Impl::preview_edit(int shift, Clock::time_point start)
   ctx.rays = nullptr;
   if (!ok) return false;  // `dirty` stays as it was
   published_centres = false;
+  frame->info.sky_sampled = ctx.plan.sky;  // a fresh trace of its own
   publish_frame(frame, w, h, 1, ms_between(start, Clock::now()), rays.load(), false);
   return true;
 }

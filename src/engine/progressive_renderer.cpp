@@ -2,6 +2,7 @@
 
 #include <pthread.h>
 
+#include "engine/change_class.h"
 #include "engine/progressive_state.h"
 #include "engine/render_plan.h"
 #include "scene/fields/scene_diff.h"
@@ -57,6 +58,7 @@ bool ProgressiveRenderer::Impl::take_inbox() {
   const ChangeClass change =
       scene == nullptr ? ChangeClass::full : classify_change(*scene, *next, diff);
   cause = change;
+  if (scene == nullptr || changes_sky(*scene, *next, change)) sky_current = false;
   pass = 0;
   published_centres = false;  // the published frame shows an older scene
   adaptive_state.edit(change, cache);

@@ -24,6 +24,7 @@ struct FrameInfo {
   double since_change_ms = 0;             // from the set_scene() of this generation to publication
   long long rays = 0;                     // primary + shadow rays traced for this pass
   std::size_t refined_traced = 0;         // adaptive: pixels whose refined samples it traced anew
+  bool sky_sampled = false;               // it sampled the sky anew (the map where rays missed)
   bool converged = false;                 // nothing more will be computed for this scene
   ChangeClass cause = ChangeClass::full;  // what the edit that led here invalidated
 };

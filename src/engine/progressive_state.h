@@ -68,6 +68,10 @@ struct ProgressiveRenderer::Impl {
   int level = 0;                  // 0 .. preview_levels - 1: coarse passes; preview_levels: full
   double last_full_pass_ms = -1;  // the last full-resolution 1-spp pass (preview_budget_ms)
   ChangeClass dirty = ChangeClass::none;
+  // factors.sky belongs to the cache's samples and the scene's map and rotation (false after an
+  // edit that changes_sky, and from the start of a pass that changes the samples until it
+  // completes): only then is it made again.
+  bool sky_current = false;
   int pass = 0;
   std::uint64_t worker_generation = 0;
   Clock::time_point worker_changed_at;

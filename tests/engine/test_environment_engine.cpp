@@ -1,7 +1,8 @@
 // The environment in the interactive engine: each edit of it falls in the class that redoes just
 // enough (docs/engine.md, "What an edit invalidates"), kd and ks edits under it recombine without
 // a ray, a shininess edit and a rotation trace no primary ray, and every converged frame equals
-// gloss-cli's one-shot render of the same scene (fast path and exact estimates alike).
+// gloss-cli's one-shot render of the same scene (fast path and exact estimates alike). The sky
+// is sampled again only when the rays, the map or its rotation change.
 #include <mutex>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "engine/progressive_renderer.h"
 #include "engine/renderer.h"
 #include "support/scene_fixtures.h"
+#include "support/test_maps.h"
 
 namespace gloss {
 namespace {
@@ -166,6 +168,58 @@ TEST(EnvironmentEngine, ExactEstimatesConvergeToTheOneShotImageWithoutPrimaryRay
     EXPECT_EQ(frames.seen.size(), 1u);
   }
   EXPECT_EQ(frame->info.rays, 0);
+  expect_fresh(*frame, scene);
+  engine.set_on_publish(nullptr);
+}
+
+// The frames of the last converge(): whether any sampled the sky, and the first one's cause.
+bool any_sky_sampled(Frames& frames) {
+  std::lock_guard<std::mutex> lock(frames.mutex);
+  bool any = false;
+  for (const FrameInfo& info : frames.seen) any = any || info.sky_sampled;
+  return any;
+}
+
+TEST(EnvironmentEngine, TextureAndLightEditsKeepTheSky) {
+  Frames frames;
+  ProgressiveOptions options;
+  options.edit_preview_budget_ms = 0;  // no coarse previews: they trace (and sample) afresh
+  ProgressiveRenderer engine(options);
+  engine.set_on_publish([&] {
+    std::lock_guard<std::mutex> lock(frames.mutex);
+    frames.seen.push_back(engine.latest()->info);
+  });
+  // Four uniform samples: a light edit re-lights every plane (no fused one-sample pass), and the
+  // map shown where the rays miss the floor and the sphere.
+  Scene scene = scene_in_environment(0);
+  scene.render.sampling = Sampling::uniform;
+  scene.materials[0].map(MapSlot::diffuse) = test::map_of(test::checker(64, 8), "checker");
+  ASSERT_TRUE(scene.environment.as_background);
+  converge(engine, scene, frames);
+  EXPECT_TRUE(any_sky_sampled(frames));  // the first image makes it
+
+  auto first_cause = [&] {
+    std::lock_guard<std::mutex> lock(frames.mutex);
+    return frames.seen.empty() ? ChangeClass::none : frames.seen.front().cause;
+  };
+  // A map swapped, a light moved: the primary rays, the map and its rotation stay, so does the
+  // sky, and the image is a fresh render's.
+  scene.materials[0].map(MapSlot::diffuse) = test::map_of(test::uv_ramp(16), "ramp");
+  auto frame = converge(engine, scene, frames);
+  EXPECT_EQ(first_cause(), ChangeClass::texture);
+  EXPECT_FALSE(any_sky_sampled(frames));
+  expect_fresh(*frame, scene);
+  scene.lights[0].position += glm::vec3(1.0f, 0.5f, 0.0f);
+  frame = converge(engine, scene, frames);
+  EXPECT_EQ(first_cause(), ChangeClass::light);
+  EXPECT_FALSE(any_sky_sampled(frames));
+  expect_fresh(*frame, scene);
+  // A rotation and a map swap taken in together are a `texture` edit that turns the sky.
+  scene.environment.rotation = 90.0f;
+  scene.materials[0].map(MapSlot::diffuse) = test::map_of(test::checker(64, 4), "checker");
+  frame = converge(engine, scene, frames);
+  EXPECT_EQ(first_cause(), ChangeClass::texture);
+  EXPECT_TRUE(any_sky_sampled(frames));
   expect_fresh(*frame, scene);
   engine.set_on_publish(nullptr);
 }

@@ -83,16 +83,26 @@ bool environment_sky(const SampleCache& cache, const RenderContext& ctx, PixelFa
   }
   const EnvironmentRotation<float> rotation =
       environment_rotation<float>(scene.environment.rotation);
-  factors.sky.assign(cache.pixel_count(), glm::vec3(0.0f));
+  // No fill first (at 1280x720 an 11 MB one on one thread before the parallel pass): plane 0's
+  // packets write every pixel (0 on hits, as 0 + its share would be), the later planes add.
+  if (factors.sky.size() != cache.pixel_count()) factors.sky.resize(cache.pixel_count());
   const float share = 1.0f / static_cast<float>(std::max(1, cache.samples()));
   SampleCache& planes = const_cast<SampleCache&>(cache);  // visited read-only
-  const bool done = visit_cached_samples(planes, ctx, [&](SamplePacket& packet, SamplePlane&) {
-    glm::vec3 sky[kLanes];
-    sky_lanes(packet, scene.environment, rotation, sky);
-    glm::vec3* row = &factors.sky[static_cast<std::size_t>(packet.y0) * cache.width + packet.x0];
-    for (int i = 0; i < packet.x1 - packet.x0; ++i) row[i] += sky[i] * share;
-    return 0LL;
-  });
+  const SamplePlane* first = cache.planes.data();
+  const bool done =
+      visit_cached_samples(planes, ctx, [&](SamplePacket& packet, SamplePlane& plane) {
+        glm::vec3 sky[kLanes];
+        sky_lanes(packet, scene.environment, rotation, sky);
+        glm::vec3* row =
+            &factors.sky[static_cast<std::size_t>(packet.y0) * cache.width + packet.x0];
+        const int n = packet.x1 - packet.x0;
+        if (&plane == first) {
+          for (int i = 0; i < n; ++i) row[i] = sky[i] * share;
+        } else {
+          for (int i = 0; i < n; ++i) row[i] += sky[i] * share;
+        }
+        return 0LL;
+      });
   if (!done || cache.refined.spp == 0) return done;
   // Adaptive sampling's refined pixels: the mean over their own samples instead of the centre.
   const RefinedSamples& refined = cache.refined;
