@@ -60,6 +60,34 @@ TEST(PowerLanes, HandValuesAndFixedLanes) {
   EXPECT_EQ(out[3], 0.0f);  // no material: a missed lane
 }
 
+// A shininess map's lanes with energy normalisation: c^(alpha s) times the normalisation of
+// alpha s over the material's alpha (recombination applies the material's), in both pow modes,
+// also on the lanes whose power is fixed (s = 0: c^0 = 1; c = 1: 1^alpha = 1). Material alpha
+// 10: Phong's normalisation is (alpha + 2) / (2 pi), Blinn-Phong's (alpha + 8) / (8 pi).
+TEST(PowerLanes, ShininessMapLanesCarryTheirOwnEnergyNormalisation) {
+  const Scene scene = scene_with_shininess(10.0f);
+  const MaterialExponents e = material_exponents(scene);
+  const std::int32_t material[3] = {0, 0, 0};
+  const float c[3] = {0.5f, 1.0f, 0.5f};
+  for (ShadingModel model : {ShadingModel::phong, ShadingModel::blinn_phong}) {
+    const float k = model == ShadingModel::phong ? 2.0f : 8.0f;
+    ScaledExponent scaled;
+    scaled.scale[0] = 0.0f;  // alpha 0: 0.5^0 = 1
+    scaled.scale[1] = 1.0f;  // alpha 10 at c = 1: 1
+    scaled.scale[2] = 0.2f;  // alpha 2: 0.5^2 = 0.25
+    scaled.energy = true;
+    scaled.model = model;
+    for (PowMode mode : {PowMode::exact, PowMode::fast}) {
+      float out[3];
+      scaled_power_lanes(e, material, c, out, 3, mode, scaled);
+      EXPECT_NEAR(out[0], k / (10.0f + k), 1e-6f) << "mode " << static_cast<int>(mode);
+      EXPECT_NEAR(out[1], 1.0f, 1e-6f) << "mode " << static_cast<int>(mode);
+      EXPECT_NEAR(out[2], 0.25f * (2.0f + k) / (10.0f + k), 2e-3f)
+          << "mode " << static_cast<int>(mode);
+    }
+  }
+}
+
 TEST(PowerLanes, FloorIsWhereThePowerFallsUnderTwoToTheMinus120) {
   const Scene scene = scene_with_shininess(1e6f);
   const MaterialExponents e = material_exponents(scene);

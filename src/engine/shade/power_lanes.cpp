@@ -42,7 +42,7 @@ namespace {
 // need no trip through memory before their only use.
 void power16(const MaterialExponents& exponents, const std::int32_t* mat, const float* cos,
              const float* weight, float* out, PowMode mode, const ScaledExponent* scaled) {
-  alignas(64) float base[kLanes], alpha[kLanes], floor[kLanes], material_alpha[kLanes];
+  alignas(64) float base[kLanes], alpha[kLanes], floor[kLanes], energy[kLanes];
   alignas(64) std::int32_t index[kLanes];
   for (int i = 0; i < kLanes; ++i) index[i] = std::max(mat[i], 0);
   const LaneGather by_material(index);  // a handful of materials: a permute, no gather
@@ -50,9 +50,13 @@ void power16(const MaterialExponents& exponents, const std::int32_t* mat, const 
   by_material(exponents.floor.data(), exponents.floor.size(), floor);
   if (scaled != nullptr) {  // a shininess map: each lane's own exponent and floor
     for (int i = 0; i < kLanes; ++i) {
-      material_alpha[i] = alpha[i];
+      const float material_alpha = alpha[i];
       alpha[i] *= scaled->scale[i];
       floor[i] = alpha[i] > 0.0f ? std::exp2(-120.0f / alpha[i]) : 0.0f;
+      // Of the lane's own exponent, before exact mode below sets the fixed lanes' to 1 (their
+      // powers, 0 or 1, are still those of their own exponent, and so is their normalisation).
+      energy[i] = energy_normalization(scaled->model, alpha[i]) /
+                  energy_normalization(scaled->model, material_alpha);
     }
   }
   for (int i = 0; i < kLanes; ++i) {
@@ -81,10 +85,7 @@ void power16(const MaterialExponents& exponents, const std::int32_t* mat, const 
     }
   }
   if (scaled != nullptr && scaled->energy) {  // recombination applies the material's own
-    for (int i = 0; i < kLanes; ++i) {
-      base[i] *= energy_normalization(scaled->model, alpha[i]) /
-                 energy_normalization(scaled->model, material_alpha[i]);
-    }
+    for (int i = 0; i < kLanes; ++i) base[i] *= energy[i];
   }
   if (weight == nullptr) {
     for (int i = 0; i < kLanes; ++i) out[i] = base[i];
