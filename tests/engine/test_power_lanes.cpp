@@ -71,12 +71,10 @@ TEST(PowerLanes, ShininessMapLanesCarryTheirOwnEnergyNormalisation) {
   const float c[3] = {0.5f, 1.0f, 0.5f};
   for (ShadingModel model : {ShadingModel::phong, ShadingModel::blinn_phong}) {
     const float k = model == ShadingModel::phong ? 2.0f : 8.0f;
+    // alpha 0: 0.5^0 = 1; alpha 10 at c = 1: 1; alpha 2: 0.5^2 = 0.25.
+    const float scale[3] = {0.0f, 1.0f, 0.2f};
     ScaledExponent scaled;
-    scaled.scale[0] = 0.0f;  // alpha 0: 0.5^0 = 1
-    scaled.scale[1] = 1.0f;  // alpha 10 at c = 1: 1
-    scaled.scale[2] = 0.2f;  // alpha 2: 0.5^2 = 0.25
-    scaled.energy = true;
-    scaled.model = model;
+    scale_exponents(e, material, scale, 3, true, model, scaled);
     for (PowMode mode : {PowMode::exact, PowMode::fast}) {
       float out[3];
       scaled_power_lanes(e, material, c, out, 3, mode, scaled);

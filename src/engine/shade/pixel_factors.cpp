@@ -149,10 +149,10 @@ bool build_centre_factors(const SampleCache& cache, const RenderContext& ctx, Pi
         const std::size_t idx = static_cast<std::size_t>(y) * cache.width + x;
         const int m = std::min(kLanes, cache.width - x);
         single_sample_coverage(materials, &plane.object[idx], m, &out.material[idx]);
-        ScaledExponent storage;
+        ScaledExponent storage;  // once for every light of the run
         const ScaledExponent* scaled = scaled_exponents(
-            ctx, alpha_channel >= 0 ? plane.texels[alpha_channel].data() + idx : nullptr, m,
-            storage);
+            ctx, exponents, &out.material[idx],
+            alpha_channel >= 0 ? plane.texels[alpha_channel].data() + idx : nullptr, m, storage);
         for (std::size_t li = 0; li < lights; ++li) {
           const LightFactorPlane& f = plane.lights[li];
           single_sample_light(exponents, pow_mode, &out.material[idx], &f.diffuse_weight[idx],
@@ -207,14 +207,14 @@ bool build_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pix
             const std::int32_t object = plane.object[idx0 + i];
             mat[i] = object < 0 ? -1 : scene.objects[static_cast<std::size_t>(object)].material;
           }
+          ScaledExponent storage;  // once for every light of the sample's run
+          const ScaledExponent* scaled = scaled_exponents(
+              ctx, exponents, mat,
+              alpha_channel >= 0 ? plane.texels[alpha_channel].data() + idx0 : nullptr, m, storage);
           for (std::size_t li = 0; li < lights; ++li) {
             const LightFactorPlane& f = plane.lights[li];
             float* spec = &run_specular[(s * lights + li) * kRun];
             alignas(64) float power[kRun];
-            ScaledExponent storage;
-            const ScaledExponent* scaled = scaled_exponents(
-                ctx, alpha_channel >= 0 ? plane.texels[alpha_channel].data() + idx0 : nullptr, m,
-                storage);
             if (scaled != nullptr) {
               scaled_power_lanes(exponents, mat, f.cosine(model, idx0), power, m, pow_mode,
                                  *scaled);

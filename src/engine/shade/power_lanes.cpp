@@ -34,30 +34,50 @@ MaterialExponents material_exponents(const Scene& scene) {
   return e;
 }
 
+void scale_exponents(const MaterialExponents& exponents, const std::int32_t* material,
+                     const float* scale, int n, bool energy, ShadingModel model,
+                     ScaledExponent& out) {
+  alignas(64) float material_alpha[kLanes], lane_scale[kLanes];
+  alignas(64) std::int32_t index[kLanes];
+  for (int i = 0; i < kLanes; ++i) {
+    index[i] = i < n ? std::max(material[i], 0) : 0;
+    lane_scale[i] = i < n ? scale[i] : 1.0f;
+  }
+  const LaneGather by_material(index);  // a handful of materials: a permute, no gather
+  by_material(exponents.alpha.data(), exponents.alpha.size(), material_alpha);
+  for (int i = 0; i < kLanes; ++i) {
+    out.alpha[i] = material_alpha[i] * lane_scale[i];
+    out.floor[i] = out.alpha[i] > 0.0f ? std::exp2(-120.0f / out.alpha[i]) : 0.0f;
+  }
+  out.energy_normalized = energy;
+  if (!energy) return;
+  for (int i = 0; i < kLanes; ++i) {
+    out.energy[i] =
+        energy_normalization(model, out.alpha[i]) / energy_normalization(model, material_alpha[i]);
+  }
+}
+
 namespace {
 
 // specular_power_lanes on exactly 16 lanes: loops of a fixed count, which GCC turns into
 // straight vector code (with a run-time count it adds copies, checks and remainder loops).
 // With weight, out = weight * c^alpha (0 on missed lanes) in the same loop: the powers then
-// need no trip through memory before their only use.
+// need no trip through memory before their only use. scaled: a shininess map's exponents,
+// floors and normalisations (scale_exponents), in place of the materials'.
 void power16(const MaterialExponents& exponents, const std::int32_t* mat, const float* cos,
              const float* weight, float* out, PowMode mode, const ScaledExponent* scaled) {
-  alignas(64) float base[kLanes], alpha[kLanes], floor[kLanes], energy[kLanes];
-  alignas(64) std::int32_t index[kLanes];
-  for (int i = 0; i < kLanes; ++i) index[i] = std::max(mat[i], 0);
-  const LaneGather by_material(index);  // a handful of materials: a permute, no gather
-  by_material(exponents.alpha.data(), exponents.alpha.size(), alpha);
-  by_material(exponents.floor.data(), exponents.floor.size(), floor);
-  if (scaled != nullptr) {  // a shininess map: each lane's own exponent and floor
+  alignas(64) float base[kLanes], alpha[kLanes], floor[kLanes];
+  if (scaled != nullptr) {
     for (int i = 0; i < kLanes; ++i) {
-      const float material_alpha = alpha[i];
-      alpha[i] *= scaled->scale[i];
-      floor[i] = alpha[i] > 0.0f ? std::exp2(-120.0f / alpha[i]) : 0.0f;
-      // Of the lane's own exponent, before exact mode below sets the fixed lanes' to 1 (their
-      // powers, 0 or 1, are still those of their own exponent, and so is their normalisation).
-      energy[i] = energy_normalization(scaled->model, alpha[i]) /
-                  energy_normalization(scaled->model, material_alpha);
+      alpha[i] = scaled->alpha[i];
+      floor[i] = scaled->floor[i];
     }
+  } else {
+    alignas(64) std::int32_t index[kLanes];
+    for (int i = 0; i < kLanes; ++i) index[i] = std::max(mat[i], 0);
+    const LaneGather by_material(index);  // a handful of materials: a permute, no gather
+    by_material(exponents.alpha.data(), exponents.alpha.size(), alpha);
+    by_material(exponents.floor.data(), exponents.floor.size(), floor);
   }
   for (int i = 0; i < kLanes; ++i) {
     floor[i] = mat[i] < 0 ? std::numeric_limits<float>::infinity() : floor[i];
@@ -84,8 +104,8 @@ void power16(const MaterialExponents& exponents, const std::int32_t* mat, const 
       base[i] = cos[i] >= floor[i] && cos[i] > 0.0f ? base[i] : 0.0f;
     }
   }
-  if (scaled != nullptr && scaled->energy) {  // recombination applies the material's own
-    for (int i = 0; i < kLanes; ++i) base[i] *= energy[i];
+  if (scaled != nullptr && scaled->energy_normalized) {  // recombination applies the material's
+    for (int i = 0; i < kLanes; ++i) base[i] *= scaled->energy[i];
   }
   if (weight == nullptr) {
     for (int i = 0; i < kLanes; ++i) out[i] = base[i];
@@ -106,19 +126,13 @@ void power_lanes(const MaterialExponents& exponents, const std::int32_t* materia
   }
   alignas(64) float cos[kLanes], w[kLanes], result[kLanes];
   alignas(64) std::int32_t mat[kLanes];
-  ScaledExponent padded;
   for (int i = 0; i < kLanes; ++i) {
     cos[i] = i < n ? c[i] : 0.0f;
     mat[i] = i < n ? material[i] : -1;
     w[i] = i < n && weight != nullptr ? weight[i] : 0.0f;
-    if (scaled != nullptr) padded.scale[i] = i < n ? scaled->scale[i] : 1.0f;
   }
-  if (scaled != nullptr) {
-    padded.energy = scaled->energy;
-    padded.model = scaled->model;
-  }
-  power16(exponents, mat, cos, weight != nullptr ? w : nullptr, result, mode,
-          scaled != nullptr ? &padded : nullptr);
+  // scaled's lanes past n are already those of no material at scale 1 (scale_exponents).
+  power16(exponents, mat, cos, weight != nullptr ? w : nullptr, result, mode, scaled);
   for (int i = 0; i < n; ++i) out[i] = result[i];
 }
 }  // namespace

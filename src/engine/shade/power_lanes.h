@@ -30,13 +30,23 @@ void specular_power_lanes(const MaterialExponents& exponents, const std::int32_t
                           const float* c, float* out, int n, PowMode mode);
 
 // A shininess map's part in c^alpha (docs/engine.md, "Maps"): each lane's exponent is its
-// material's times scale[i], and with energy normalisation on the power is also multiplied by
-// the lane's normalisation over its material's (recombination applies the material's).
+// material's times the map's scale, and with energy normalisation on the power is also
+// multiplied by the lane's normalisation over its material's (recombination applies the
+// material's). None of it depends on the light: scale_exponents makes it once per packet (or run
+// of lanes), and every light's powers read it.
 struct ScaledExponent {
-  alignas(64) float scale[kLanes];
-  bool energy = false;
-  ShadingModel model = ShadingModel::phong;
+  alignas(64) float alpha[kLanes];   // the lane's exponent
+  alignas(64) float floor[kLanes];   // c below which c^alpha counts as 0 (MaterialExponents)
+  alignas(64) float energy[kLanes];  // normalisation of alpha over the material's exponent's
+  bool energy_normalized = false;    // energy[] is set and multiplies the powers
 };
+
+// The ScaledExponent of n <= kLanes lanes of materials `material` (< 0: none; its lanes read
+// material 0's, as the powers gather them) whose shininess multipliers are `scale`; the lanes
+// past n have no material and scale 1. With `energy`, the normalisations of `model`.
+void scale_exponents(const MaterialExponents& exponents, const std::int32_t* material,
+                     const float* scale, int n, bool energy, ShadingModel model,
+                     ScaledExponent& out);
 
 // out[i] = weight[i] * c[i]^alpha(material[i]), 0 where material < 0: the same powers, in
 // the loop that makes them; scaled: a shininess map's exponents.

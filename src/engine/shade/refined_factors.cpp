@@ -58,15 +58,16 @@ bool refine_pixel_factors(const SampleCache& cache, const RenderContext& ctx, Pi
         const std::int32_t object = plane.object[e0 + s];
         material[s] = object < 0 ? -1 : materials[static_cast<std::size_t>(object)];
       }
-      for (std::size_t li = 0; li < lights; ++li) {
-        const LightFactorPlane& f = plane.lights[li];
-        for (std::size_t s0 = 0; s0 < spp; s0 += kLanes) {  // c^alpha by the lane helper
-          const int m = static_cast<int>(std::min<std::size_t>(kLanes, spp - s0));
+      for (std::size_t s0 = 0; s0 < spp; s0 += kLanes) {  // c^alpha by the lane helper
+        const int m = static_cast<int>(std::min<std::size_t>(kLanes, spp - s0));
+        ScaledExponent storage;  // once for every light of these samples
+        const ScaledExponent* scaled = scaled_exponents(
+            ctx, exponents, &material[s0],
+            alpha_channel >= 0 ? plane.texels[alpha_channel].data() + e0 + s0 : nullptr, m,
+            storage);
+        for (std::size_t li = 0; li < lights; ++li) {
+          const LightFactorPlane& f = plane.lights[li];
           alignas(64) float power[kLanes];
-          ScaledExponent storage;
-          const ScaledExponent* scaled = scaled_exponents(
-              ctx, alpha_channel >= 0 ? plane.texels[alpha_channel].data() + e0 + s0 : nullptr, m,
-              storage);
           if (scaled != nullptr) {
             scaled_power_lanes(exponents, &material[s0], f.cosine(model, e0 + s0), power, m,
                                scene.render.pow, *scaled);

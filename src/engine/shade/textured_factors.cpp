@@ -34,12 +34,12 @@ void add_textured_sample(const TexturePlan& plan, const float* texel, std::size_
   }
 }
 
-const ScaledExponent* scaled_exponents(const RenderContext& ctx, const float* alpha_scale, int n,
-                                       ScaledExponent& storage) {
+const ScaledExponent* scaled_exponents(const RenderContext& ctx, const MaterialExponents& exponents,
+                                       const std::int32_t* material, const float* alpha_scale,
+                                       int n, ScaledExponent& storage) {
   if (alpha_scale == nullptr || !ctx.plan.textures.alpha) return nullptr;
-  for (int i = 0; i < kLanes; ++i) storage.scale[i] = i < n ? alpha_scale[i] : 1.0f;
-  storage.energy = ctx.scene->render.energy_normalize;
-  storage.model = ctx.scene->render.model;
+  const RenderSettings& r = ctx.scene->render;
+  scale_exponents(exponents, material, alpha_scale, n, r.energy_normalize, r.model, storage);
   return &storage;
 }
 

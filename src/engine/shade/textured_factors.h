@@ -39,9 +39,12 @@ void add_textured_sample(const TexturePlan& plan, const float* texel, std::size_
 // slots' diffuse factors into diffuse (specular factors, c^alpha included, are the caller's).
 void sample_texels(const SamplePlane& plane, std::size_t index, float* texel, float* diffuse);
 
-// The scaled exponents of n lanes whose shininess multipliers are alpha_scale (null: the plan
-// has no shininess map: returns null).
-const ScaledExponent* scaled_exponents(const RenderContext& ctx, const float* alpha_scale, int n,
-                                       ScaledExponent& storage);
+// The scaled exponents (scale_exponents) of n lanes of materials `material` whose shininess
+// multipliers are alpha_scale, made in storage, with the scene's energy normalisation and model
+// (alpha_scale null: the plan has no shininess map: returns null). Once per packet or run: every
+// light's powers read them.
+const ScaledExponent* scaled_exponents(const RenderContext& ctx, const MaterialExponents& exponents,
+                                       const std::int32_t* material, const float* alpha_scale,
+                                       int n, ScaledExponent& storage);
 
 }  // namespace gloss

@@ -66,14 +66,17 @@ bool fused_factors_pass(const SampleCache& cache, const RenderContext& ctx, Pixe
     TexelLanes texels;
     TotalLanes totals(recombination);
     bool coverage = false;
+    ScaledExponent storage;
+    const ScaledExponent* scaled = nullptr;
     auto on_light = [&](std::size_t li, const LightLanes& lanes) {
       if (!coverage) {  // first light: the primary hits (and texels) are final by now
         single_sample_coverage(materials, packet.object, kLanes, material);
+        // A shininess map's exponents, once for every light of the packet.
+        scaled = scaled_exponents(ctx, exponents, material,
+                                  alpha_channel >= 0 ? texels.channel[alpha_channel] : nullptr,
+                                  kLanes, storage);
         coverage = true;
       }
-      ScaledExponent storage;
-      const ScaledExponent* scaled = scaled_exponents(
-          ctx, alpha_channel >= 0 ? texels.channel[alpha_channel] : nullptr, kLanes, storage);
       single_sample_light(exponents, scene.render.pow, material, lanes.diffuse_weight,
                           lanes.spec_weight,
                           model == ShadingModel::phong ? lanes.cos_phong : lanes.cos_blinn, kLanes,
