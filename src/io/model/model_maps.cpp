@@ -218,19 +218,4 @@ bool split_model_map_reference(const std::string& file, std::string& model, std:
   return false;
 }
 
-std::shared_ptr<const Texture> model_map_texture(const std::string& model_path,
-                                                 const std::string& material, MapSlot slot,
-                                                 std::uint64_t budget_bytes) {
-  ModelOptions options;
-  options.map_budget_bytes = budget_bytes;
-  const Model model = load_model(model_path, options);
-  for (std::size_t m = 0; m < model.materials.size(); ++m) {
-    if (model.material_names[m] != material) continue;
-    if (model.materials[m].has_map(slot)) return model.materials[m].map(slot).texture;
-    throw InputError(model_path, "material '" + material + "' has no " + to_string(slot) +
-                                     " map (or its image cannot be read)");
-  }
-  throw InputError(model_path, "has no material '" + material + "'");
-}
-
 }  // namespace gloss
