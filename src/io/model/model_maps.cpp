@@ -37,7 +37,7 @@ std::string read_text(const std::string& path) {
 // with spaces), else each word.
 std::vector<std::string> mtl_libraries(const std::string& obj_path, const std::string& dir) {
   std::vector<std::string> out;
-  std::istringstream in(read_text(obj_path));
+  std::ifstream in(obj_path, std::ios::binary);  // line by line: the file may be large
   for (std::string line; std::getline(in, line);) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const std::size_t start = line.find_first_not_of(" \t");
