@@ -1,12 +1,12 @@
 #include "io/model/model_maps.h"
 
 #include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <utility>
 
+#include "base/ascii.h"
 #include "base/error.h"
 #include "base/memory_budget.h"
 #include "io/image/texture_reader.h"
@@ -19,12 +19,6 @@ namespace gloss {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
 
 std::string read_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -185,7 +179,7 @@ void read_model_maps(const std::string& path, Model& model, const ModelOptions& 
   ModelMapReader reader{
       path, fs::path(path).parent_path().string(), model,
       options.map_budget_bytes > 0 ? options.map_budget_bytes : memory_budget_bytes()};
-  const std::string ext = lower(fs::path(path).extension().string());
+  const std::string ext = lower_extension(path);
   if (ext == ".obj") read_obj_maps(reader);
   if (ext == ".gltf" || ext == ".glb") read_gltf_maps(reader);
   model.map_bytes = reader.used;
@@ -198,7 +192,7 @@ std::string model_map_reference(const std::string& model, const std::string& mat
 
 bool split_model_map_reference(const std::string& file, std::string& model, std::string& material,
                                MapSlot& slot) {
-  const std::string low = lower(file);
+  const std::string low = ascii_lower(file);
   std::size_t at = std::string::npos;
   for (const char* ext : {".obj#", ".gltf#", ".glb#"}) {
     const std::size_t found = low.find(ext);

@@ -1,9 +1,9 @@
 #include "io/scene/scene_loader.h"
 
-#include <cctype>
 #include <filesystem>
 #include <utility>
 
+#include "base/ascii.h"
 #include "base/atomic_file.h"
 #include "base/error.h"
 #include "base/memory_budget.h"
@@ -145,9 +145,7 @@ std::string rebased(const std::string& file, const std::filesystem::path& from,
 }
 
 bool has_mtl_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".mtl";
+  return lower_extension(path) == ".mtl";
 }
 
 }  // namespace
