@@ -13,6 +13,7 @@
 #include "io/model/map_reading.h"
 #include "io/model/mtl_maps.h"
 #include "texture/mip_pyramid.h"
+#include "texture/texel_image.h"
 
 namespace gloss {
 
@@ -122,18 +123,10 @@ std::shared_ptr<const Texture> ModelMapReader::make(
                            " texels does not fit the memory budget; left out");
     return nullptr;
   }
-  FloatImage image;
-  image.width = width;
-  image.height = height;
-  image.channels = channels;
-  image.samples.resize(static_cast<std::size_t>(width) * height * channels);
-  for (int j = 0; j < height; ++j) {
-    for (int i = 0; i < width; ++i) {
-      const glm::vec4 t = texel((i + 0.5f) / width, 1.0f - (j + 0.5f) / height);
-      float* out = &image.samples[(static_cast<std::size_t>(j) * width + i) * channels];
-      for (int c = 0; c < channels; ++c) out[c] = t[c];
-    }
-  }
+  // At each texel's centre, in map coordinates (v up).
+  FloatImage image = texel_image(width, height, channels, [&](int i, int j) {
+    return texel((i + 0.5f) / width, 1.0f - (j + 0.5f) / height);
+  });
   ImageFileInfo info;
   info.format = "made by gloss";
   info.bits = 32;
