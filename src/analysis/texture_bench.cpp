@@ -1,12 +1,11 @@
 #include "analysis/texture_bench.h"
 
-#include <chrono>
+#include <algorithm>
 #include <cmath>
-#include <functional>
 #include <memory>
 
+#include "analysis/paired_timing.h"
 #include "analysis/ray_baseline.h"
-#include "base/timing.h"
 #include "engine/render_context.h"
 #include "engine/shade/pixel_factors.h"
 #include "engine/trace/embree_scene.h"
@@ -17,74 +16,49 @@
 namespace gloss {
 
 namespace {
-using Clock = std::chrono::steady_clock;
-
-// A painted-looking map: tiles of 64 texels in two tones with a hashed speckle on every texel,
-// so every level of the pyramid has detail to read (RGBA float).
-std::shared_ptr<const Texture> colour_map(int side) {
+// A side x side RGBA float map made in memory, each texel's four channels written by
+// texel(x, y, rgba); source names it in messages.
+template <class Texel>
+std::shared_ptr<const Texture> benchmark_map(int side, const char* source, Texel texel) {
   FloatImage image;
   image.width = image.height = side;
   image.channels = 4;
   image.samples.resize(static_cast<std::size_t>(side) * side * 4);
   for (int y = 0; y < side; ++y) {
     for (int x = 0; x < side; ++x) {
-      const unsigned h =
-          (static_cast<unsigned>(x) * 73856093u) ^ (static_cast<unsigned>(y) * 19349663u);
-      const float speckle = static_cast<float>(h % 1024) / 4096.0f;
-      const bool tile = ((x / 64) + (y / 64)) % 2 == 0;
-      float* t = &image.samples[(static_cast<std::size_t>(y) * side + x) * 4];
-      t[0] = (tile ? 0.8f : 0.3f) + speckle;
-      t[1] = (tile ? 0.7f : 0.35f) + speckle;
-      t[2] = (tile ? 0.6f : 0.5f) + speckle;
-      t[3] = 1.0f;
+      texel(x, y, &image.samples[(static_cast<std::size_t>(y) * side + x) * 4]);
     }
   }
   auto texture = std::make_shared<Texture>(make_texture(std::move(image)));
-  texture->source = "benchmark colour map";
+  texture->source = source;
   return texture;
+}
+
+// A painted-looking map: tiles of 64 texels in two tones with a hashed speckle on every texel,
+// so every level of the pyramid has detail to read.
+std::shared_ptr<const Texture> colour_map(int side) {
+  return benchmark_map(side, "benchmark colour map", [](int x, int y, float* t) {
+    const unsigned h =
+        (static_cast<unsigned>(x) * 73856093u) ^ (static_cast<unsigned>(y) * 19349663u);
+    const float speckle = static_cast<float>(h % 1024) / 4096.0f;
+    const bool tile = ((x / 64) + (y / 64)) % 2 == 0;
+    t[0] = (tile ? 0.8f : 0.3f) + speckle;
+    t[1] = (tile ? 0.7f : 0.35f) + speckle;
+    t[2] = (tile ? 0.6f : 0.5f) + speckle;
+    t[3] = 1.0f;
+  });
 }
 
 // Gentle ripples as a tangent-space normal map (2 c - 1 = the normal).
 std::shared_ptr<const Texture> normal_map(int side) {
-  FloatImage image;
-  image.width = image.height = side;
-  image.channels = 4;
-  image.samples.resize(static_cast<std::size_t>(side) * side * 4);
-  for (int y = 0; y < side; ++y) {
-    for (int x = 0; x < side; ++x) {
-      const float nx = 0.3f * std::sin(x * 0.05f), ny = 0.3f * std::sin(y * 0.07f);
-      const float nz = std::sqrt(1.0f - nx * nx - ny * ny);
-      float* t = &image.samples[(static_cast<std::size_t>(y) * side + x) * 4];
-      t[0] = 0.5f * nx + 0.5f;
-      t[1] = 0.5f * ny + 0.5f;
-      t[2] = 0.5f * nz + 0.5f;
-      t[3] = 1.0f;
-    }
-  }
-  auto texture = std::make_shared<Texture>(make_texture(std::move(image)));
-  texture->source = "benchmark normal map";
-  return texture;
-}
-
-struct Paired {
-  double f_ms, g_ms, ratio;
-};
-
-// As bench.cpp's time_paired: alternating runs, the median of the ratios within pairs.
-Paired paired(int runs, const std::function<void()>& f, const std::function<void()>& g) {
-  f();
-  g();
-  std::vector<double> tf, tg, ratios;
-  for (int i = 0; i < runs; ++i) {
-    Clock::time_point start = Clock::now();
-    f();
-    tf.push_back(ms_since(start));
-    start = Clock::now();
-    g();
-    tg.push_back(ms_since(start));
-    ratios.push_back(tf.back() / tg.back());
-  }
-  return {median(tf), median(tg), median(ratios)};
+  return benchmark_map(side, "benchmark normal map", [](int x, int y, float* t) {
+    const float nx = 0.3f * std::sin(x * 0.05f), ny = 0.3f * std::sin(y * 0.07f);
+    const float nz = std::sqrt(1.0f - nx * nx - ny * ny);
+    t[0] = 0.5f * nx + 0.5f;
+    t[1] = 0.5f * ny + 0.5f;
+    t[2] = 0.5f * nz + 0.5f;
+    t[3] = 1.0f;
+  });
 }
 
 void render_1spp(const Scene& scene, const EmbreeScene& embree, SampleCache& cache,
@@ -121,7 +95,7 @@ void measure_textured(const Scene& scene, const BenchOptions& options, BenchRepo
   PixelFactors factors, textured_factors;
   Image total, textured_total;
   const int runs = std::max(15, 2 * options.runs);
-  const Paired retrace = paired(
+  const Paired retrace = time_paired(
       runs,
       [&] {
         render_1spp(textured, textured_embree, textured_cache, textured_factors, textured_total);
@@ -138,7 +112,7 @@ void measure_textured(const Scene& scene, const BenchOptions& options, BenchRepo
   const RenderContext textured_ctx = make_render_context(textured_edited, textured_embree);
   TermImages a, b;
   const int short_runs = std::max(15, 3 * options.runs);
-  const Paired reshade = paired(
+  const Paired reshade = time_paired(
       short_runs, [&] { combine_terms(textured_factors, textured_ctx, a, false); },
       [&] { combine_terms(factors, ctx, b, false); });
   report.textured_reshade_ms = reshade.f_ms;
@@ -149,7 +123,7 @@ void measure_textured(const Scene& scene, const BenchOptions& options, BenchRepo
   report.textured_cache_bytes_per_pixel = static_cast<double>(read) / pixels;
   StreamingPass stream(read, pixels * sizeof(glm::vec3));
   report.textured_bandwidth_floor_ms =
-      paired(
+      time_paired(
           short_runs, [&] { stream.run(); },
           [&] { combine_terms(textured_factors, textured_ctx, a, false); })
           .f_ms;
