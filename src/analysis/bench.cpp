@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <condition_variable>
-#include <cstdio>
 #include <functional>
 #include <mutex>
 #include <utility>
@@ -16,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/bench_render.h"
+#include "analysis/bench_table.h"
 #include "analysis/image_metrics.h"
 #include "analysis/paired_timing.h"
 #include "analysis/ray_baseline.h"
@@ -249,76 +249,74 @@ BenchReport run_benchmark(const Scene& input, const BenchOptions& options) {
 }
 
 std::string format_bench_table(const BenchReport& r) {
-  std::string s;
-  char line[256];
-  auto row = [&](const char* name, double value, const char* unit, const char* note) {
-    std::snprintf(line, sizeof line, "  %-30s %10.4f %-4s %s\n", name, value, unit, note);
-    s += line;
-  };
-  std::snprintf(line, sizeof line, "gloss bench: %s at %dx%d, %d threads (medians)\n",
-                r.scene.c_str(), r.width, r.height, r.threads);
-  s += line;
-  row("retrace_ms", r.retrace_ms, "ms", "full 1-spp render (trace + shade + total image)");
-  row("embree_raw_ms", r.embree_raw_ms, "ms", "same primary + shadow rays, no shading");
-  row("retrace_ratio", r.retrace_ratio, "", "target <= 1.5");
-  row("retrace_terms_ms", r.retrace_terms_ms, "ms", "the same + the 4 term images (term view)");
-  row("rays_per_frame", static_cast<double>(r.rays_per_frame), "", "");
-  row("reshade_ms", r.reshade_ms, "ms", "material edit, total image; target <= 3");
-  row("bandwidth_floor_ms", r.bandwidth_floor_ms, "ms", "streaming the same bytes");
-  row("reshade_ratio", r.reshade_ratio, "", "target <= 2");
-  row("reshade_terms_ms", r.reshade_terms_ms, "ms", "material edit, total + 4 term images");
-  row("exponent_ms_alpha32", r.exponent_ms_alpha32, "ms", "shininess edit to 32");
-  row("exponent_ms_alpha1e6", r.exponent_ms_alpha1e6, "ms", "shininess edit to 1e6");
-  row("light_move_ms", r.light_move_ms, "ms", "shadow rays + re-shade");
-  row("first_preview_ms", r.first_preview_ms, "ms", "camera change to first pass; target <= 10");
-  row("converge_16spp_ms", r.converge_16spp_ms, "ms", "camera change to 16 spp, uniform");
-  row("aa_ms", r.aa_ms, "ms", "camera change to 16 spp, adaptive");
-  row("aa_ratio", r.aa_ratio, "", "over a full 1-spp render, paired runs; target <= 3");
-  row("aa_rmse_ratio", r.aa_rmse_ratio, "", "adaptive RMSE / uniform's (256 spp ref); target <= 1");
-  row("aa_refined_share", r.aa_refined_share, "", "share of pixels adaptive sampling refined");
-  row("aa_rmse", r.aa_rmse, "", "adaptive 16 spp against uniform 256 spp");
-  row("uniform_rmse", r.uniform_rmse, "", "uniform 16 spp against uniform 256 spp");
-  row("single_thread_ms", r.single_thread_ms, "ms", "full render on 1 thread");
-  row("threads_speedup", r.threads_speedup, "x", "target >= 1.7");
-  row("cache_bytes_per_pixel", r.cache_bytes_per_pixel, "B", "per-pixel factors");
-  row("sample_cache_bytes_per_sample", r.sample_cache_bytes_per_sample, "B", "per-sample cache");
-  row("textured_retrace_ms", r.textured_retrace_ms, "ms",
-      "2048^2 maps everywhere, normals on quads");
-  row("textured_retrace_ratio", r.textured_retrace_ratio, "", "over the untextured; target <= 1.3");
-  row("textured_reshade_ms", r.textured_reshade_ms, "ms", "kd edit on the textured scene");
-  row("textured_reshade_ratio", r.textured_reshade_ratio, "",
-      "over today's re-shade; target <= 1.5");
-  row("textured_bandwidth_floor_ms", r.textured_bandwidth_floor_ms, "ms",
-      "streaming the textured re-shade's bytes");
-  row("textured_cache_bytes_per_pixel", r.textured_cache_bytes_per_pixel, "B",
-      "what the textured re-shade reads");
-  if (r.peak_rss_mb > 0) row("peak_rss_mb", r.peak_rss_mb, "MB", "plain render, own process");
-  row("bench_peak_rss_mb", r.bench_peak_rss_mb, "MB", "this benchmark's process");
+  BenchTable table;
+  table.line("gloss bench: %s at %dx%d, %d threads (medians)\n", r.scene.c_str(), r.width, r.height,
+             r.threads);
+  table.row("retrace_ms", r.retrace_ms, "ms", "full 1-spp render (trace + shade + total image)");
+  table.row("embree_raw_ms", r.embree_raw_ms, "ms", "same primary + shadow rays, no shading");
+  table.row("retrace_ratio", r.retrace_ratio, "", "target <= 1.5");
+  table.row("retrace_terms_ms", r.retrace_terms_ms, "ms",
+            "the same + the 4 term images (term view)");
+  table.row("rays_per_frame", static_cast<double>(r.rays_per_frame), "", "");
+  table.row("reshade_ms", r.reshade_ms, "ms", "material edit, total image; target <= 3");
+  table.row("bandwidth_floor_ms", r.bandwidth_floor_ms, "ms", "streaming the same bytes");
+  table.row("reshade_ratio", r.reshade_ratio, "", "target <= 2");
+  table.row("reshade_terms_ms", r.reshade_terms_ms, "ms", "material edit, total + 4 term images");
+  table.row("exponent_ms_alpha32", r.exponent_ms_alpha32, "ms", "shininess edit to 32");
+  table.row("exponent_ms_alpha1e6", r.exponent_ms_alpha1e6, "ms", "shininess edit to 1e6");
+  table.row("light_move_ms", r.light_move_ms, "ms", "shadow rays + re-shade");
+  table.row("first_preview_ms", r.first_preview_ms, "ms",
+            "camera change to first pass; target <= 10");
+  table.row("converge_16spp_ms", r.converge_16spp_ms, "ms", "camera change to 16 spp, uniform");
+  table.row("aa_ms", r.aa_ms, "ms", "camera change to 16 spp, adaptive");
+  table.row("aa_ratio", r.aa_ratio, "", "over a full 1-spp render, paired runs; target <= 3");
+  table.row("aa_rmse_ratio", r.aa_rmse_ratio, "",
+            "adaptive RMSE / uniform's (256 spp ref); target <= 1");
+  table.row("aa_refined_share", r.aa_refined_share, "",
+            "share of pixels adaptive sampling refined");
+  table.row("aa_rmse", r.aa_rmse, "", "adaptive 16 spp against uniform 256 spp");
+  table.row("uniform_rmse", r.uniform_rmse, "", "uniform 16 spp against uniform 256 spp");
+  table.row("single_thread_ms", r.single_thread_ms, "ms", "full render on 1 thread");
+  table.row("threads_speedup", r.threads_speedup, "x", "target >= 1.7");
+  table.row("cache_bytes_per_pixel", r.cache_bytes_per_pixel, "B", "per-pixel factors");
+  table.row("sample_cache_bytes_per_sample", r.sample_cache_bytes_per_sample, "B",
+            "per-sample cache");
+  table.row("textured_retrace_ms", r.textured_retrace_ms, "ms",
+            "2048^2 maps everywhere, normals on quads");
+  table.row("textured_retrace_ratio", r.textured_retrace_ratio, "",
+            "over the untextured; target <= 1.3");
+  table.row("textured_reshade_ms", r.textured_reshade_ms, "ms", "kd edit on the textured scene");
+  table.row("textured_reshade_ratio", r.textured_reshade_ratio, "",
+            "over today's re-shade; target <= 1.5");
+  table.row("textured_bandwidth_floor_ms", r.textured_bandwidth_floor_ms, "ms",
+            "streaming the textured re-shade's bytes");
+  table.row("textured_cache_bytes_per_pixel", r.textured_cache_bytes_per_pixel, "B",
+            "what the textured re-shade reads");
+  if (r.peak_rss_mb > 0) table.row("peak_rss_mb", r.peak_rss_mb, "MB", "plain render, own process");
+  table.row("bench_peak_rss_mb", r.bench_peak_rss_mb, "MB", "this benchmark's process");
   if (!r.tessellation.empty()) {
-    s += "  teapot tessellation: level, triangles, render_ms, build_ms\n";
+    table.text += "  teapot tessellation: level, triangles, render_ms, build_ms\n";
     for (const TessellationPoint& p : r.tessellation) {
-      std::snprintf(line, sizeof line, "    %6d %10lld %10.3f %10.3f\n", p.level, p.triangles,
-                    p.render_ms, p.build_ms);
-      s += line;
+      table.line("    %6d %10lld %10.3f %10.3f\n", p.level, p.triangles, p.render_ms, p.build_ms);
     }
   }
   if (!r.scaling.empty()) {
-    s += "  scaling, one factor at a time (own process per row): lights, triangles, size,\n"
-         "  retrace_ms, embree_raw_ms, ratio, peak_rss_mb\n";
+    table.text +=
+        "  scaling, one factor at a time (own process per row): lights, triangles, size,\n"
+        "  retrace_ms, embree_raw_ms, ratio, peak_rss_mb\n";
     for (const ScalingPoint& p : r.scaling) {
       if (!p.skipped.empty()) {
-        std::snprintf(line, sizeof line, "    %3d %10lld %5dx%-5d skipped: %s\n", p.setup.lights,
-                      p.triangles, p.setup.width, p.setup.height, p.skipped.c_str());
+        table.line("    %3d %10lld %5dx%-5d skipped: %s\n", p.setup.lights, p.triangles,
+                   p.setup.width, p.setup.height, p.skipped.c_str());
       } else {
-        std::snprintf(line, sizeof line, "    %3d %10lld %5dx%-5d %9.2f %9.2f %7.3f %8.1f\n",
-                      p.setup.lights, p.triangles, p.setup.width, p.setup.height, p.retrace_ms,
-                      p.embree_raw_ms, p.ratio, p.peak_rss_mb);
+        table.line("    %3d %10lld %5dx%-5d %9.2f %9.2f %7.3f %8.1f\n", p.setup.lights, p.triangles,
+                   p.setup.width, p.setup.height, p.retrace_ms, p.embree_raw_ms, p.ratio,
+                   p.peak_rss_mb);
       }
-      s += line;
     }
   }
-  if (r.environment) s += format_environment_bench_table(*r.environment);
-  return s;
+  if (r.environment) table.text += format_environment_bench_table(*r.environment);
+  return table.text;
 }
 
 std::string bench_to_json(const BenchReport& r) {

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <condition_variable>
-#include <cstdio>
 #include <mutex>
 
 #include <tbb/global_control.h>
@@ -12,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/bench_render.h"
+#include "analysis/bench_table.h"
 #include "analysis/image_metrics.h"
 #include "analysis/paired_timing.h"
 #include "analysis/ray_baseline.h"
@@ -195,41 +195,35 @@ EnvironmentBenchReport run_environment_benchmark(const Scene& scene,
 }
 
 std::string format_environment_bench_table(const EnvironmentBenchReport& r) {
-  std::string s;
-  char line[256];
-  auto row = [&](const char* name, double value, const char* unit, const char* note) {
-    std::snprintf(line, sizeof line, "  %-30s %10.4f %-4s %s\n", name, value, unit, note);
-    s += line;
-  };
-  std::snprintf(line, sizeof line, "environment: %s (%dx%d), %d threads (medians)\n", r.map.c_str(),
-                r.map_width, r.map_height, r.threads);
-  s += line;
-  row("prefilter_ms", r.prefilter_ms, "ms", "every prefiltered level of the map, once per map");
-  row("point_retrace_ms", r.point_retrace_ms, "ms", "point lights only, full 1-spp render");
-  row("fast_first_ms", r.fast_first_ms, "ms", "with the environment's fast path, levels made");
-  row("fast_ratio", r.fast_ratio, "", "paired; target <= 1.5");
-  row("env_reshade_ms", r.reshade_ms, "ms", "kd edit under the environment, total image");
-  row("env_floor_ms", r.floor_ms, "ms", "streaming the same bytes");
-  row("env_reshade_ratio", r.reshade_ratio, "", "paired; target <= 1.5");
-  row("env_reshade_mb", r.reshade_mb, "MB", "read and written per edit");
-  std::snprintf(line, sizeof line,
-                "  progressive path to %.0f %% relative RMSE at %dx%d, shadows off (exact: "
-                "reference quadrature on %lld surface pixels, %.0f ms):\n",
-                100.0 * r.target, r.accuracy_width, r.accuracy_height, r.reference_pixels,
-                r.reference_ms);
-  s += line;
+  BenchTable table;
+  table.line("environment: %s (%dx%d), %d threads (medians)\n", r.map.c_str(), r.map_width,
+             r.map_height, r.threads);
+  table.row("prefilter_ms", r.prefilter_ms, "ms",
+            "every prefiltered level of the map, once per map");
+  table.row("point_retrace_ms", r.point_retrace_ms, "ms", "point lights only, full 1-spp render");
+  table.row("fast_first_ms", r.fast_first_ms, "ms",
+            "with the environment's fast path, levels made");
+  table.row("fast_ratio", r.fast_ratio, "", "paired; target <= 1.5");
+  table.row("env_reshade_ms", r.reshade_ms, "ms", "kd edit under the environment, total image");
+  table.row("env_floor_ms", r.floor_ms, "ms", "streaming the same bytes");
+  table.row("env_reshade_ratio", r.reshade_ratio, "", "paired; target <= 1.5");
+  table.row("env_reshade_mb", r.reshade_mb, "MB", "read and written per edit");
+  table.line(
+      "  progressive path to %.0f %% relative RMSE at %dx%d, shadows off (exact: "
+      "reference quadrature on %lld surface pixels, %.0f ms):\n",
+      100.0 * r.target, r.accuracy_width, r.accuracy_height, r.reference_pixels, r.reference_ms);
   for (const EnvironmentConvergencePoint& p : r.curve) {
-    std::snprintf(line, sizeof line, "    %5d directions  relative RMSE %.4f  %10.1f ms\n", p.steps,
-                  p.relative_rmse, p.since_change_ms);
-    s += line;
+    table.line("    %5d directions  relative RMSE %.4f  %10.1f ms\n", p.steps, p.relative_rmse,
+               p.since_change_ms);
   }
-  row("steps_to_target", r.steps_to_target, "", "directions per sample (0: not reached)");
-  row("converge_ms", r.converge_ms, "ms", "camera change to that frame, all threads");
-  row("converge_ratio", r.ratio, "x", "over the point-light 1-spp re-trace, same size");
-  row("converge_ms_1thread", r.converge_ms_1, "ms", "the same on 1 thread");
-  row("converge_ratio_1thread", r.ratio_1, "x", "over the 1-thread re-trace");
-  row("converge_ratio_16_estimate", r.ratio_16, "x", "Amdahl's law through 1 and all threads");
-  return s;
+  table.row("steps_to_target", r.steps_to_target, "", "directions per sample (0: not reached)");
+  table.row("converge_ms", r.converge_ms, "ms", "camera change to that frame, all threads");
+  table.row("converge_ratio", r.ratio, "x", "over the point-light 1-spp re-trace, same size");
+  table.row("converge_ms_1thread", r.converge_ms_1, "ms", "the same on 1 thread");
+  table.row("converge_ratio_1thread", r.ratio_1, "x", "over the 1-thread re-trace");
+  table.row("converge_ratio_16_estimate", r.ratio_16, "x",
+            "Amdahl's law through 1 and all threads");
+  return table.text;
 }
 
 std::string environment_bench_json(const EnvironmentBenchReport& r) {
