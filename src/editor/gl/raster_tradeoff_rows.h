@@ -1,16 +1,16 @@
 #pragma once
 // The raster path's knobs as tradeoff rows (issue 12, item 5): which settings are measured, what
 // a row holds, and its CSV. GL-free; raster_tradeoff.h measures them. Rows are measured against
-// the same exact reference as gloss-cli tradeoff's (analysis/tradeoff.h: render_reference<double>
-// at reference_spp, the teapot at its finest level, per-pixel, full size, shadows as the scene
-// says; error over every pixel of the total image), so they can be plotted with its rows
-// (scripts/plot_tradeoff.py takes both CSVs).
+// the same exact reference as gloss-cli tradeoff's (analysis/tradeoff/tradeoff.h:
+// render_reference<double> at reference_spp, the teapot at its finest level, per-pixel, full size,
+// shadows as the scene says; error over every pixel of the total image), so they can be plotted
+// with its rows (scripts/plot_tradeoff.py takes both CSVs).
 #include <atomic>
 #include <string>
 #include <vector>
 
-#include "analysis/image_metrics.h"
-#include "analysis/tradeoff.h"
+#include "analysis/image/image_metrics.h"
+#include "analysis/tradeoff/tradeoff.h"
 #include "editor/model/view/raster_settings.h"
 #include "scene/scene.h"
 

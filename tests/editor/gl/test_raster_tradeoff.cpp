@@ -12,7 +12,7 @@
 #include <string>
 #include <thread>
 
-#include "analysis/tradeoff.h"
+#include "analysis/tradeoff/tradeoff.h"
 #include "base/error.h"
 #include "editor/gl/egl_context.h"
 #include "editor/gl/raster_tradeoff.h"

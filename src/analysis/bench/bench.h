@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/bench_environment.h"
-#include "analysis/bench_scaling.h"
+#include "analysis/bench/bench_environment.h"
+#include "analysis/bench/bench_scaling.h"
 #include "scene/scene.h"
 
 namespace gloss {

@@ -1,4 +1,4 @@
-#include "analysis/bench_environment.h"
+#include "analysis/bench/bench_environment.h"
 
 #include <algorithm>
 #include <chrono>
@@ -10,11 +10,11 @@
 #include <tbb/task_arena.h>
 #include <nlohmann/json.hpp>
 
-#include "analysis/bench_render.h"
-#include "analysis/bench_table.h"
-#include "analysis/image_metrics.h"
-#include "analysis/paired_timing.h"
-#include "analysis/ray_baseline.h"
+#include "analysis/bench/bench_render.h"
+#include "analysis/bench/bench_table.h"
+#include "analysis/bench/paired_timing.h"
+#include "analysis/bench/ray_baseline.h"
+#include "analysis/image/image_metrics.h"
 #include "base/timing.h"
 #include "engine/environment/prefiltered_environment.h"
 #include "engine/progressive_renderer.h"

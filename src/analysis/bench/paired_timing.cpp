@@ -1,4 +1,4 @@
-#include "analysis/paired_timing.h"
+#include "analysis/bench/paired_timing.h"
 
 #include <chrono>
 #include <vector>

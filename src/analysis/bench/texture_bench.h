@@ -4,7 +4,7 @@
 // floor and the walls), against the same scene untextured, in alternating pairs: the 1-spp
 // re-trace, and a kd edit on the textured material against today's re-shade, with the streaming
 // floor of the bytes the textured re-shade reads and writes.
-#include "analysis/bench.h"
+#include "analysis/bench/bench.h"
 #include "scene/scene.h"
 
 namespace gloss {

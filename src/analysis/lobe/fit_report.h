@@ -46,7 +46,7 @@ std::vector<std::string> fit_report_lines(const FitReport& report);
 // ... and as a JSON document (gloss-cli fit --json).
 std::string fit_report_json(const FitReport& report);
 
-// The lobes in the plane of incidence for a light at elevation_deg (analysis/brdf_lobe.h's
+// The lobes in the plane of incidence for a light at elevation_deg (analysis/lobe/brdf_lobe.h's
 // frame and units), 181 outgoing angles from -90 to 90 degrees, as CSV with a header:
 // theta_deg, then the luminance of the reference (when fitted to one), of the source (model to
 // model), of the fitted lobe, of the preset (when named), each diffuse plus specular.

@@ -1,4 +1,4 @@
-#include "analysis/ray_baseline.h"
+#include "analysis/bench/ray_baseline.h"
 
 #include <algorithm>
 #include <limits>

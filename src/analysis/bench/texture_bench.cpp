@@ -1,11 +1,11 @@
-#include "analysis/texture_bench.h"
+#include "analysis/bench/texture_bench.h"
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
 
-#include "analysis/paired_timing.h"
-#include "analysis/ray_baseline.h"
+#include "analysis/bench/paired_timing.h"
+#include "analysis/bench/ray_baseline.h"
 #include "engine/render_context.h"
 #include "engine/shade/pixel_factors.h"
 #include "engine/trace/embree_scene.h"

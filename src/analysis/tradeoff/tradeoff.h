@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/image_metrics.h"
+#include "analysis/image/image_metrics.h"
 #include "scene/scene.h"
 
 namespace gloss {

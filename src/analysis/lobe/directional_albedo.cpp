@@ -1,4 +1,4 @@
-#include "analysis/directional_albedo.h"
+#include "analysis/lobe/directional_albedo.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "analysis/tradeoff.h"
+#include "analysis/tradeoff/tradeoff.h"
 
 #include <algorithm>
 #include <chrono>
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "analysis/image_resample.h"
+#include "analysis/image/image_resample.h"
 #include "base/timing.h"
 #include "engine/renderer.h"
 #include "io/scene/scene_loader.h"

@@ -1,4 +1,4 @@
-#include "analysis/image_resample.h"
+#include "analysis/image/image_resample.h"
 
 #include <algorithm>
 #include <cmath>

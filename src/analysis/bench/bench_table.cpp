@@ -1,4 +1,4 @@
-#include "analysis/bench_table.h"
+#include "analysis/bench/bench_table.h"
 
 #include <cstdarg>
 #include <cstdio>

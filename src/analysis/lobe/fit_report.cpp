@@ -1,4 +1,4 @@
-#include "analysis/fit_report.h"
+#include "analysis/lobe/fit_report.h"
 
 #include <chrono>
 #include <cstdio>
@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/brdf_lobe.h"
+#include "analysis/lobe/brdf_lobe.h"
 #include "physical/measured_metals.h"
 
 namespace gloss {

@@ -1,4 +1,4 @@
-#include "analysis/image_metrics.h"
+#include "analysis/image/image_metrics.h"
 
 #include <algorithm>
 #include <cmath>

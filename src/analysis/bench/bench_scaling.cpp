@@ -1,4 +1,4 @@
-#include "analysis/bench_scaling.h"
+#include "analysis/bench/bench_scaling.h"
 
 #include <algorithm>
 #include <chrono>
@@ -8,8 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/paired_timing.h"
-#include "analysis/ray_baseline.h"
+#include "analysis/bench/paired_timing.h"
+#include "analysis/bench/ray_baseline.h"
 #include "base/error.h"
 #include "base/timing.h"
 #include "engine/render_context.h"

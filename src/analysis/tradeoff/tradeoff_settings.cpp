@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "analysis/tradeoff.h"
+#include "analysis/tradeoff/tradeoff.h"
 
 namespace gloss {
 

@@ -1,4 +1,4 @@
-#include "analysis/brdf_lobe.h"
+#include "analysis/lobe/brdf_lobe.h"
 
 #include <algorithm>
 #include <cmath>
