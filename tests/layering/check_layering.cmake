@@ -35,7 +35,9 @@ set(cases
   "gloss_editor_model|engine/progressive_renderer.h|ok"
   "gloss_editor_model|engine/simd/lane_gather.h|refused"
   "gloss_editor_model|io/json/material_json.h|refused"
-  "gloss_editor_model|editor/gl/gl_texture.h|refused")
+  "gloss_editor_model|editor/gl/gl_texture.h|refused"
+  "gloss_editor_model|editor/gl/raster/raster_renderer.h|refused"
+  "gloss|editor/gl/raster/raster_renderer.h|ok")
 set(failures "")
 set(n 0)
 foreach(case IN LISTS cases)

@@ -28,7 +28,7 @@
 #include "base/assets.h"
 #include "base/timing.h"
 #include "editor/gl/egl_context.h"
-#include "editor/gl/raster_renderer.h"
+#include "editor/gl/raster/raster_renderer.h"
 #include "engine/render_context.h"
 #include "engine/renderer.h"
 #include "engine/shade/pixel_factors.h"

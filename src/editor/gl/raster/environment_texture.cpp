@@ -1,8 +1,8 @@
-#include "editor/gl/environment_texture.h"
+#include "editor/gl/raster/environment_texture.h"
 
 #include <cmath>
 
-#include "editor/gl/raster_programs.h"
+#include "editor/gl/raster/raster_programs.h"
 #include "editor/model/export/environment_atlas.h"
 
 namespace gloss {

@@ -1,11 +1,11 @@
-#include "editor/gl/raster_view.h"
+#include "editor/gl/raster/raster_view.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
 
-#include "editor/gl/raster_programs.h"
+#include "editor/gl/raster/raster_programs.h"
 
 namespace gloss {
 

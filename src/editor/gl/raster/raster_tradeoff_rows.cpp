@@ -1,4 +1,4 @@
-#include "editor/gl/raster_tradeoff_rows.h"
+#include "editor/gl/raster/raster_tradeoff_rows.h"
 
 #include <cmath>
 #include <cstdio>

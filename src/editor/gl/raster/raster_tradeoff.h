@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "editor/gl/raster_tradeoff_rows.h"
+#include "editor/gl/raster/raster_tradeoff_rows.h"
 
 namespace gloss {
 

@@ -1,11 +1,11 @@
-#include "editor/gl/map_textures.h"
+#include "editor/gl/raster/map_textures.h"
 
 #include <cmath>
 #include <set>
 #include <stdexcept>
 #include <string>
 
-#include "editor/gl/raster_programs.h"
+#include "editor/gl/raster/raster_programs.h"
 
 namespace gloss {
 

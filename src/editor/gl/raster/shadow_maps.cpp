@@ -1,4 +1,4 @@
-#include "editor/gl/shadow_maps.h"
+#include "editor/gl/raster/shadow_maps.h"
 
 #include <limits>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "editor/gl/raster_geometry.h"
+#include "editor/gl/raster/raster_geometry.h"
 
 #include <set>
 #include <stdexcept>

@@ -18,7 +18,7 @@
 
 #include <glad/gl.h>
 
-#include "editor/gl/raster_view.h"
+#include "editor/gl/raster/raster_view.h"
 #include "scene/scene.h"
 
 namespace gloss {

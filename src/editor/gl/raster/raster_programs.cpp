@@ -1,4 +1,4 @@
-#include "editor/gl/raster_programs.h"
+#include "editor/gl/raster/raster_programs.h"
 
 #include <stdexcept>
 #include <string>

@@ -1,4 +1,4 @@
-#include "editor/gl/raster_tradeoff.h"
+#include "editor/gl/raster/raster_tradeoff.h"
 
 #include <algorithm>
 #include <atomic>
@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "base/timing.h"
-#include "editor/gl/raster_renderer.h"
+#include "editor/gl/raster/raster_renderer.h"
 #include "engine/renderer.h"
 #include "io/scene/scene_loader.h"
 #include "reference/reference_renderer.h"

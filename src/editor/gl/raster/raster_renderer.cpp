@@ -1,4 +1,4 @@
-#include "editor/gl/raster_renderer.h"
+#include "editor/gl/raster/raster_renderer.h"
 
 #include <algorithm>
 #include <chrono>
@@ -10,12 +10,12 @@
 
 #include <glm/geometric.hpp>
 
-#include "editor/gl/environment_texture.h"
-#include "editor/gl/map_textures.h"
-#include "editor/gl/raster_geometry.h"
-#include "editor/gl/raster_programs.h"
-#include "editor/gl/raster_view.h"
-#include "editor/gl/shadow_maps.h"
+#include "editor/gl/raster/environment_texture.h"
+#include "editor/gl/raster/map_textures.h"
+#include "editor/gl/raster/raster_geometry.h"
+#include "editor/gl/raster/raster_programs.h"
+#include "editor/gl/raster/raster_view.h"
+#include "editor/gl/raster/shadow_maps.h"
 #include "engine/frame_pool.h"
 #include "shading/light_source.h"
 #include "texture/footprint.h"
