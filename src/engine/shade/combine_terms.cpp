@@ -97,11 +97,17 @@ void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermIm
   const TexturePlan& maps = ctx.plan.textures;
   const int channel[4] = {maps.ke_channel(), maps.ka_channel(), maps.kd_channel(),
                           maps.ks_channel()};
+  // The channels' arrays looked up once, not per pixel (null: the term has no map).
+  const float* texel[4][3] = {};
+  for (int t = 0; t < 4 && factors.texel_channels > 0; ++t) {
+    for (int c = 0; c < 3 && channel[t] >= 0; ++c) {
+      texel[t][c] = factors.texel[static_cast<std::size_t>(channel[t] + c)];
+    }
+  }
   auto texel_terms = [&](std::size_t i, glm::vec3 term[4]) {
     for (int t = 0; t < 4; ++t) {
-      if (channel[t] < 0) continue;
-      const float* const* c = &factors.texel[static_cast<std::size_t>(channel[t])];
-      term[t] *= glm::vec3(c[0][i], c[1][i], c[2][i]);
+      if (texel[t][0] == nullptr) continue;
+      term[t] *= glm::vec3(texel[t][0][i], texel[t][1][i], texel[t][2][i]);
     }
   };
   // The pixel loop, instantiated per (one sample, term images, maps) so it holds no such

@@ -180,10 +180,9 @@ class HeaderReader {
 // A chlist value (Imf::ChannelListAttribute): per channel its name\0, int32 pixel type, pLinear,
 // three reserved bytes, int32 x and y sampling; an empty name ends it. OpenEXR reads up to that
 // end whatever the declared size, so the two must agree.
-void read_channel_list(const HeaderReader& reader, const std::string& value, Part& part) {
-  const auto bad = [&](const std::string& why) {
-    reader.fail("attribute 'channels' (chlist) " + why);
-  };
+void read_channel_list(const HeaderReader& reader, const std::string& described,
+                       const std::string& value, Part& part) {
+  const auto bad = [&](const std::string& why) { reader.fail(described + " " + why); };
   part.channels.clear();
   part.bytes_per_pixel = 0;
   std::size_t at = 0;
@@ -202,6 +201,37 @@ void read_channel_list(const HeaderReader& reader, const std::string& value, Par
   if (at + 1 != value.size()) {
     bad("declares " + std::to_string(value.size()) + " bytes but its list ends after " +
         std::to_string(at + 1));
+  }
+}
+
+// A preview value (Imf::PreviewImageAttribute): uint32 width and height, then width x height
+// RGBA pixels of 4 bytes, which the library allocates from the two numbers alone.
+void check_preview(const HeaderReader& reader, const std::string& described,
+                   const std::string& value) {
+  if (value.size() < 8) reader.fail(described + " is shorter than its 8-byte size");
+  const auto w = static_cast<std::uint32_t>(int32_at(value, 0));
+  const auto h = static_cast<std::uint32_t>(int32_at(value, 4));
+  const std::uint64_t needs = plus(8, times(times(w, h), 4));
+  if (needs != value.size()) {
+    reader.fail(described + " of " + std::to_string(w) + "x" + std::to_string(h) + " needs " +
+                std::to_string(needs) + " bytes; it declares " + std::to_string(value.size()));
+  }
+}
+
+// A stringvector value (Imf::StringVectorAttribute): strings, each an int32 length and its bytes,
+// up to the declared size; the library sizes each string from its length before reading it.
+void check_string_vector(const HeaderReader& reader, const std::string& described,
+                         const std::string& value) {
+  std::size_t at = 0;
+  while (at < value.size()) {
+    if (value.size() - at < 4) reader.fail(described + " ends inside a string's length");
+    const std::int32_t length = int32_at(value, at);
+    at += 4;
+    if (length < 0 || static_cast<std::size_t>(length) > value.size() - at) {
+      reader.fail(described + " holds a string of " + std::to_string(length) +
+                  " bytes, more than " + std::to_string(value.size() - at) + " left in its value");
+    }
+    at += static_cast<std::size_t>(length);
   }
 }
 
@@ -231,10 +261,26 @@ bool read_attribute(HeaderReader& reader, Part& part) {
     // OpenEXR's versions disagree on this value's layout (4 or 8 bytes of size before the data).
     reader.fail(described + ": ID manifests are not read in maps");
   }
+  // Types whose values OpenEXR reads by their content rather than by the declared size: a
+  // chlist up to its empty name, a preview's width x height RGBA bytes, a stringvector's
+  // length-prefixed strings. Any attribute of those types (not only the ones used here) is walked
+  // as the library will walk it, or the library allocates what the content claims (a preview of
+  // 65535 x 65535 is 17 GB) or reads the next attribute from elsewhere than this scan.
+  if (type == "chlist" || type == "preview" || type == "stringvector") {
+    const std::string value = reader.bytes(static_cast<std::size_t>(size));
+    if (type == "chlist") {
+      Part scratch;
+      read_channel_list(reader, described, value, name == "channels" ? part : scratch);
+    } else if (type == "preview") {
+      check_preview(reader, described, value);
+    } else {
+      check_string_vector(reader, described, value);
+    }
+    return true;
+  }
   const bool wanted =
       (name == "dataWindow" && type == "box2i") ||
-      (name == "compression" && type == "compression") ||
-      (name == "channels" && type == "chlist") || (name == "tiles" && type == "tiledesc") ||
+      (name == "compression" && type == "compression") || (name == "tiles" && type == "tiledesc") ||
       (name == "type" && type == "string") || (name == "chunkCount" && type == "int");
   if (!wanted) {
     reader.skip(static_cast<std::uint64_t>(size));
@@ -248,8 +294,6 @@ bool read_attribute(HeaderReader& reader, Part& part) {
     part.y1 = int32_at(value, 12);
   } else if (name == "compression") {
     part.compression = static_cast<unsigned char>(value[0]);
-  } else if (name == "channels") {
-    read_channel_list(reader, value, part);
   } else if (name == "tiles") {
     part.has_tiles = true;
     part.tile_width = static_cast<std::uint32_t>(int32_at(value, 0));
