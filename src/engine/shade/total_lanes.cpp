@@ -16,10 +16,14 @@ void material_index(const std::int32_t* material, std::int32_t (&index)[kLanes])
 // For each channel c, two of the Recombination's constants for the lanes, gathered by
 // material: columns first + c and second + c into a and b, then use(c, a, b). Missed lanes
 // read material 0's constants (material_index); the caller discards them. A template so that
-// use is inlined into the loop and its lane loops stay vectorized.
+// use is inlined into the loop and its lane loops stay vectorized; always inlined because GCC
+// otherwise keeps it out of line for add_light and store_mapped (a call per light and packet
+// that the hand-written loops it replaced did not have).
 template <class Use>
-void gather_channel_pairs(const Recombination& recombination, const std::int32_t* material,
-                          std::size_t first, std::size_t second, Use&& use) {
+[[gnu::always_inline]] inline void gather_channel_pairs(const Recombination& recombination,
+                                                        const std::int32_t* material,
+                                                        std::size_t first, std::size_t second,
+                                                        Use&& use) {
   alignas(64) std::int32_t index[kLanes];
   material_index(material, index);
   const LaneGather by_material(index);
