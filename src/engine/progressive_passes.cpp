@@ -115,7 +115,7 @@ bool ProgressiveRenderer::Impl::step() {
     ok = refine(total, total_done);
     // A new placement of the refined samples (re-chosen after an edit): the environment's
     // estimates start again, their sums being per refined entry and new entries holding the
-    // fast path. (Remapping the kept entries' sums would spare that: not done yet.) The centre
+    // fast path (remapping the kept entries' sums instead would keep their estimates). The centre
     // image then no longer holds the other pixels' totals: the frame's total is made whole.
     if (cache.refined.pixels != placed) {
       environment.reset();

@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <string>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -343,9 +346,24 @@ struct Writer {
   void write() {
     std::string text = doc.dump(binary ? -1 : 1);
     if (!binary) {
-      if (!buffer.bytes().empty()) write_text_atomically(bin_path(), buffer.bytes());
-      write_text_atomically(path, text + "\n");
       result.bytes = text.size() + 1 + buffer.bytes().size();
+      if (buffer.bytes().empty()) {
+        write_text_atomically(path, text + "\n");
+        return;
+      }
+      // The pair changes together: the .bin is written to its temporary, the .gltf is put in
+      // place, and only then the .bin is. A failure before that leaves both old files; only a
+      // failed rename within the folder, after the .gltf, could leave them mismatched.
+      write_atomically(bin_path(), [&](const std::string& temp) {
+        std::FILE* file = std::fopen(temp.c_str(), "wb");
+        if (file == nullptr) throw_write_error(bin_path(), errno);
+        const bool written = std::fwrite(buffer.bytes().data(), 1, buffer.bytes().size(), file) ==
+                             buffer.bytes().size();
+        const int error = errno;
+        if (std::fclose(file) != 0 || !written)
+          throw_write_error(bin_path(), written ? errno : error);
+        write_text_atomically(path, text + "\n");
+      });
       return;
     }
     // GLB: a 12-byte header, the JSON chunk padded with spaces, the BIN chunk with zeros.
@@ -358,7 +376,15 @@ struct Writer {
       std::memcpy(b, &x, 4);  // glTF is little-endian, as x86-64
       out.append(b, 4);
     };
-    const std::uint32_t total = 12 + 8 + text.size() + (bin.empty() ? 0 : 8 + bin.size());
+    // GLB's lengths are 32-bit: a larger file has no valid header (the .gltf form has no limit).
+    const std::uint64_t length =
+        12 + 8 + std::uint64_t(text.size()) + (bin.empty() ? 0 : 8 + std::uint64_t(bin.size()));
+    if (length > 0xffffffffu) {
+      throw RuntimeFailure("cannot write " + path +
+                           ": a GLB holds at most 4 GiB and this one needs " +
+                           std::to_string(length >> 20) + " MiB; export to .gltf instead");
+    }
+    const auto total = static_cast<std::uint32_t>(length);
     u32(0x46546C67u);  // "glTF"
     u32(2);
     u32(total);

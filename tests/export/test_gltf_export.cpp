@@ -270,5 +270,16 @@ TEST_F(GltfExport, BadPathsFailCleanly) {
   EXPECT_FALSE(std::filesystem::exists(folder.file("missing")));
 }
 
+TEST_F(GltfExport, AFailedGltfLeavesItsOldBinBeside) {
+  // out.gltf cannot be written (a folder holds its name): the export fails, and the out.bin of
+  // an earlier export is still the one it was, not a new .bin beside the old .gltf.
+  std::filesystem::create_directory(folder.file("out.gltf"));
+  { std::ofstream(folder.file("out.bin"), std::ios::binary) << "old"; }
+  EXPECT_THROW(export_gltf(scene, conversions, folder.file("out.gltf")), RuntimeFailure);
+  std::ifstream in(folder.file("out.bin"), std::ios::binary);
+  const std::string kept((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(kept, "old");
+}
+
 }  // namespace
 }  // namespace gloss

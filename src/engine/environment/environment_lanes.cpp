@@ -1,5 +1,6 @@
 // environment_lanes (trace/sample_packet.h): the environment's fast path for the 16 lanes of a
 // packet, from the prefiltered levels (prefiltered_environment.h).
+#include <cassert>
 #include <cmath>
 #include <cstdint>
 
@@ -12,6 +13,10 @@
 namespace gloss {
 
 namespace {
+
+// Exponents 0 and 1, 2, 4 ... kTopPrefilteredExponent, then the map: 13 images today.
+constexpr int kMaxImages = 32;
+static_assert(kTopPrefilteredExponent <= float(1 << 29), "more levels than kMaxImages");
 
 // The map-frame normals and mirror directions of every lane, and their map coordinates. In
 // vector loops over all lanes (misses included, with a harmless +y in place of their normal):
@@ -52,12 +57,16 @@ void environment_lanes(const SamplePacket& packet, const SurfaceLanes& surfaces,
   LaneDirections d;
   lane_directions(surfaces, env.rotation, d);
   // Per lane its material's terms and levels (lanes without a specular term read level 1, as
-  // the diffuse term: valid taps, never used).
+  // the diffuse term: valid taps, never used). The levels' images are looked up once per packet.
+  const int images = maps.levels() + 1;  // the levels, then the map itself
+  assert(images <= kMaxImages);
+  const Image* level_image[kMaxImages];
+  for (int k = 0; k < images; ++k) level_image[k] = &maps.image(k);
   alignas(64) std::int32_t diffuse_on[kLanes], level_a[kLanes], level_b[kLanes];
   alignas(64) std::int32_t dw[kLanes], dh[kLanes], aw[kLanes], ah[kLanes], bw[kLanes], bh[kLanes];
   alignas(64) float wb[kLanes];
-  const Image& diffuse_level = maps.image(1);
-  bool any_b = false;
+  const Image& diffuse_level = *level_image[1];
+  bool any_diffuse = false, any_a = false, any_b = false;
   for (int i = 0; i < kLanes; ++i) {
     const std::int32_t object = packet.object[i];
     diffuse_on[i] = 0;
@@ -67,9 +76,11 @@ void environment_lanes(const SamplePacket& packet, const SurfaceLanes& surfaces,
       const auto m =
           static_cast<std::size_t>(env.object_material[static_cast<std::size_t>(object)]);
       diffuse_on[i] = env.diffuse[m];
+      any_diffuse |= diffuse_on[i] != 0;
       if (env.specular[m] != 0) {
         const LevelBlend& b = env.blend[m];
         level_a[i] = b.a;
+        any_a = true;
         if (b.wb != 0.0f) {  // one level (or the map) alone: no second read
           level_b[i] = b.b;
           wb[i] = b.wb;
@@ -77,22 +88,23 @@ void environment_lanes(const SamplePacket& packet, const SurfaceLanes& surfaces,
         }
       }
     }
-    const Image& a = maps.image(level_a[i] < 0 ? 1 : level_a[i]);
-    const Image& b = maps.image(level_b[i] < 0 ? 1 : level_b[i]);
+    const Image& a = *level_image[level_a[i] < 0 ? 1 : level_a[i]];
+    const Image& b = *level_image[level_b[i] < 0 ? 1 : level_b[i]];
     dw[i] = diffuse_level.width, dh[i] = diffuse_level.height;
     aw[i] = a.width, ah[i] = a.height, bw[i] = b.width, bh[i] = b.height;
   }
+  // Taps only for the reads some lane makes (a packet of floor or of one metal needs one kind).
   BilinearTaps diffuse_taps, a_taps, b_taps;
-  bilinear_taps(d.nu, d.nt, dw, dh, diffuse_taps);
-  bilinear_taps(d.ru, d.rt, aw, ah, a_taps);
+  if (any_diffuse) bilinear_taps(d.nu, d.nt, dw, dh, diffuse_taps);
+  if (any_a) bilinear_taps(d.ru, d.rt, aw, ah, a_taps);
   if (any_b) bilinear_taps(d.ru, d.rt, bw, bh, b_taps);
   for (int i = 0; i < kLanes; ++i) {
     glm::vec3 diffuse(0.0f), specular(0.0f);
     if (diffuse_on[i] != 0) diffuse = bilinear_value(diffuse_level.pixels.data(), diffuse_taps, i);
     if (level_a[i] >= 0) {  // PrefilteredEnvironment::specular_at, the same blend
-      specular = bilinear_value(maps.image(level_a[i]).pixels.data(), a_taps, i);
+      specular = bilinear_value(level_image[level_a[i]]->pixels.data(), a_taps, i);
       if (level_b[i] >= 0) {
-        const glm::vec3 lb = bilinear_value(maps.image(level_b[i]).pixels.data(), b_taps, i);
+        const glm::vec3 lb = bilinear_value(level_image[level_b[i]]->pixels.data(), b_taps, i);
         specular = specular + (lb - specular) * wb[i];
       }
     }

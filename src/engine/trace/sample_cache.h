@@ -101,9 +101,9 @@ bool add_samples(SampleCache& cache, const RenderContext& ctx, int count);
 // channels; buffers keep their capacity.
 void size_plane(SamplePlane& plane, std::size_t pixels, PlaneShape shape);
 
-// Appends count planes sized for the cache and `lights` planned lights (memory of spare planes
-// reused), and drops the planes from index first on (to the spares): the bracket of a pass that
-// traces new planes (add_samples, trace_single_sample).
+// Appends count planes sized for the cache and shape (memory of spare planes reused), and drops the
+// planes from index first on (to the spares): the bracket of a pass that traces new planes
+// (add_samples, trace_single_sample).
 void append_planes(SampleCache& cache, PlaneShape shape, int count);
 void drop_planes(SampleCache& cache, int first);
 
@@ -112,8 +112,8 @@ void drop_planes(SampleCache& cache, int first);
 // full-resolution plane is 33 MB at 1280x720 with one light).
 void reclaim_planes(SampleCache& into, SampleCache&& from);
 
-// Sizes every plane for the cache's pixels and `lights` planned lights (before light factors
-// are recomputed for another plan).
+// Sizes every plane for the cache's pixels and shape (before light factors are recomputed
+// for another plan).
 void size_planes(SampleCache& cache, PlaneShape shape);
 
 // Recomputes the light factors (shadow rays included) of every plane and of the refined

@@ -152,14 +152,15 @@ long long shade_sample(const SamplePacket& packet, const SampleCache& cache,
   TexelLanes& maps = texels != nullptr ? *texels : own_texels;
   const std::size_t channels = ctx.plan.textures.channels();
   if (!any_hit(packet)) {  // all background (image borders): every light's factors are zero
+    // The texels first, as on hits: on_light may read them (a shininess map's alpha lanes).
+    if (channels > 0) {
+      unit_texels(channels, maps);
+      store_texels(packet, cache.width, maps, plane);
+    }
     LightLanes none{};
     for (std::size_t li = 0; li < ctx.plan.slots(); ++li) {
       store_light(packet, cache.width, none, plane.lights[li]);
       on_light(li, none);
-    }
-    if (channels > 0) {
-      unit_texels(channels, maps);
-      store_texels(packet, cache.width, maps, plane);
     }
     return 0;
   }

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <exception>
 #include <functional>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -48,8 +49,13 @@ FloatImage read_exr_image(const std::string& path, const ImageReadOptions& optio
   check_image_size(path, "OpenEXR", scan.width, scan.height, static_cast<int>(scanned.size()),
                    options, scan.library_bytes);
   // OpenEXR refuses a larger header while it reads it, before anything is allocated for it.
-  Imf::Header::setMaxImageSize(kMaxMapSide, kMaxMapSide);
-  Imf::Header::setMaxTileSize(kMaxMapSide, kMaxMapSide);
+  // The limits are the library's process-wide settings: set once, not by every read (two maps
+  // read at once would race on them).
+  static std::once_flag limits_set;
+  std::call_once(limits_set, [] {
+    Imf::Header::setMaxImageSize(kMaxMapSide, kMaxMapSide);
+    Imf::Header::setMaxTileSize(kMaxMapSide, kMaxMapSide);
+  });
   try {
     Imf::InputFile file(path.c_str());
     const Imf::Header& header = file.header();

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include <jpeglib.h>
-// jerror.h after jpeglib.h: it names the message codes (JWRN_JPEG_EOF, JERR_NO_BACKING_STORE).
+// jerror.h after jpeglib.h: it names the message codes (JWRN_JPEG_EOF, JERR_NO_BACKING_STORE, ...).
 #include <jerror.h>
 
 #include "base/error.h"
@@ -65,8 +65,10 @@ struct Decoder {
 };
 
 void read_header(Decoder& d, const std::vector<unsigned char>& bytes) {
-  jpeg_create_decompress(&d.cinfo);
+  // Created first: a failed create (out of memory) has set cinfo.mem or left it null, and
+  // jpeg_destroy_decompress frees what there is either way.
   d.created = true;
+  jpeg_create_decompress(&d.cinfo);
   jpeg_mem_src(&d.cinfo, bytes.data(), static_cast<unsigned long>(bytes.size()));
   jpeg_read_header(&d.cinfo, TRUE);
   // Adobe CMYK and YCCK come out as CMYK (inverted, as Adobe writes them); grey stays grey and
@@ -123,7 +125,10 @@ FloatImage read_jpeg_image(const std::string& path, const ImageReadOptions& opti
   d.cinfo.mem->max_memory_to_use =
       static_cast<long>(budget > ours + floats + 1 ? budget - ours - floats : 1);  // 0: no limit
   if (!run_stage(d, [&] { decode_pixels(d); })) {
-    if (d.errors.base.msg_code == JERR_NO_BACKING_STORE) {
+    // Past max_memory_to_use libjpeg wants a backing store; an allocation it cannot make at
+    // all is JERR_OUT_OF_MEMORY. Both mean the budget.
+    const int code = d.errors.base.msg_code;
+    if (code == JERR_NO_BACKING_STORE || code == JERR_OUT_OF_MEMORY) {
       throw InputError(path, "JPEG of " + std::to_string(width) + "x" + std::to_string(height) +
                                  " pixels needs more than the memory budget of " +
                                  std::to_string(budget >> 20) + " MB to decode");

@@ -71,7 +71,10 @@ std::shared_ptr<const Texture> read_texture(const std::string& path, ImageData d
   const bool keyed = key_of(path, data, key);
   if (keyed) {
     const std::lock_guard<std::mutex> lock(cache_mutex());
-    if (std::shared_ptr<const Texture> hit = cache()[key].lock()) {
+    // find, not operator[]: a miss whose read then fails must leave no empty entry behind.
+    const auto found = cache().find(key);
+    if (std::shared_ptr<const Texture> hit =
+            found != cache().end() ? found->second.lock() : nullptr) {
       if (cached != nullptr) *cached = true;
       return hit;
     }
