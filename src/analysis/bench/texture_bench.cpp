@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <utility>
+
+#include <glm/vec4.hpp>
 
 #include "analysis/bench/paired_timing.h"
 #include "analysis/bench/ray_baseline.h"
@@ -12,6 +15,7 @@
 #include "engine/trace/sample_cache.h"
 #include "engine/trace/single_sample_pass.h"
 #include "texture/mip_pyramid.h"
+#include "texture/texel_image.h"
 
 namespace gloss {
 
@@ -20,15 +24,11 @@ namespace {
 // texel(x, y, rgba); source names it in messages.
 template <class Texel>
 std::shared_ptr<const Texture> benchmark_map(int side, const char* source, Texel texel) {
-  FloatImage image;
-  image.width = image.height = side;
-  image.channels = 4;
-  image.samples.resize(static_cast<std::size_t>(side) * side * 4);
-  for (int y = 0; y < side; ++y) {
-    for (int x = 0; x < side; ++x) {
-      texel(x, y, &image.samples[(static_cast<std::size_t>(y) * side + x) * 4]);
-    }
-  }
+  FloatImage image = texel_image(side, side, 4, [&texel](int x, int y) {
+    glm::vec4 t(0.0f);
+    texel(x, y, &t[0]);
+    return t;
+  });
   auto texture = std::make_shared<Texture>(make_texture(std::move(image)));
   texture->source = source;
   return texture;
