@@ -4,8 +4,8 @@ median render time, one marker style per knob, every point labelled with its set
 Pareto front (no other point is both faster and more accurate) drawn as a step line.
 
 Several CSVs are drawn together: the raster path's rows (`quality raster PATH` in an editor
-script, editor/gl/raster_tradeoff.h) measure against the same reference as the CPU rows and are
-drawn as hollow markers of their own, with the cpu 1-spp row they carry.
+script, editor/gl/raster/raster_tradeoff.h) measure against the same reference as the CPU rows
+and are drawn as hollow markers of their own, with the cpu 1-spp row they carry.
 
 Usage: plot_tradeoff.py CSV [CSV ...] OUT.png [--title TEXT] [--base spp=4,pow=exact,...]
 Run with Debian's /usr/bin/python3 (python3-matplotlib). Writes OUT.png as given (gloss-cli

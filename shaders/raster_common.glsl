@@ -1,5 +1,5 @@
-// raster_common.glsl: what every raster program (src/editor/gl/raster_programs.h) shares: the
-// uniforms that phong_contract.glsl expects, the projections, the sphere intersection and the
+// raster_common.glsl: what every raster program (src/editor/gl/raster/raster_programs.h) shares:
+// the uniforms that phong_contract.glsl expects, the projections, the sphere intersection and the
 // shadow-map visibility. Placed after the program's #version and #defines, before the contract.
 // The program defines GLOSS_LIGHT_COUNT (0 allowed) and GLOSS_SHADOWS (0 or 1).
 

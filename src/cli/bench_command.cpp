@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/bench.h"
-#include "analysis/bench_scaling.h"
+#include "analysis/bench/bench.h"
+#include "analysis/bench/bench_scaling.h"
 #include "base/assets.h"
 #include "base/atomic_file.h"
 #include "cli/commands.h"

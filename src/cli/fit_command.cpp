@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/fit_report.h"
+#include "analysis/lobe/fit_report.h"
 #include "base/atomic_file.h"
 #include "base/error.h"
 #include "base/text_distance.h"

@@ -18,7 +18,7 @@
 
 #include <tbb/info.h>
 
-#include "analysis/tradeoff.h"
+#include "analysis/tradeoff/tradeoff.h"
 #include "base/assets.h"
 #include "base/atomic_file.h"
 #include "base/error.h"

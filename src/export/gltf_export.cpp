@@ -1,7 +1,6 @@
 #include "export/gltf_export.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -16,6 +15,7 @@
 #include <glm/mat3x3.hpp>
 #include <nlohmann/json.hpp>
 
+#include "base/ascii.h"
 #include "base/atomic_file.h"
 #include "base/error.h"
 #include "base/version.h"
@@ -31,11 +31,6 @@ using nlohmann::json;
 namespace fs = std::filesystem;
 
 constexpr double kPi = 3.14159265358979323846;
-
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
 
 json vec(const glm::vec3& v) {
   return json::array({v.x, v.y, v.z});
@@ -404,7 +399,7 @@ struct Writer {
 }  // namespace
 
 bool is_gltf_path(const std::string& path) {
-  const std::string ext = lower(fs::path(path).extension().string());
+  const std::string ext = lower_extension(path);
   return ext == ".gltf" || ext == ".glb";
 }
 
@@ -414,7 +409,7 @@ GltfExportResult export_gltf(const Scene& scene, const std::vector<MaterialConve
     throw InputError(path, "a glTF export is written to FILE.gltf or FILE.glb");
   }
   Writer w(scene, conversions, path);
-  w.binary = lower(fs::path(path).extension().string()) == ".glb";
+  w.binary = lower_extension(path) == ".glb";
   w.build(options);
   w.write();
   return w.result;

@@ -1,9 +1,9 @@
 #include "export/map_export.h"
 
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 
+#include "base/ascii.h"
 #include "io/scene/material_maps.h"
 
 namespace gloss {
@@ -13,11 +13,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr double kPi = 3.14159265358979323846;
-
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
 
 }  // namespace
 
@@ -29,7 +24,7 @@ MapImage map_image(const Scene& scene, const TextureMap& map, const std::string&
   }
   const std::string base_dir = fs::path(scene.path).parent_path().string();
   out.file = resolve_map_path(map.file, base_dir);
-  const std::string ext = lower(fs::path(out.file).extension().string());
+  const std::string ext = lower_extension(out.file);
   if (ext == ".png") {
     out.mime = "image/png";
   } else if (ext == ".jpg" || ext == ".jpeg") {

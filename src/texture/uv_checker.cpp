@@ -2,10 +2,9 @@
 
 #include <cmath>
 #include <mutex>
-#include <utility>
 
-#include "base/float_image.h"
 #include "texture/mip_pyramid.h"
+#include "texture/texel_image.h"
 
 namespace gloss {
 
@@ -50,20 +49,8 @@ glm::vec3 uv_checker_texel(int x, int y, int side) {
 }
 
 Texture make_uv_checker(int side) {
-  FloatImage image;
-  image.width = image.height = side;
-  image.channels = 3;
-  image.samples.resize(static_cast<std::size_t>(side) * side * 3);
-  for (int y = 0; y < side; ++y) {
-    for (int x = 0; x < side; ++x) {
-      const glm::vec3 c = uv_checker_texel(x, y, side);
-      float* out = &image.samples[(static_cast<std::size_t>(y) * side + x) * 3];
-      out[0] = c.r;
-      out[1] = c.g;
-      out[2] = c.b;
-    }
-  }
-  Texture texture = make_texture(std::move(image));
+  Texture texture = make_texture(
+      texel_image(side, side, 3, [side](int x, int y) { return uv_checker_texel(x, y, side); }));
   texture.source = "UV checker";
   texture.format = "made by gloss";
   texture.bits = 32;

@@ -1,6 +1,6 @@
 // The scaling rows of `gloss-cli bench --scaling`: each variant changes only its factor of the
 // benchmark scene, by counts worked out by hand, and a row measures or says why it did not.
-#include "analysis/bench_scaling.h"
+#include "analysis/bench/bench_scaling.h"
 
 #include <cstdlib>
 

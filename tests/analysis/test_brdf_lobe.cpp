@@ -1,7 +1,7 @@
-// The lobe view's samples (analysis/brdf_lobe.h) against values worked out by hand from
+// The lobe view's samples (analysis/lobe/brdf_lobe.h) against values worked out by hand from
 // docs/spec/shading.md. Frame: n = +y, light from the left at elevation e, outgoing angle theta
 // from the normal, positive on the mirror side.
-#include "analysis/brdf_lobe.h"
+#include "analysis/lobe/brdf_lobe.h"
 
 #include <cmath>
 

@@ -8,7 +8,7 @@
 //     8 integral_(1/sqrt 2)^1 w^(a+1) (2 w^2 - 1) dw = 8 ((2 - s) / (a + 4) - (1 - s) / (a + 2)),
 //     s = 2^(-(a + 2) / 2) (a = 0 gives 1, as it must: c^0 = 1 everywhere above the surface).
 // Each result lies within its stated error (and the error is small) of the hand value.
-#include "analysis/directional_albedo.h"
+#include "analysis/lobe/directional_albedo.h"
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 // Error figures of gloss-cli tradeoff (image_metrics.h) and the preview upsampling
 // (image_resample.h) on small hand-made images, with the expected numbers worked out by hand.
-#include "analysis/image_metrics.h"
+#include "analysis/image/image_metrics.h"
 
 #include <cmath>
 #include <limits>
@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "analysis/image_resample.h"
+#include "analysis/image/image_resample.h"
 
 namespace gloss {
 namespace {

@@ -1,7 +1,7 @@
 // run_tradeoff on a small teapot scene: every knob and setting present, errors that behave as the
 // knobs say (more samples, less error; the reference's own settings next to nothing), the CSV
 // header of the issue, and cancellation from the caller.
-#include "analysis/tradeoff.h"
+#include "analysis/tradeoff/tradeoff.h"
 
 #include <atomic>
 #include <map>

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "analysis/image_metrics.h"
+#include "analysis/image/image_metrics.h"
 #include "engine/renderer.h"
 #include "io/scene/scene_loader.h"
 #include "support/image_compare.h"

@@ -8,26 +8,14 @@
 
 #include "scene/material.h"
 #include "texture/mip_pyramid.h"
+#include "texture/texel_image.h"
 
 namespace gloss::test {
 
 // A w x h texture with `channels` (1 or 4) of texel(i, j) (j from the top row).
 inline std::shared_ptr<const Texture> texture_of(int w, int h, int channels,
                                                  const std::function<glm::vec4(int, int)>& texel) {
-  FloatImage image;
-  image.width = w;
-  image.height = h;
-  image.channels = channels;
-  image.samples.resize(static_cast<std::size_t>(w) * h * channels);
-  for (int j = 0; j < h; ++j) {
-    for (int i = 0; i < w; ++i) {
-      const glm::vec4 t = texel(i, j);
-      for (int c = 0; c < channels; ++c) {
-        image.samples[(static_cast<std::size_t>(j) * w + i) * channels + c] = t[c];
-      }
-    }
-  }
-  auto texture = std::make_shared<Texture>(make_texture(std::move(image)));
+  auto texture = std::make_shared<Texture>(make_texture(texel_image(w, h, channels, texel)));
   texture->source = "test";
   return texture;
 }

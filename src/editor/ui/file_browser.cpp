@@ -1,12 +1,12 @@
 #include "editor/ui/file_browser.h"
 
 #include <algorithm>
-#include <cctype>
 #include <system_error>
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "base/ascii.h"
 #include "editor/model/session/file_defaults.h"
 #include "io/model/model_loader.h"
 
@@ -88,16 +88,7 @@ RecentKind recent_kind(BrowsePurpose purpose) {
   return RecentKind::scene;
 }
 
-namespace {
-
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 std::filesystem::path scene_folder(const std::string& scene_path, const std::string& fallback) {
   return scene_path.empty() ? std::filesystem::path(fallback)

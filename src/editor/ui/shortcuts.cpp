@@ -2,7 +2,6 @@
 // them. Dear ImGui 1.86 reads key state once per frame, so a press and release that arrive
 // between two frames would be lost: shortcuts read a queue of GLFW key events instead, and such
 // taps are replayed to ImGui as held for one frame (Enter in a text field, Backspace ...).
-#include <cctype>
 #include <string>
 
 #include <imgui.h>
@@ -12,6 +11,7 @@
 
 #include <algorithm>
 
+#include "base/ascii.h"
 #include "editor/model/session/file_defaults.h"
 #include "editor/ui/app.h"
 #include "editor/ui/panels/panels.h"
@@ -232,12 +232,8 @@ std::string shortcut_name(const Shortcut& s) {
 }
 
 const Shortcut* find_shortcut(const std::string& keys) {
-  auto lower = [](std::string s) {
-    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-  };
   for (const Shortcut& s : shortcuts()) {
-    if (lower(shortcut_name(s)) == lower(keys)) return &s;
+    if (ascii_equal_ignoring_case(shortcut_name(s), keys)) return &s;
   }
   return nullptr;
 }

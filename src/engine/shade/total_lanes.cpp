@@ -13,6 +13,29 @@ void material_index(const std::int32_t* material, std::int32_t (&index)[kLanes])
   for (int i = 0; i < kLanes; ++i) index[i] = material[i] < 0 ? 0 : material[i];
 }
 
+// For each channel c, two of the Recombination's constants for the lanes, gathered by
+// material: columns first + c and second + c into a and b, then use(c, a, b). Missed lanes
+// read material 0's constants (material_index); the caller discards them. A template so that
+// use is inlined into the loop and its lane loops stay vectorized; always inlined because GCC
+// otherwise keeps it out of line for add_light and store_mapped (a call per light and packet
+// that the hand-written loops it replaced did not have).
+template <class Use>
+[[gnu::always_inline]] inline void gather_channel_pairs(const Recombination& recombination,
+                                                        const std::int32_t* material,
+                                                        std::size_t first, std::size_t second,
+                                                        Use&& use) {
+  alignas(64) std::int32_t index[kLanes];
+  material_index(material, index);
+  const LaneGather by_material(index);
+  const std::size_t materials = recombination.materials();
+  alignas(64) float a[kLanes], b[kLanes];
+  for (std::size_t c = 0; c < 3; ++c) {
+    by_material(recombination.column(first + c), materials, a);
+    by_material(recombination.column(second + c), materials, b);
+    use(c, a, b);
+  }
+}
+
 // Channels to pixels: rgb[3 i + c] = total[c][i].
 void interleave(const float (&total)[3][kLanes], float (&rgb)[3 * kLanes]) {
   for (int i = 0; i < kLanes; ++i) {
@@ -44,19 +67,13 @@ void TotalLanes::add_light(const std::int32_t* material, std::size_t li, const f
     }
     return;
   }
-  alignas(64) std::int32_t index[kLanes];
-  material_index(material, index);
-  const LaneGather by_material(index);
-  const std::size_t materials = m_recombination.materials();
-  alignas(64) float k[kLanes];
-  for (int c = 0; c < 3; ++c) {
-    by_material(m_recombination.column(6 + 6 * li + static_cast<std::size_t>(c)), materials, k);
+  gather_channel_pairs(m_recombination, material, 6 + 6 * li, 9 + 6 * li,
+                       [&](std::size_t c, const float(&kd)[kLanes], const float(&ks)[kLanes]) {
 #pragma omp simd
-    for (int i = 0; i < kLanes; ++i) m_diffuse[c][i] += k[i] * diffuse[i];
-    by_material(m_recombination.column(9 + 6 * li + static_cast<std::size_t>(c)), materials, k);
+                         for (int i = 0; i < kLanes; ++i) m_diffuse[c][i] += kd[i] * diffuse[i];
 #pragma omp simd
-    for (int i = 0; i < kLanes; ++i) m_specular[c][i] += k[i] * specular[i];
-  }
+                         for (int i = 0; i < kLanes; ++i) m_specular[c][i] += ks[i] * specular[i];
+                       });
 }
 
 void TotalLanes::store(const std::int32_t* material, float (&rgb)[3 * kLanes],
@@ -93,25 +110,20 @@ void TotalLanes::store(const std::int32_t* material, float (&rgb)[3 * kLanes],
     interleave(total, rgb);
     return;
   }
-  alignas(64) std::int32_t index[kLanes];
-  material_index(material, index);
-  const LaneGather by_material(index);
-  const std::size_t materials = m_recombination.materials();
-  alignas(64) float emission[kLanes], ambient[kLanes];
-  for (int c = 0; c < 3; ++c) {
-    by_material(m_recombination.column(static_cast<std::size_t>(c)), materials, emission);
-    by_material(m_recombination.column(3 + static_cast<std::size_t>(c)), materials, ambient);
-    const float background = m_recombination.background()[c];
+  gather_channel_pairs(
+      m_recombination, material, 0, 3,
+      [&](std::size_t c, const float(&emission)[kLanes], const float(&ambient)[kLanes]) {
+        const float background = m_recombination.background()[c];
 #pragma omp simd
-    for (int i = 0; i < kLanes; ++i) {
-      // All terms zero on a missed lane.
-      const bool hit = material[i] >= 0;
-      const float missed = hit ? 0.0f : 1.0f;
-      total[c][i] = form_total(hit ? emission[i] : 0.0f, hit ? ambient[i] : 0.0f,
-                               hit ? m_diffuse[c][i] : 0.0f, hit ? m_specular[c][i] : 0.0f,
-                               missed * background);
-    }
-  }
+        for (int i = 0; i < kLanes; ++i) {
+          // All terms zero on a missed lane.
+          const bool hit = material[i] >= 0;
+          const float missed = hit ? 0.0f : 1.0f;
+          total[c][i] = form_total(hit ? emission[i] : 0.0f, hit ? ambient[i] : 0.0f,
+                                   hit ? m_diffuse[c][i] : 0.0f, hit ? m_specular[c][i] : 0.0f,
+                                   missed * background);
+        }
+      });
   interleave(total, rgb);
 }
 
@@ -119,26 +131,21 @@ void TotalLanes::store(const std::int32_t* material, float (&rgb)[3 * kLanes],
 // Recombination::terms' order (the scalar path of combine_terms, which the tests compare).
 void TotalLanes::store_mapped(const std::int32_t* material, const float* const (&maps)[4][3],
                               float (&total)[3][kLanes]) const {
-  alignas(64) std::int32_t index[kLanes];
-  material_index(material, index);
-  const LaneGather by_material(index);
-  const std::size_t materials = m_recombination.materials();
-  alignas(64) float emission[kLanes], ambient[kLanes];
-  for (int c = 0; c < 3; ++c) {
-    by_material(m_recombination.column(static_cast<std::size_t>(c)), materials, emission);
-    by_material(m_recombination.column(3 + static_cast<std::size_t>(c)), materials, ambient);
-    const float background = m_recombination.background()[c];
-    for (int i = 0; i < kLanes; ++i) {
-      const bool hit = material[i] >= 0;
-      float term[4] = {hit ? emission[i] : 0.0f, hit ? ambient[i] : 0.0f,
-                       hit ? m_diffuse[c][i] : 0.0f, hit ? m_specular[c][i] : 0.0f};
-      for (int t = 0; t < 4; ++t) {
-        if (maps[t][c] != nullptr) term[t] *= maps[t][c][i];
-      }
-      total[c][i] =
-          form_total(term[0], term[1], term[2], term[3], (hit ? 0.0f : 1.0f) * background);
-    }
-  }
+  gather_channel_pairs(
+      m_recombination, material, 0, 3,
+      [&](std::size_t c, const float(&emission)[kLanes], const float(&ambient)[kLanes]) {
+        const float background = m_recombination.background()[c];
+        for (int i = 0; i < kLanes; ++i) {
+          const bool hit = material[i] >= 0;
+          float term[4] = {hit ? emission[i] : 0.0f, hit ? ambient[i] : 0.0f,
+                           hit ? m_diffuse[c][i] : 0.0f, hit ? m_specular[c][i] : 0.0f};
+          for (int t = 0; t < 4; ++t) {
+            if (maps[t][c] != nullptr) term[t] *= maps[t][c][i];
+          }
+          total[c][i] =
+              form_total(term[0], term[1], term[2], term[3], (hit ? 0.0f : 1.0f) * background);
+        }
+      });
 }
 
 }  // namespace gloss

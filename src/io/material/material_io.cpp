@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/ascii.h"
 #include "base/atomic_file.h"
 #include "base/error.h"
 #include "base/field_path.h"
@@ -60,13 +61,6 @@ std::string trim(const std::string& text) {
   return text.substr(first, text.find_last_not_of(" \t") - first + 1);
 }
 
-std::string lowercase(std::string text) {
-  for (char& c : text) {
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-  }
-  return text;
-}
-
 float mtl_number(const Token& token, const std::string& path, int line) {
   char* end = nullptr;
   const double value = std::strtod(token.text.c_str(), &end);
@@ -84,7 +78,7 @@ float mtl_number(const Token& token, const std::string& path, int line) {
 glm::vec3 mtl_colour(const std::vector<Token>& tokens, const std::string& path, int line) {
   const std::string& keyword = tokens[0].text;
   if (tokens.size() > 1 &&
-      (lowercase(tokens[1].text) == "spectral" || lowercase(tokens[1].text) == "xyz")) {
+      (ascii_lower(tokens[1].text) == "spectral" || ascii_lower(tokens[1].text) == "xyz")) {
     throw InputError(
         path,
         "'" + keyword + " " + tokens[1].text + "' is not supported (use " + keyword + " r g b)",
@@ -245,7 +239,7 @@ std::vector<NamedMaterial> load_mtl(const std::string& path) {
     if (trimmed.empty() || trimmed[0] == '#') continue;
 
     std::vector<Token> tokens = tokenize(line);
-    const std::string keyword = lowercase(tokens[0].text);
+    const std::string keyword = ascii_lower(tokens[0].text);
     if (keyword == "newmtl") {
       // The name is the rest of the line: some tools write names with spaces.
       const std::string name = trim(trimmed.substr(tokens[0].text.size()));

@@ -3,31 +3,64 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <string>
+#include <system_error>
 
 #include <nlohmann/json.hpp>
+
+#include "base/error.h"
 
 namespace gloss {
 
 namespace {
 
-std::uint32_t u32(const std::string& bytes, std::size_t at) {
+constexpr std::uint32_t kGlbMagic = 0x46546C67u;   // "glTF"
+constexpr std::uint32_t kJsonChunk = 0x4E4F534Au;  // "JSON"
+
+std::uint32_t u32(const char* bytes) {
   std::uint32_t x = 0;
-  std::memcpy(&x, bytes.data() + at, 4);  // glTF is little-endian, as x86-64
+  std::memcpy(&x, bytes, 4);  // glTF is little-endian, as x86-64
   return x;
 }
 
-// The JSON text of a .gltf, or of a .glb's first chunk; "" when the file is neither.
+// The JSON text of a .gltf (the whole file), or of a .glb's first chunk, read alone: the 12-byte
+// header and the chunk's 8-byte header, then only its length in bytes (the buffers after it are
+// not read). Throws InputError naming the file for a .glb cut short or whose first chunk is not
+// JSON or does not fit the file.
 std::string gltf_json_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (bytes.size() >= 20 && u32(bytes, 0) == 0x46546C67u) {  // "glTF"
-    const std::uint32_t length = u32(bytes, 12);
-    if (u32(bytes, 16) != 0x4E4F534Au || length > bytes.size() - 20) return "";
-    return bytes.substr(20, length);
+  if (!in) throw InputError(path, "cannot open file");
+  char header[20];
+  in.read(header, sizeof header);
+  const auto got = static_cast<std::size_t>(in.gcount());
+  if (got < 4 || u32(header) != kGlbMagic) {
+    in.clear();
+    in.seekg(0);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   }
-  return bytes;
+  if (got < sizeof header) {
+    throw InputError(
+        path, "GLB cut short: " + std::to_string(got) + " bytes, fewer than its 20-byte header");
+  }
+  if (u32(header + 16) != kJsonChunk) throw InputError(path, "GLB's first chunk is not JSON");
+  const std::uint32_t length = u32(header + 12);
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (error || length > size - sizeof header) {
+    throw InputError(
+        path, "GLB's JSON chunk of " + std::to_string(length) +
+                  " bytes runs past the end of the file (" +
+                  (error ? std::string("size unknown") : std::to_string(size) + " bytes") + ")");
+  }
+  std::string text(length, '\0');
+  in.read(text.data(), length);
+  if (static_cast<std::size_t>(in.gcount()) != length) {
+    throw InputError(path, "GLB's JSON chunk cut short while reading it");
+  }
+  return text;
 }
 
 bool read_colour(const nlohmann::json& j, const char* key, glm::vec3& out) {

@@ -2,8 +2,8 @@
 // The exact Phong constants gloss writes into a glTF material's extras.gloss
 // (export/gltf_export.h), read back so that gloss -> glTF -> gloss loses nothing. Private to io.
 // assimp does not hand material extras over, so the file's JSON (a .gltf, or a .glb's JSON chunk)
-// is read here with nlohmann-json; a file it cannot read gives no extras (assimp's reader reports
-// real errors).
+// is read here with nlohmann-json; JSON it cannot parse gives no extras (assimp's reader reports
+// real errors), a .glb whose JSON chunk does not fit the file is an InputError naming it.
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +25,7 @@ struct GltfMaterialExtras {
   std::vector<std::optional<GlossExtras>> materials;
 };
 
+// Throws InputError naming the file for a .glb cut short or whose JSON chunk does not fit it.
 GltfMaterialExtras read_gloss_extras(const std::string& path);
 
 // The extras of the one material called name; null when none or several have that name.

@@ -22,6 +22,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "base/ascii.h"
 #include "base/error.h"
 #include "io/model/gltf_extras.h"
 #include "io/model/model_maps.h"
@@ -32,13 +33,6 @@
 namespace gloss {
 
 namespace {
-
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
 
 // assimp's messages are sometimes several lines; an InputError is one. Where the message names
 // a line ("line 12", "at line 12") its number is kept, else 0.

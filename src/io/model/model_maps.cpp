@@ -1,30 +1,25 @@
 #include "io/model/model_maps.h"
 
 #include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <utility>
 
+#include "base/ascii.h"
 #include "base/error.h"
 #include "base/memory_budget.h"
 #include "io/image/texture_reader.h"
 #include "io/model/map_reading.h"
 #include "io/model/mtl_maps.h"
 #include "texture/mip_pyramid.h"
+#include "texture/texel_image.h"
 
 namespace gloss {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
 
 std::string read_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -37,7 +32,7 @@ std::string read_text(const std::string& path) {
 // with spaces), else each word.
 std::vector<std::string> mtl_libraries(const std::string& obj_path, const std::string& dir) {
   std::vector<std::string> out;
-  std::istringstream in(read_text(obj_path));
+  std::ifstream in(obj_path, std::ios::binary);  // line by line: the file may be large
   for (std::string line; std::getline(in, line);) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const std::size_t start = line.find_first_not_of(" \t");
@@ -128,18 +123,10 @@ std::shared_ptr<const Texture> ModelMapReader::make(
                            " texels does not fit the memory budget; left out");
     return nullptr;
   }
-  FloatImage image;
-  image.width = width;
-  image.height = height;
-  image.channels = channels;
-  image.samples.resize(static_cast<std::size_t>(width) * height * channels);
-  for (int j = 0; j < height; ++j) {
-    for (int i = 0; i < width; ++i) {
-      const glm::vec4 t = texel((i + 0.5f) / width, 1.0f - (j + 0.5f) / height);
-      float* out = &image.samples[(static_cast<std::size_t>(j) * width + i) * channels];
-      for (int c = 0; c < channels; ++c) out[c] = t[c];
-    }
-  }
+  // At each texel's centre, in map coordinates (v up).
+  FloatImage image = texel_image(width, height, channels, [&](int i, int j) {
+    return texel((i + 0.5f) / width, 1.0f - (j + 0.5f) / height);
+  });
   ImageFileInfo info;
   info.format = "made by gloss";
   info.bits = 32;
@@ -185,7 +172,7 @@ void read_model_maps(const std::string& path, Model& model, const ModelOptions& 
   ModelMapReader reader{
       path, fs::path(path).parent_path().string(), model,
       options.map_budget_bytes > 0 ? options.map_budget_bytes : memory_budget_bytes()};
-  const std::string ext = lower(fs::path(path).extension().string());
+  const std::string ext = lower_extension(path);
   if (ext == ".obj") read_obj_maps(reader);
   if (ext == ".gltf" || ext == ".glb") read_gltf_maps(reader);
   model.map_bytes = reader.used;
@@ -198,7 +185,7 @@ std::string model_map_reference(const std::string& model, const std::string& mat
 
 bool split_model_map_reference(const std::string& file, std::string& model, std::string& material,
                                MapSlot& slot) {
-  const std::string low = lower(file);
+  const std::string low = ascii_lower(file);
   std::size_t at = std::string::npos;
   for (const char* ext : {".obj#", ".gltf#", ".glb#"}) {
     const std::size_t found = low.find(ext);
@@ -216,21 +203,6 @@ bool split_model_map_reference(const std::string& file, std::string& model, std:
     return true;
   }
   return false;
-}
-
-std::shared_ptr<const Texture> model_map_texture(const std::string& model_path,
-                                                 const std::string& material, MapSlot slot,
-                                                 std::uint64_t budget_bytes) {
-  ModelOptions options;
-  options.map_budget_bytes = budget_bytes;
-  const Model model = load_model(model_path, options);
-  for (std::size_t m = 0; m < model.materials.size(); ++m) {
-    if (model.material_names[m] != material) continue;
-    if (model.materials[m].has_map(slot)) return model.materials[m].map(slot).texture;
-    throw InputError(model_path, "material '" + material + "' has no " + to_string(slot) +
-                                     " map (or its image cannot be read)");
-  }
-  throw InputError(model_path, "has no material '" + material + "'");
 }
 
 }  // namespace gloss

@@ -10,8 +10,7 @@
 //   (MIRRORED_REPEAT included), KHR_texture_transform, a second UV set, images inside the file.
 // An image a model names that cannot be read is a warning naming it, and that map is left out:
 // the model still loads. Maps gloss makes from a model, or takes from inside it, are named
-// MODEL#MATERIAL/SLOT, which model_map_texture reads back.
-#include <memory>
+// MODEL#MATERIAL/SLOT, which a scene reads back through model_map_cache.h.
 #include <string>
 
 #include "io/model/model_loader.h"
@@ -29,11 +28,5 @@ std::string model_map_reference(const std::string& model, const std::string& mat
 // Splits a reference (false when file is a plain image path).
 bool split_model_map_reference(const std::string& file, std::string& model, std::string& material,
                                MapSlot& slot);
-
-// The texture a reference names, from the model at model_path (the reference's model, resolved).
-// Throws InputError naming the model when it, the material or the map is not there.
-std::shared_ptr<const Texture> model_map_texture(const std::string& model_path,
-                                                 const std::string& material, MapSlot slot,
-                                                 std::uint64_t budget_bytes);
 
 }  // namespace gloss

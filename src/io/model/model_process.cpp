@@ -37,7 +37,9 @@ namespace gloss {
 namespace {
 
 // The pipe's format: one tag byte ('M' a Model follows, 'E' an InputError follows), then
-// little-endian sizes and raw arrays. Both ends are this program, so no versioning.
+// little-endian sizes and raw arrays. Both ends are this program, so no versioning. Each record
+// is one field list (the *_fields templates below) that both ends run: the Writer appends the
+// fields, the Reader fills them in the same order, so the two cannot disagree on the layout.
 struct Writer {
   std::string bytes;
   template <class T>
@@ -45,194 +47,163 @@ struct Writer {
     static_assert(std::is_trivially_copyable_v<T>);
     bytes.append(reinterpret_cast<const char*>(&value), sizeof value);
   }
-  void text(const std::string& s) {
+  // A field by its type: a string as its size and bytes, a vector as its size and elements
+  // (trivially copyable), anything else as its bytes.
+  void field(const std::string& s) {
     raw<std::uint64_t>(s.size());
     bytes += s;
   }
   template <class T>
-  void array(const std::vector<T>& v) {
+  void field(const std::vector<T>& v) {
     static_assert(std::is_trivially_copyable_v<T>);
     raw<std::uint64_t>(v.size());
     if (!v.empty()) bytes.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
   }
+  template <class T>
+  void field(const T& value) {
+    raw(value);
+  }
+  template <class... T>
+  void operator()(const T&... fields) {
+    (field(fields), ...);
+  }
+  // A count, then each element through each(element).
+  template <class T, class Each>
+  void list(const std::vector<T>& v, Each each) {
+    raw<std::uint64_t>(v.size());
+    for (const T& element : v) each(element);
+  }
 };
 
+// Throws std::length_error where the bytes end early.
 struct Reader {
   const std::string& bytes;
   std::size_t at = 0;
   void need(std::size_t n) {
     if (n > bytes.size() - at) throw std::length_error("truncated");
   }
+  // The next field, of type T.
   template <class T>
-  T raw() {
-    need(sizeof(T));
+  T next() {
     T value;
-    std::memcpy(&value, bytes.data() + at, sizeof value);
-    at += sizeof value;
+    field(value);
     return value;
   }
-  std::string text() {
-    const auto n = raw<std::uint64_t>();
+  void field(std::string& s) {
+    const auto n = next<std::uint64_t>();
     need(n);
-    std::string s = bytes.substr(at, n);
+    s = bytes.substr(at, n);
     at += n;
-    return s;
   }
   template <class T>
-  std::vector<T> array() {
-    const auto n = raw<std::uint64_t>();
+  void field(std::vector<T>& v) {
+    const auto n = next<std::uint64_t>();
     if (n > (bytes.size() - at) / sizeof(T)) throw std::length_error("truncated");
-    std::vector<T> v(n);
+    v.resize(n);
     if (n > 0) std::memcpy(v.data(), bytes.data() + at, n * sizeof(T));  // data() may be null
     at += n * sizeof(T);
-    return v;
+  }
+  template <class T>
+  void field(T& value) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    need(sizeof value);
+    std::memcpy(&value, bytes.data() + at, sizeof value);
+    at += sizeof value;
+  }
+  template <class... T>
+  void operator()(T&... fields) {
+    (field(fields), ...);
+  }
+  // A count, then that many elements, each filled by each(element) and appended to v.
+  template <class T, class Each>
+  void list(std::vector<T>& v, Each each) {
+    const auto n = next<std::uint64_t>();
+    for (std::uint64_t i = 0; i < n; ++i) {
+      T element;
+      each(element);
+      v.push_back(std::move(element));
+    }
   }
 };
 
-void write_material(Writer& w, const Material& m) {
-  w.raw(m.ambient);
-  w.raw(m.diffuse);
-  w.raw(m.specular);
-  w.raw(m.emission);
-  w.raw(m.shininess);
-  w.text(m.preset);
+// The records' fields. Io: Writer (with const records) or Reader.
+template <class Io, class M>
+void material_fields(Io& io, M& m) {
+  io(m.ambient, m.diffuse, m.specular, m.emission, m.shininess, m.preset);
 }
 
-Material read_material(Reader& r) {
-  Material m;
-  m.ambient = r.raw<glm::vec3>();
-  m.diffuse = r.raw<glm::vec3>();
-  m.specular = r.raw<glm::vec3>();
-  m.emission = r.raw<glm::vec3>();
-  m.shininess = r.raw<float>();
-  m.preset = r.text();
-  return m;
+template <class Io, class T>
+void texture_ref_fields(Io& io, T& t) {
+  io(t.type, t.path, t.uv_set, t.wrap_u, t.wrap_v, t.transformed, t.translation, t.scaling,
+     t.rotation, t.strength);
 }
 
-void write_file_material(Writer& w, const ModelFileMaterial& m) {
-  w.raw<std::uint64_t>(m.textures.size());
-  for (const ModelTextureRef& t : m.textures) {
-    w.raw(t.type);
-    w.text(t.path);
-    w.raw(t.uv_set);
-    w.raw(t.wrap_u);
-    w.raw(t.wrap_v);
-    w.raw(t.transformed);
-    w.raw(t.translation);
-    w.raw(t.scaling);
-    w.raw(t.rotation);
-    w.raw(t.strength);
-  }
-  w.raw(m.gltf);
-  w.raw(m.base_colour);
-  w.raw(m.metallic);
-  w.raw(m.roughness);
-  w.text(m.alpha_mode);
-  w.raw(m.alpha_cutoff);
-  w.raw(m.gloss_exact);
+// The residuals and `fitted` are not sent: the parent computes them (fit_metal_rough_materials).
+template <class Io, class M>
+void file_material_fields(Io& io, M& m) {
+  io.list(m.textures, [&io](auto& t) { texture_ref_fields(io, t); });
+  io(m.gltf, m.base_colour, m.metallic, m.roughness, m.alpha_mode, m.alpha_cutoff, m.gloss_exact);
 }
 
-ModelFileMaterial read_file_material(Reader& r) {
-  ModelFileMaterial m;
-  const auto count = r.raw<std::uint64_t>();
-  for (std::uint64_t i = 0; i < count; ++i) {
-    ModelTextureRef t;
-    t.type = r.raw<int>();
-    t.path = r.text();
-    t.uv_set = r.raw<int>();
-    t.wrap_u = r.raw<int>();
-    t.wrap_v = r.raw<int>();
-    t.transformed = r.raw<bool>();
-    const auto translation = r.raw<std::array<float, 2>>();
-    const auto scaling = r.raw<std::array<float, 2>>();
-    t.translation[0] = translation[0];
-    t.translation[1] = translation[1];
-    t.scaling[0] = scaling[0];
-    t.scaling[1] = scaling[1];
-    t.rotation = r.raw<float>();
-    t.strength = r.raw<float>();
-    m.textures.push_back(std::move(t));
-  }
-  m.gltf = r.raw<bool>();
-  m.base_colour = r.raw<glm::vec4>();
-  m.metallic = r.raw<float>();
-  m.roughness = r.raw<float>();
-  m.alpha_mode = r.text();
-  m.alpha_cutoff = r.raw<float>();
-  m.gloss_exact = r.raw<bool>();
-  return m;
+template <class Io, class P>
+void part_fields(Io& io, P& part) {
+  io(part.material_name, part.mesh.positions, part.mesh.normals, part.mesh.triangles,
+     part.mesh.uv[0], part.mesh.uv[1], part.mesh.tangents);
+}
+
+template <class Io, class I>
+void embedded_image_fields(Io& io, I& image) {
+  io(image.name, image.bytes);
 }
 
 std::string pack(const Model& model) {
   Writer w;
   w.raw('M');
-  w.raw<std::uint64_t>(model.parts.size());
-  for (const ModelPart& part : model.parts) {
-    w.text(part.material_name);
-    w.array(part.mesh.positions);
-    w.array(part.mesh.normals);
-    w.array(part.mesh.triangles);
-    w.array(part.mesh.uv[0]);
-    w.array(part.mesh.uv[1]);
-    w.array(part.mesh.tangents);
-  }
+  w.list(model.parts, [&w](const ModelPart& part) { part_fields(w, part); });
   w.raw<std::uint64_t>(model.materials.size());
   for (std::size_t i = 0; i < model.materials.size(); ++i) {
-    w.text(model.material_names[i]);
-    write_material(w, model.materials[i]);
-    write_file_material(
+    w(model.material_names[i]);
+    material_fields(w, model.materials[i]);
+    file_material_fields(
         w, i < model.file_materials.size() ? model.file_materials[i] : ModelFileMaterial{});
   }
-  w.raw<std::uint64_t>(model.embedded.size());
-  for (const ModelEmbeddedImage& image : model.embedded) {
-    w.text(image.name);
-    w.text(image.bytes);
-  }
-  w.raw<std::uint64_t>(model.warnings.size());
-  for (const std::string& warning : model.warnings) w.text(warning);
+  w.list(model.embedded,
+         [&w](const ModelEmbeddedImage& image) { embedded_image_fields(w, image); });
+  w.list(model.warnings, [&w](const std::string& warning) { w(warning); });
   return w.bytes;
 }
 
 Model unpack(Reader& r) {
   Model model;
-  const auto parts = r.raw<std::uint64_t>();
-  for (std::uint64_t i = 0; i < parts; ++i) {
-    ModelPart part;
-    part.material_name = r.text();
-    part.mesh.positions = r.array<glm::vec3>();
-    part.mesh.normals = r.array<glm::vec3>();
-    part.mesh.triangles = r.array<glm::uvec3>();
-    part.mesh.uv[0] = r.array<glm::vec2>();
-    part.mesh.uv[1] = r.array<glm::vec2>();
-    part.mesh.tangents = r.array<glm::vec4>();
-    model.parts.push_back(std::move(part));
-  }
-  const auto materials = r.raw<std::uint64_t>();
+  r.list(model.parts, [&r](ModelPart& part) { part_fields(r, part); });
+  const auto materials = r.next<std::uint64_t>();
   for (std::uint64_t i = 0; i < materials; ++i) {
-    model.material_names.push_back(r.text());
-    model.materials.push_back(read_material(r));
-    model.file_materials.push_back(read_file_material(r));
+    model.material_names.push_back(r.next<std::string>());
+    material_fields(r, model.materials.emplace_back());
+    file_material_fields(r, model.file_materials.emplace_back());
   }
-  const auto images = r.raw<std::uint64_t>();
-  for (std::uint64_t i = 0; i < images; ++i) {
-    ModelEmbeddedImage image;
-    image.name = r.text();
-    image.bytes = r.text();
-    model.embedded.push_back(std::move(image));
-  }
-  const auto warnings = r.raw<std::uint64_t>();
-  for (std::uint64_t i = 0; i < warnings; ++i) model.warnings.push_back(r.text());
+  r.list(model.embedded, [&r](ModelEmbeddedImage& image) { embedded_image_fields(r, image); });
+  r.list(model.warnings, [&r](std::string& warning) { r(warning); });
   return model;
+}
+
+// An InputError's place and message, after the tag 'E'.
+struct ErrorRecord {
+  std::string file, message;
+  std::int32_t line = 0, column = 0;
+  std::string field;
+};
+
+template <class Io, class E>
+void error_fields(Io& io, E& e) {
+  io(e.file, e.message, e.line, e.column, e.field);
 }
 
 std::string pack_error(const InputError& e) {
   Writer w;
   w.raw('E');
-  w.text(e.file());
-  w.text(e.message());
-  w.raw<std::int32_t>(e.line());
-  w.raw<std::int32_t>(e.column());
-  w.text(e.field());
+  const ErrorRecord record{e.file(), e.message(), e.line(), e.column(), e.field()};
+  error_fields(w, record);
   return w.bytes;
 }
 
@@ -361,11 +332,11 @@ Model import_in_child_process(const std::string& path,
     throw InputError(path, "the model library failed on this file (" + describe(status) + ")");
   Reader r{bytes};
   try {
-    const char tag = r.raw<char>();
+    const char tag = r.next<char>();
     if (tag == 'M') return unpack(r);
-    const std::string file = r.text(), message = r.text();
-    const int line = r.raw<std::int32_t>(), column = r.raw<std::int32_t>();
-    throw InputError(file, message, line, column, r.text());
+    ErrorRecord e;
+    error_fields(r, e);
+    throw InputError(e.file, e.message, e.line, e.column, e.field);
   } catch (const std::length_error&) {
     throw InputError(path, "the model library failed on this file (incomplete result)");
   }

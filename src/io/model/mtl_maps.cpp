@@ -1,21 +1,16 @@
 #include "io/model/mtl_maps.h"
 
 #include <algorithm>
-#include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 
+#include "base/ascii.h"
 #include "io/json/field_json.h"
 
 namespace gloss {
 
 namespace {
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
 
 struct Keyword {
   const char* name;  // lower case
@@ -64,7 +59,7 @@ std::vector<std::string> words(const std::string& line) {
 bool read_statement(const std::vector<std::string>& w, MtlMapStatement& s, std::string& reason) {
   std::size_t i = 1;
   while (i < w.size() && w[i].size() > 1 && w[i][0] == '-') {
-    const std::string name = lower(w[i]);
+    const std::string name = ascii_lower(w[i]);
     const Option* option = nullptr;
     for (const Option& o : kOptions) {
       if (name == o.name) option = &o;
@@ -75,7 +70,7 @@ bool read_statement(const std::vector<std::string>& w, MtlMapStatement& s, std::
     int n = 0;
     if (option->most == 0) {
       if (i >= w.size()) break;
-      const std::string arg = lower(w[i]);
+      const std::string arg = ascii_lower(w[i]);
       written += " " + w[i++];
       if (name == "-clamp") {
         const Wrap wrap = arg == "on" ? Wrap::clamp : Wrap::repeat;
@@ -110,7 +105,7 @@ bool read_statement(const std::vector<std::string>& w, MtlMapStatement& s, std::
 }  // namespace
 
 bool mtl_map_slot(const std::string& keyword, MapSlot& slot) {
-  const std::string k = lower(keyword);
+  const std::string k = ascii_lower(keyword);
   for (const Keyword& known : kKeywords) {
     if (k == known.name) {
       slot = known.slot;
@@ -121,7 +116,7 @@ bool mtl_map_slot(const std::string& keyword, MapSlot& slot) {
 }
 
 bool is_unread_mtl_map(const std::string& keyword) {
-  const std::string k = lower(keyword);
+  const std::string k = ascii_lower(keyword);
   return std::find(std::begin(kUnread), std::end(kUnread), k) != std::end(kUnread);
 }
 

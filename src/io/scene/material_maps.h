@@ -4,7 +4,8 @@
 // scene's folder, colour maps sRGB-decoded and data maps linear, and its bytes counted against
 // the memory budget before they are allocated. A map a scene names that cannot be read is an
 // error naming the scene, the material's field and the map file (exit 2); a model's maps are
-// the model loader's (missing ones are warnings there).
+// the model loader's (missing ones are warnings there). A map a scene takes from a model
+// (MODEL#MATERIAL/SLOT) loads that model once per scene load, through context.model_maps.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -13,12 +14,17 @@
 
 namespace gloss {
 
+struct ModelMapCache;  // io/model/model_map_cache.h
+
 struct MapReadContext {
   std::string file;      // the scene (or materials) file, for messages
   std::string base_dir;  // the folder relative map paths resolve against; "": the current one
   std::uint64_t budget_bytes = 0;          // 0: the memory budget
   std::uint64_t* claimed_bytes = nullptr;  // what the scene holds so far; maps add theirs
   std::vector<std::string>* warnings = nullptr;
+  // The models read so far for their maps (or placed as objects) in this scene load; null: each
+  // call that names a model's map loads that model.
+  ModelMapCache* model_maps = nullptr;
 };
 
 // The path a map's file names, resolved against base_dir.

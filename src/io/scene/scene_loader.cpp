@@ -1,9 +1,9 @@
 #include "io/scene/scene_loader.h"
 
-#include <cctype>
 #include <filesystem>
 #include <utility>
 
+#include "base/ascii.h"
 #include "base/atomic_file.h"
 #include "base/error.h"
 #include "base/memory_budget.h"
@@ -13,6 +13,7 @@
 #include "io/json/json_location.h"
 #include "io/json/material_json.h"
 #include "io/json/name_escape.h"
+#include "io/model/model_map_cache.h"
 #include "io/scene/environment_reader.h"
 #include "io/scene/material_maps.h"
 #include "io/scene/scene_json_reader.h"
@@ -144,9 +145,7 @@ std::string rebased(const std::string& file, const std::filesystem::path& from,
 }
 
 bool has_mtl_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".mtl";
+  return lower_extension(path) == ".mtl";
 }
 
 }  // namespace
@@ -177,6 +176,8 @@ Scene parse_scene(const std::string& text, const std::string& path,
   std::uint64_t claimed_bytes = 0;
   context.budget_bytes = memory_budget_bytes();
   context.claimed_bytes = &claimed_bytes;
+  ModelMapCache model_maps;  // each model loaded once, for its objects and the maps named in it
+  context.model_maps = &model_maps;
   std::vector<PendingObject> pending;
   claim_geometry_in_advance(objects, context);
   for (std::size_t i = 0; i < objects.size(); ++i) {
@@ -188,6 +189,7 @@ Scene parse_scene(const std::string& text, const std::string& path,
   maps.base_dir = context.base_dir;
   maps.claimed_bytes = &claimed_bytes;
   maps.warnings = warnings;
+  maps.model_maps = &model_maps;
   for (auto& [name, material] : materials) {
     read_material_maps(material, child_path("materials", escape_name(name)), maps);
   }

@@ -17,6 +17,7 @@
 #include "io/json/field_json.h"
 #include "io/json/name_escape.h"
 #include "io/model/model_loader.h"
+#include "io/model/model_map_cache.h"
 #include "io/model/model_maps.h"
 #include "io/model/teapot_reader.h"
 #include "io/scene/scene_json_reader.h"
@@ -198,6 +199,7 @@ void read_mesh(const JsonObjectReader& reader, const ObjectReadContext& context,
       context.notes->push_back(context.file + ": " + reader.path("file") + ": " + note);
   }
   if (context.claimed_bytes != nullptr) *context.claimed_bytes += model.map_bytes;
+  if (context.model_maps != nullptr) context.model_maps->keep(resolved, model);
   // The model's maps named as the scene names files: relative to the scene's folder.
   for (Material& material : model.materials) {
     for (int s = 0; s < kMapSlots; ++s) {

@@ -17,6 +17,8 @@ namespace gloss {
 // The scene's materials by name; std::map keeps them in the order Scene::materials will have.
 using MaterialMap = std::map<std::string, Material>;
 
+struct ModelMapCache;  // io/model/model_map_cache.h
+
 // Name of the grey material given to OBJ parts that have neither a scene material nor an MTL one.
 inline const char* const kDefaultMaterialName = "default";
 
@@ -30,6 +32,8 @@ struct ObjectReadContext {
   // refused before its triangles are made where their count is known beforehand (teapots).
   std::uint64_t budget_bytes = UINT64_MAX;
   std::uint64_t* claimed_bytes = nullptr;
+  // Where a model's maps are kept for the scene's materials that name them (null: not kept).
+  ModelMapCache* model_maps = nullptr;
 };
 
 // An object whose material is still a name. field is the path of the entry's "material" key.

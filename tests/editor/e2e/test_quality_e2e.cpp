@@ -1,6 +1,7 @@
 // End-to-end: the Quality window's measurement driven by `quality` script lines in the real gloss
 // under Xvfb (and without a display). The CSV header and knob names are the ones issue 5 and
-// analysis/tradeoff.h specify; the knob list follows from the scene (tessellation needs a teapot).
+// analysis/tradeoff/tradeoff.h specify; the knob list follows from the scene (tessellation needs a
+// teapot).
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>

@@ -4,7 +4,7 @@
 // 1280x720, 15 pairs per row.
 //
 // The CPU baseline is the engine's re-trace after a camera move, as gloss-cli bench's retrace_ms
-// (analysis/bench.cpp): BVH kept, primary and shadow rays, shading and the total image in one
+// (analysis/bench/bench.cpp): BVH kept, primary and shadow rays, shading and the total image in one
 // pass, 1 spp. Also printed: render() at 1 spp, which builds the BVH too. Each raster row is timed
 // in pairs with the re-trace (raster frame, re-trace, raster frame, ...), and its ratio is the
 // median of the ratios within pairs, as bench.cpp's time_paired does: a shared machine's speed
@@ -28,7 +28,7 @@
 #include "base/assets.h"
 #include "base/timing.h"
 #include "editor/gl/egl_context.h"
-#include "editor/gl/raster_renderer.h"
+#include "editor/gl/raster/raster_renderer.h"
 #include "engine/render_context.h"
 #include "engine/renderer.h"
 #include "engine/shade/pixel_factors.h"

@@ -6,7 +6,7 @@
 #include <functional>
 #include <string>
 
-#include "editor/gl/raster_renderer.h"
+#include "editor/gl/raster/raster_renderer.h"
 
 namespace gloss::test {
 

@@ -12,7 +12,7 @@
 #include "editor/gl/gl_texture.h"
 #include "editor/gl/glsl_harness.h"
 #include "editor/gl/planted_shaders.h"
-#include "editor/gl/raster_renderer.h"
+#include "editor/gl/raster/raster_renderer.h"
 #include "editor/model/export/environment_atlas.h"
 #include "editor/model/export/glsl_export.h"
 #include "engine/renderer.h"

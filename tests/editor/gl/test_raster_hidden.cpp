@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "editor/gl/egl_context.h"
-#include "editor/gl/raster_renderer.h"
+#include "editor/gl/raster/raster_renderer.h"
 #include "support/scene_fixtures.h"
 
 namespace gloss {

@@ -12,7 +12,7 @@
 #include "editor/gl/egl_context.h"
 #include "editor/gl/glsl_harness.h"
 #include "editor/gl/planted_shaders.h"
-#include "editor/gl/raster_renderer.h"
+#include "editor/gl/raster/raster_renderer.h"
 #include "editor/model/export/glsl_export.h"
 #include "io/scene/scene_loader.h"
 

@@ -1,8 +1,8 @@
-// The raster path (editor/gl/raster_renderer.h) against render_reference<double> at one sample
-// per pixel, through EGL (issue 12, item 4). Shadows off: at least 99.5 % of pixels within 1e-3
-// on every term, per pixel against the exact contract and per vertex against the reference's own
-// Gouraud option. Shadow maps: the pixels that differ are counted and must lie on or next to the
-// reference's shadow and silhouette edges. Planted shader errors must fail the same checks.
+// The raster path (editor/gl/raster/raster_renderer.h) against render_reference<double> at one
+// sample per pixel, through EGL (issue 12, item 4). Shadows off: at least 99.5 % of pixels within
+// 1e-3 on every term, per pixel against the exact contract and per vertex against the reference's
+// own Gouraud option. Shadow maps: the pixels that differ are counted and must lie on or next to
+// the reference's shadow and silhouette edges. Planted shader errors must fail the same checks.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -12,7 +12,7 @@
 #include "editor/gl/egl_context.h"
 #include "editor/gl/glsl_harness.h"
 #include "editor/gl/planted_shaders.h"
-#include "editor/gl/raster_renderer.h"
+#include "editor/gl/raster/raster_renderer.h"
 #include "io/scene/scene_loader.h"
 
 namespace gloss {

@@ -1,5 +1,5 @@
-// The raster tradeoff rows (editor/gl/raster_tradeoff.h) through EGL: the properties of the rows
-// that follow from what each setting draws, checked on small images of the shipped scenes. No
+// The raster tradeoff rows (editor/gl/raster/raster_tradeoff.h) through EGL: the properties of the
+// rows that follow from what each setting draws, checked on small images of the shipped scenes. No
 // times are asserted (they depend on the machine); errors and agreement shares are deterministic.
 #include <gtest/gtest.h>
 
@@ -12,10 +12,10 @@
 #include <string>
 #include <thread>
 
-#include "analysis/tradeoff.h"
+#include "analysis/tradeoff/tradeoff.h"
 #include "base/error.h"
 #include "editor/gl/egl_context.h"
-#include "editor/gl/raster_tradeoff.h"
+#include "editor/gl/raster/raster_tradeoff.h"
 #include "editor/model/script/headless.h"
 #include "editor/model/script/script.h"
 #include "io/scene/scene_loader.h"

@@ -1,4 +1,4 @@
-// The raster path's projections (editor/gl/raster_view.h) against the camera formula and the
+// The raster path's projections (editor/gl/raster/raster_view.h) against the camera formula and the
 // cube-face rule of shaders/raster_common.glsl, on the CPU (no GL needed): the projection must
 // put a point on the ray through pixel (x + 0.5, y + 0.5) at that pixel's centre, and the cube
 // face chosen for a direction must be the face whose frustum holds it.
@@ -8,7 +8,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "editor/gl/raster_view.h"
+#include "editor/gl/raster/raster_view.h"
 #include "scene/camera.h"
 
 namespace gloss {

@@ -2,7 +2,7 @@
 // The editor's fit (the Reference panel's Fit Phong / Fit Blinn-Phong and the `fit` script line):
 // the material of one object fitted to its physical reference (physical/phong_fit.h) for the
 // document's energy normalisation switch, as one undoable command and the report it shows.
-#include "analysis/fit_report.h"
+#include "analysis/lobe/fit_report.h"
 #include "editor/model/document/command.h"
 #include "scene/scene.h"
 

@@ -1,10 +1,10 @@
 #include "editor/model/export/shown_image.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <ctime>
+#include <string_view>
 
+#include "base/ascii.h"
 #include "base/error.h"
 #include "editor/model/export/export_image.h"
 #include "io/image/image_io.h"
@@ -15,10 +15,7 @@ namespace {
 bool ends_with(const std::string& path, const char* extension) {
   const std::string e = extension;
   if (path.size() < e.size()) return false;
-  return std::equal(e.rbegin(), e.rend(), path.rbegin(), [](char a, char b) {
-    return std::tolower(static_cast<unsigned char>(a)) ==
-           std::tolower(static_cast<unsigned char>(b));
-  });
+  return ascii_equal_ignoring_case(std::string_view(path).substr(path.size() - e.size()), e);
 }
 
 bool is_folder(const std::string& path) {

@@ -1,8 +1,9 @@
 #pragma once
-// The Quality panel's measurement: run_tradeoff (analysis/tradeoff.h) on a worker thread over a
-// copy of the scene, its rows collected for the UI thread as each knob finishes, cancellable at any
-// time. No GL: the unit tests drive it directly. Also the pure helpers the panel and scripts share:
-// the one-line verdict per knob and the command (or preview scale) that applies a measured setting.
+// The Quality panel's measurement: run_tradeoff (analysis/tradeoff/tradeoff.h) on a worker thread
+// over a copy of the scene, its rows collected for the UI thread as each knob finishes, cancellable
+// at any time. No GL: the unit tests drive it directly. Also the pure helpers the panel and scripts
+// share: the one-line verdict per knob and the command (or preview scale) that applies a measured
+// setting.
 #include <atomic>
 #include <chrono>
 #include <future>
@@ -11,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/tradeoff.h"
+#include "analysis/tradeoff/tradeoff.h"
 #include "editor/model/document/command.h"
 
 namespace gloss {

@@ -67,8 +67,8 @@ struct MemoryAction {};
 // on the current scene and holds the script until it ends; start does not hold; cancel stops it;
 // csv writes the rows so far as tradeoff CSV to path, atomically. raster (`quality raster PATH
 // [WIDTH HEIGHT [REFERENCE_SPP]]`, issue 12) measures the raster path's rows
-// (editor/gl/raster_tradeoff.h) on the editor's GL thread and writes their CSV to path; the size
-// and reference default to the panel's quick settings. It needs the window's GL context.
+// (editor/gl/raster/raster_tradeoff.h) on the editor's GL thread and writes their CSV to path; the
+// size and reference default to the panel's quick settings. It needs the window's GL context.
 struct QualityAction {
   enum class Verb { measure, start, cancel, csv, raster };
   Verb verb = Verb::measure;

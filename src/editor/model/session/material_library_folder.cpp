@@ -1,24 +1,16 @@
 #include "editor/model/session/material_library_folder.h"
 
 #include <algorithm>
-#include <cctype>
 #include <system_error>
 
+#include "base/ascii.h"
 #include "editor/model/session/config_paths.h"
 #include "editor/model/session/file_defaults.h"
 #include "io/material/material_io.h"
 
 namespace gloss {
 
-namespace {
-
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 std::filesystem::path library_folder() {
   const std::filesystem::path folder = data_dir() / "materials";

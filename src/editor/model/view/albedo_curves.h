@@ -1,5 +1,5 @@
 #pragma once
-// The lobe view's directional albedo curves (analysis/directional_albedo.h), computed on a
+// The lobe view's directional albedo curves (analysis/lobe/directional_albedo.h), computed on a
 // worker: one curve takes 0.1 to 0.7 s (adaptive quadrature over the hemisphere at each angle),
 // too long for a UI frame. The view asks each frame for the parameters it shows; a new job starts
 // when the worker is idle, so a slider drag computes the newest parameters when it can and the
@@ -10,7 +10,7 @@
 #include <optional>
 #include <vector>
 
-#include "analysis/directional_albedo.h"
+#include "analysis/lobe/directional_albedo.h"
 
 namespace gloss {
 

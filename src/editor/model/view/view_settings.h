@@ -13,7 +13,7 @@ namespace gloss {
 
 // render: the total image; terms: emissive+ambient, diffuse, specular and total in a 2x2 sheet;
 // single: one term alone; ab: Phong against Blinn-Phong with a difference heat map; lobe: the
-// selected material's reflected radiance in the plane of incidence (analysis/brdf_lobe.h).
+// selected material's reflected radiance in the plane of incidence (analysis/lobe/brdf_lobe.h).
 enum class ViewMode { render, terms, single, ab, lobe };
 const char* to_string(ViewMode mode);
 bool parse_view_mode(const std::string& name, ViewMode& mode);

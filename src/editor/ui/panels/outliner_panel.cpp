@@ -4,7 +4,6 @@
 // name, material and transform as numeric fields from the document's tables. Every change is a
 // command; a drag of a field is one undo step.
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -12,6 +11,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "base/ascii.h"
 #include "editor/model/document/new_objects.h"
 #include "editor/model/view/camera_controller.h"
 #include "editor/ui/file_browser.h"
@@ -29,10 +29,8 @@ namespace {
 
 bool contains_ignoring_case(const std::string& text, const std::string& part) {
   if (part.empty()) return true;
-  const auto lower = [](unsigned char c) { return std::tolower(c); };
-  return std::search(text.begin(), text.end(), part.begin(), part.end(), [&](char a, char b) {
-           return lower(static_cast<unsigned char>(a)) == lower(static_cast<unsigned char>(b));
-         }) != text.end();
+  return std::search(text.begin(), text.end(), part.begin(), part.end(),
+                     [](char a, char b) { return ascii_lower(a) == ascii_lower(b); }) != text.end();
 }
 
 // A click on row i of the listed objects (shown, in list order).

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "editor/gl/raster_tradeoff.h"
+#include "editor/gl/raster/raster_tradeoff.h"
 #include "editor/model/document/reference_fit.h"
 #include "editor/model/measure/quality_measurement.h"
 #include "editor/model/view/view_settings.h"

@@ -1,6 +1,6 @@
 // The Quality window's raster (GLSL) rows (issue 12, item 5): the raster path's knobs measured
-// against the same reference as the CPU rows above them (editor/gl/raster_tradeoff.h). The CPU
-// part runs on a worker; the raster frames are drawn on this, the UI thread, in slices of
+// against the same reference as the CPU rows above them (editor/gl/raster/raster_tradeoff.h). The
+// CPU part runs on a worker; the raster frames are drawn on this, the UI thread, in slices of
 // kRasterQualitySliceMs per frame (run_frame calls RasterTradeoff::step), because GL calls must
 // stay on the thread that owns the context.
 #include <cmath>

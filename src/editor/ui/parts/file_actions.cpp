@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "base/ascii.h"
 #include "base/error.h"
 #include "editor/model/document/document.h"
 #include "editor/model/document/new_objects.h"
@@ -27,10 +28,7 @@ namespace gloss {
 namespace {
 
 bool has_extension(const std::string& path, const char* extension) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == extension;
+  return lower_extension(path) == extension;
 }
 
 }  // namespace

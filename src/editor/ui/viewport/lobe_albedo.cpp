@@ -1,4 +1,4 @@
-// The lobe view's albedo plot: the directional albedo (analysis/directional_albedo.h) against
+// The lobe view's albedo plot: the directional albedo (analysis/lobe/directional_albedo.h) against
 // the incidence angle, per model, from the worker's curves (albedo_curves.h), with the
 // quadrature's stated error and, at normal incidence, Phong's closed form beside the number.
 #include <algorithm>
@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "analysis/brdf_lobe.h"
+#include "analysis/lobe/brdf_lobe.h"
 #include "editor/ui/viewport/lobe_plots.h"
 
 namespace gloss {

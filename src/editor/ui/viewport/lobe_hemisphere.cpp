@@ -10,7 +10,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "analysis/brdf_lobe.h"
+#include "analysis/lobe/brdf_lobe.h"
 #include "editor/ui/viewport/lobe_plots.h"
 
 namespace gloss {

@@ -7,7 +7,7 @@
 
 #include <imgui.h>
 
-#include "analysis/directional_albedo.h"
+#include "analysis/lobe/directional_albedo.h"
 #include "editor/model/view/albedo_curves.h"
 #include "editor/model/view/lobe_overlay.h"
 #include "editor/model/view/view_settings.h"

@@ -1,7 +1,7 @@
 // The lobe view (ViewMode::lobe): the selected material's reflected radiance against the outgoing
 // angle in the plane of incidence, as a polar plot, Phong and Blinn-Phong overlaid on the diffuse
 // floor, and the material's physical reference when it has one, for a light elevation the user
-// drags. The values come from analysis/brdf_lobe.h, which
+// drags. The values come from analysis/lobe/brdf_lobe.h, which
 // evaluates the contract's own functions (shading/shading.h). Drawn with ImDrawList: ImPlot, the
 // usual Dear ImGui plotting add-on, is not packaged in Debian 12 (`apt-cache search implot` finds
 // nothing), and a half-disc of lines, rings and labels needs none of it.
@@ -13,7 +13,7 @@
 
 #include <imgui.h>
 
-#include "analysis/brdf_lobe.h"
+#include "analysis/lobe/brdf_lobe.h"
 #include "editor/model/document/document.h"
 #include "editor/ui/parts/selection.h"
 #include "editor/ui/viewport/lobe_plots.h"

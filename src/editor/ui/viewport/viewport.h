@@ -2,8 +2,9 @@
 // The viewport: the progressive renderer's frames as GL textures, drawn by the display shader
 // into an off-screen target that an ImGui window shows, in one of the view modes (one image, the
 // 2x2 term sheet, or A/B with a heat map). Owns the renderers; never waits for the ray tracer.
-// The raster path (issue 12, editor/gl/raster_renderer.h) renders synchronously on the UI thread
-// when view.renderer picks it (viewport_raster.cpp); its frames take the same way to the screen.
+// The raster path (issue 12, editor/gl/raster/raster_renderer.h) renders synchronously on the UI
+// thread when view.renderer picks it (viewport_raster.cpp); its frames take the same way to the
+// screen.
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -13,7 +14,7 @@
 
 #include "editor/gl/display_shader.h"
 #include "editor/gl/gl_texture.h"
-#include "editor/gl/raster_renderer.h"
+#include "editor/gl/raster/raster_renderer.h"
 #include "editor/gl/render_target.h"
 #include "editor/model/layout/pane_layout.h"
 #include "editor/model/measure/exposure_histogram.h"
