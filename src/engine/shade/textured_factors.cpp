@@ -1,5 +1,7 @@
 #include "engine/shade/textured_factors.h"
 
+#include "engine/simd/lane_mask.h"
+
 namespace gloss {
 
 void borrow_texels(const SamplePlane& plane, const RenderPlan& plan, PixelFactors& out) {
@@ -38,6 +40,8 @@ const ScaledExponent* scaled_exponents(const RenderContext& ctx, const MaterialE
                                        const std::int32_t* material, const float* alpha_scale,
                                        int n, ScaledExponent& storage) {
   if (alpha_scale == nullptr || !ctx.plan.textures.alpha) return nullptr;
+  // Lanes that all missed have powers of 0 either way: their exponents are not worth making.
+  if (n == kLanes && all_lanes_negative(material)) return nullptr;
   const RenderSettings& r = ctx.scene->render;
   scale_exponents(exponents, material, alpha_scale, n, r.energy_normalize, r.model, storage);
   return &storage;

@@ -41,8 +41,8 @@ void sample_texels(const SamplePlane& plane, std::size_t index, float* texel, fl
 
 // The scaled exponents (scale_exponents) of n lanes of materials `material` whose shininess
 // multipliers are alpha_scale, made in storage, with the scene's energy normalisation and model
-// (alpha_scale null: the plan has no shininess map: returns null). Once per packet or run: every
-// light's powers read them.
+// (alpha_scale null: the plan has no shininess map, or kLanes lanes that all missed: returns
+// null). Once per packet or run: every light's powers read them.
 const ScaledExponent* scaled_exponents(const RenderContext& ctx, const MaterialExponents& exponents,
                                        const std::int32_t* material, const float* alpha_scale,
                                        int n, ScaledExponent& storage);
