@@ -1,6 +1,6 @@
 #include "base/error.h"
 
-#include "base/printable_text.h"
+#include "base/text/printable_text.h"
 
 namespace gloss {
 

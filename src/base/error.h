@@ -9,7 +9,7 @@ namespace gloss {
 // Bad input: unreadable, malformed or invalid scene/material/mesh file, impossible setting.
 // what() is one line: "FILE:LINE:COL: MESSAGE" when a position is known, "FILE: FIELD: MESSAGE"
 // when a field is known, else "FILE: MESSAGE". It passes through printable_text
-// (base/printable_text.h), so control characters and broken UTF-8 from the input (a name with ESC
+// (base/text/printable_text.h), so control characters and broken UTF-8 from the input (a name with ESC
 // or \r in it) reach no terminal raw; file(), message() and field() keep the bytes as given.
 class InputError : public std::runtime_error {
  public:

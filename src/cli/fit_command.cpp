@@ -18,7 +18,8 @@
 #include "analysis/lobe/fit_report.h"
 #include "base/atomic_file.h"
 #include "base/error.h"
-#include "base/text_distance.h"
+#include "base/text/number_text.h"
+#include "base/text/text_distance.h"
 #include "cli/commands.h"
 #include "io/material/material_io.h"
 #include "io/material/preset_table.h"
@@ -43,12 +44,6 @@ std::vector<std::string> reference_names() {
   std::vector<std::string> names;
   for (int i = 0; i < kReferenceKinds; ++i) names.emplace_back(to_string(ReferenceKind(i)));
   return names;
-}
-
-std::string number_text(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", x);
-  return text;
 }
 
 [[noreturn]] void fail(const std::string& option, const std::string& message) {

@@ -9,7 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "base/error.h"
-#include "base/printable_text.h"
+#include "base/text/printable_text.h"
 #include "base/version.h"
 #include "cli/commands.h"
 

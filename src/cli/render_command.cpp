@@ -18,7 +18,8 @@
 
 #include "base/assets.h"
 #include "base/error.h"
-#include "base/text_distance.h"
+#include "base/text/number_text.h"
+#include "base/text/text_distance.h"
 #include "base/version.h"
 #include "cli/commands.h"
 #include "cli/scene_messages.h"
@@ -135,20 +136,13 @@ void check_writable_folder(const fs::path& folder, const std::string& output) {
   fs::remove(probe, ec);
 }
 
-// A float as %g writes it (exposure stops: "0", "1.5", "-2").
-std::string float_words(float value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", static_cast<double>(value));
-  return text;
-}
-
 // The settings line of the output and of the PNGs' gloss:settings chunk; it names the display
 // transform the PNGs went through (PFM and EXR hold the linear image before it).
 std::string settings_summary(const RenderSettings& r, const std::string& precision) {
   return std::to_string(r.width) + "x" + std::to_string(r.height) + ", " + std::to_string(r.spp) +
          " spp, " + to_string(r.model) + ", shadows " + (r.shadows ? "on" : "off") +
          ", energy_normalize " + (r.energy_normalize ? "on" : "off") + ", srgb " +
-         (r.srgb ? "on" : "off") + ", exposure " + float_words(r.exposure) + ", tone " +
+         (r.srgb ? "on" : "off") + ", exposure " + number_text(r.exposure) + ", tone " +
          to_string(r.tone) + ", pow " + (r.pow == PowMode::exact ? "exact" : "fast") + ", seed " +
          std::to_string(r.seed) + ", precision " + precision +
          (r.spp > 1 ? std::string(", sampling ") + to_string(r.sampling) : std::string());

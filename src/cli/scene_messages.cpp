@@ -2,7 +2,7 @@
 
 #include <iostream>
 
-#include "base/printable_text.h"
+#include "base/text/printable_text.h"
 
 namespace gloss {
 

@@ -15,7 +15,7 @@
 #include <glm/mat3x3.hpp>
 #include <nlohmann/json.hpp>
 
-#include "base/ascii.h"
+#include "base/text/ascii.h"
 #include "base/atomic_file.h"
 #include "base/error.h"
 #include "base/version.h"

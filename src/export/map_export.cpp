@@ -3,7 +3,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "base/ascii.h"
+#include "base/text/ascii.h"
 #include "io/scene/material_maps.h"
 
 namespace gloss {

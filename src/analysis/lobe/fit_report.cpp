@@ -72,12 +72,6 @@ std::string rgb_text(const glm::dvec3& c, int digits) {
   return text;
 }
 
-std::string number_text(double x, int digits) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.*g", digits, x);
-  return text;
-}
-
 double four_times_rule(double alpha, ShadingModel from, ShadingModel to) {
   if (from == to) return alpha;
   return to == ShadingModel::blinn_phong ? 4.0 * alpha : alpha / 4.0;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "base/text/number_text.h"
 #include "physical/environment_match.h"
 #include "physical/phong_fit.h"
 #include "scene/physical_reference.h"
@@ -52,9 +53,8 @@ std::string fit_report_json(const FitReport& report);
 // model), of the fitted lobe, of the preset (when named), each diffuse plus specular.
 std::string fit_lobe_csv(const FitReport& report, double elevation_deg);
 
-// A colour and a number as the report writes them, with digits significant digits.
+// A colour as the report writes it, with digits significant digits (numbers: number_text).
 std::string rgb_text(const glm::dvec3& c, int digits = 6);
-std::string number_text(double x, int digits = 6);
 
 // The exponent of the editor's keep-highlight-size rule (Blinn-Phong = 4 x Phong), unclamped.
 double four_times_rule(double alpha, ShadingModel from, ShadingModel to);

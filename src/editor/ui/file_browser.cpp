@@ -6,7 +6,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
-#include "base/ascii.h"
+#include "base/text/ascii.h"
 #include "editor/model/session/file_defaults.h"
 #include "io/model/model_loader.h"
 

@@ -11,7 +11,7 @@
 
 #include <algorithm>
 
-#include "base/ascii.h"
+#include "base/text/ascii.h"
 #include "editor/model/session/file_defaults.h"
 #include "editor/ui/app.h"
 #include "editor/ui/panels/panels.h"

@@ -6,7 +6,7 @@
 
 #include "base/error.h"
 #include "base/field_path.h"
-#include "base/text_distance.h"
+#include "base/text/text_distance.h"
 
 namespace gloss {
 

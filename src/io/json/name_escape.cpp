@@ -1,6 +1,6 @@
 #include "io/json/name_escape.h"
 
-#include "base/printable_text.h"
+#include "base/text/printable_text.h"
 
 namespace gloss {
 

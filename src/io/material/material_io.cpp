@@ -7,11 +7,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "base/ascii.h"
+#include "base/text/ascii.h"
 #include "base/atomic_file.h"
 #include "base/error.h"
 #include "base/field_path.h"
-#include "base/text_distance.h"
+#include "base/text/text_distance.h"
 #include "io/json/field_json.h"
 #include "io/json/json_location.h"
 #include "io/json/material_json.h"

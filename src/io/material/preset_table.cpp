@@ -6,7 +6,7 @@
 #include "base/assets.h"
 #include "base/atomic_file.h"
 #include "base/error.h"
-#include "base/text_distance.h"
+#include "base/text/text_distance.h"
 
 namespace gloss {
 

@@ -22,7 +22,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "base/ascii.h"
+#include "base/text/ascii.h"
 #include "base/error.h"
 #include "io/model/gltf_extras.h"
 #include "io/model/model_maps.h"

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <utility>
 
-#include "base/ascii.h"
+#include "base/text/ascii.h"
 #include "base/error.h"
 #include "base/memory_budget.h"
 #include "io/image/texture_reader.h"

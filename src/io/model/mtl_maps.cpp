@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "base/ascii.h"
+#include "base/text/ascii.h"
 #include "io/json/field_json.h"
 
 namespace gloss {

@@ -10,7 +10,7 @@
 
 #include "base/assets.h"
 #include "base/error.h"
-#include "base/number_words.h"
+#include "base/text/number_words.h"
 
 namespace gloss {
 

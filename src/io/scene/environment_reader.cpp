@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "base/text/number_text.h"
 #include "io/image/image_reader.h"
 #include "scene/memory/memory_estimate.h"
 
@@ -46,10 +47,8 @@ std::shared_ptr<const EnvironmentMap> read_environment_map(const std::string& pa
   // lights' DWAB noise stays under 0.6 % of theirs).
   const double mean = sum / (3.0 * static_cast<double>(map->radiance.pixels.size()));
   if (negative > 0 && warnings != nullptr && -lowest > 0.01 * mean) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%g", static_cast<double>(lowest));
     warnings->push_back(path + ": " + std::to_string(negative) + " negative samples (down to " +
-                        text + ") read as 0: radiance is never negative");
+                        number_text(lowest) + ") read as 0: radiance is never negative");
   }
   return map;
 }

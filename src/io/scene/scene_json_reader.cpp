@@ -4,7 +4,7 @@
 #include <limits>
 
 #include "base/error.h"
-#include "base/text_distance.h"
+#include "base/text/text_distance.h"
 
 namespace gloss {
 

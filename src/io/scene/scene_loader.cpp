@@ -3,11 +3,11 @@
 #include <filesystem>
 #include <utility>
 
-#include "base/ascii.h"
+#include "base/text/ascii.h"
 #include "base/atomic_file.h"
 #include "base/error.h"
 #include "base/memory_budget.h"
-#include "base/text_distance.h"
+#include "base/text/text_distance.h"
 #include "io/image/scene_in_png.h"
 #include "io/json/field_json.h"
 #include "io/json/json_location.h"

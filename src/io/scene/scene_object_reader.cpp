@@ -13,7 +13,7 @@
 
 #include "base/error.h"
 #include "base/memory_budget.h"
-#include "base/text_distance.h"
+#include "base/text/text_distance.h"
 #include "io/json/field_json.h"
 #include "io/json/name_escape.h"
 #include "io/model/model_loader.h"

@@ -10,6 +10,7 @@
 
 #include "base/field_path.h"
 #include "base/memory_budget.h"
+#include "base/text/number_text.h"
 #include "scene/fields/fields.h"
 #include "scene/limits.h"
 #include "scene/memory/memory_estimate.h"
@@ -17,12 +18,6 @@
 namespace gloss {
 
 namespace {
-
-std::string number_text(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
 
 // Every field of table within its kind and range (scene/fields/field.h), named under path.
 template <class S>

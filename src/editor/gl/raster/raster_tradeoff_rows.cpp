@@ -4,15 +4,11 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "base/text/number_text.h"
+
 namespace gloss {
 
 namespace {
-
-std::string number_text(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
 
 void check_options(const RasterTradeoffOptions& o) {
   if (o.runs < 1) throw std::invalid_argument("raster tradeoff: runs must be at least 1");

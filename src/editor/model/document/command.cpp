@@ -8,7 +8,7 @@
 #include "base/assets.h"
 #include "base/error.h"
 #include "base/overloaded.h"
-#include "base/text_distance.h"
+#include "base/text/text_distance.h"
 #include "io/material/preset_table.h"
 #include "io/scene/environment_reader.h"
 #include "io/scene/material_maps.h"

@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "base/atomic_file.h"
-#include "base/printable_text.h"
+#include "base/text/printable_text.h"
 #include "editor/model/export/environment_atlas.h"
 #include "editor/model/export/glsl_export_maps.h"
 #include "io/image/image_io.h"

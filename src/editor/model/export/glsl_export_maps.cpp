@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "base/printable_text.h"
+#include "base/text/printable_text.h"
 #include "editor/model/export/glsl_export.h"
 #include "io/image/image_io.h"
 #include "texture/texture_lookup.h"

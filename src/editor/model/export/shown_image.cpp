@@ -4,7 +4,7 @@
 #include <ctime>
 #include <string_view>
 
-#include "base/ascii.h"
+#include "base/text/ascii.h"
 #include "base/error.h"
 #include "editor/model/export/export_image.h"
 #include "io/image/image_io.h"

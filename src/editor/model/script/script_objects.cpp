@@ -2,7 +2,7 @@
 // they run, resolved against the document into commands (object_commands.h).
 #include <string>
 
-#include "base/text_distance.h"
+#include "base/text/text_distance.h"
 #include "editor/model/document/new_objects.h"
 #include "editor/model/script/script_tokens.h"
 

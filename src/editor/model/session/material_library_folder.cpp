@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <system_error>
 
-#include "base/ascii.h"
+#include "base/text/ascii.h"
 #include "editor/model/session/config_paths.h"
 #include "editor/model/session/file_defaults.h"
 #include "io/material/material_io.h"

@@ -11,7 +11,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
-#include "base/ascii.h"
+#include "base/text/ascii.h"
 #include "editor/model/document/new_objects.h"
 #include "editor/model/view/camera_controller.h"
 #include "editor/ui/file_browser.h"

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "base/ascii.h"
+#include "base/text/ascii.h"
 #include "base/error.h"
 #include "editor/model/document/document.h"
 #include "editor/model/document/new_objects.h"
