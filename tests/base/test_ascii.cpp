@@ -1,5 +1,5 @@
 // ASCII case: only A-Z change, whatever the bytes around them (UTF-8 names stay as written).
-#include "base/ascii.h"
+#include "base/text/ascii.h"
 
 #include <string>
 

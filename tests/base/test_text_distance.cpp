@@ -1,4 +1,4 @@
-#include "base/text_distance.h"
+#include "base/text/text_distance.h"
 
 #include <gtest/gtest.h>
 
