@@ -70,6 +70,24 @@ bool opaque_at(const TextureMap& map, const glm::vec<2, T>& uv) {
   return (map.texture->has_alpha ? texel.w : texel.x) >= T(0.5);
 }
 
+// The normal a normal map's texel makes of n (the surface's own orientation: side * frame.n),
+// in the frame's tangent frame.
+template <class T>
+glm::vec<3, T> normal_map_normal(const Material& material, const TextureMap& map,
+                                 const MapFrame<T>& frame, const glm::vec<3, T>& n,
+                                 const glm::vec<4, T>& texel) {
+  glm::vec<3, T> n_t = tangent_space_normal(texel, static_cast<T>(material.normal_scale));
+  // A map turned or mirrored in (u, v) turns its tangent-space x and y back.
+  if (map.rotation != 0.0f || map.scale.x < 0.0f || map.scale.y < 0.0f) {
+    const T angle = -static_cast<T>(map.rotation) * T(3.14159265358979323846) / T(180);
+    const T c = std::cos(angle), s = std::sin(angle);
+    const T x = c * n_t.x - s * n_t.y, y = s * n_t.x + c * n_t.y;
+    n_t.x = map.scale.x < 0.0f ? -x : x;
+    n_t.y = map.scale.y < 0.0f ? -y : y;
+  }
+  return normal_from_map(n, frame.tangent, frame.handedness, n_t);
+}
+
 template <class T>
 MapValues<T> map_values(const Material& material, const MapFrame<T>& frame, MapFilter filter) {
   MapValues<T> out;
@@ -120,18 +138,8 @@ MapValues<T> map_values(const Material& material, const MapFrame<T>& frame, MapF
   const glm::vec<3, T> n0 = frame.side * frame.n;
   glm::vec<3, T> n = n0;
   if (has(MapSlot::normal)) {
-    const TextureMap& map = map_of(MapSlot::normal);
     const glm::vec<4, T> texel = read(MapSlot::normal, uv_of(MapSlot::normal));
-    glm::vec<3, T> n_t = tangent_space_normal(texel, static_cast<T>(material.normal_scale));
-    // A map turned or mirrored in (u, v) turns its tangent-space x and y back.
-    if (map.rotation != 0.0f || map.scale.x < 0.0f || map.scale.y < 0.0f) {
-      const T angle = -static_cast<T>(map.rotation) * T(3.14159265358979323846) / T(180);
-      const T c = std::cos(angle), s = std::sin(angle);
-      const T x = c * n_t.x - s * n_t.y, y = s * n_t.x + c * n_t.y;
-      n_t.x = map.scale.x < 0.0f ? -x : x;
-      n_t.y = map.scale.y < 0.0f ? -y : y;
-    }
-    n = normal_from_map(n, frame.tangent, frame.handedness, n_t);
+    n = normal_map_normal(material, map_of(MapSlot::normal), frame, n, texel);
   }
   if (has(MapSlot::bump)) {
     const glm::vec<2, T> uv = uv_of(MapSlot::bump);

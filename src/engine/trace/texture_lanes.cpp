@@ -1,9 +1,16 @@
 #include "engine/trace/texture_lanes.h"
 
-#include "engine/trace/refined_samples.h"
-#include "engine/trace/sample_packet.h"
+#include <array>
+#include <cmath>
+#include <cstdint>
 
 #include <glm/geometric.hpp>
+
+#include "engine/trace/map_frame_lanes.h"
+#include "engine/trace/map_lanes.h"
+#include "engine/trace/normal_map_lanes.h"
+#include "engine/trace/refined_samples.h"
+#include "engine/trace/sample_packet.h"
 
 #include "shading/hit_textures.h"
 #include "shading/map_frame.h"
@@ -29,56 +36,156 @@ void unit_texels(std::size_t channels, TexelLanes& out) {
   }
 }
 
+namespace {
+
+// The hit's MapFrame (shading/map_frame.h) with the lane's shading normal, view and side.
+MapFrame<float> lane_frame(const SamplePacket& packet, const Object& object,
+                           const SurfaceLanes& surfaces, float spread, int i) {
+  const glm::vec3 dir(static_cast<float>(packet.dir_x[i]), static_cast<float>(packet.dir_y[i]),
+                      static_cast<float>(packet.dir_z[i]));
+  const Surface s = surfaces.get(i);
+  const float t = packet.t[i];
+  const float cos_theta = glm::dot(dir, s.ng);
+  MapFrame<float> frame;
+  if (object.type == ObjectType::sphere) {
+    frame = sphere_map_frame(object.center, object.radius, s.p, t, spread, cos_theta);
+  } else {
+    const float b[3] = {1.0f - packet.u[i] - packet.v[i], packet.u[i], packet.v[i]};
+    frame = mesh_map_frame(*object.mesh, packet.prim[i], b, t, spread, cos_theta);
+  }
+  frame.n = s.n;
+  frame.v = s.v;
+  // The two-sided rule turned n_g towards the viewer where the ray met the back: for a
+  // triangle the stored face orientation tells, for a sphere the outward direction.
+  frame.side = glm::dot(outward(object, packet.prim[i], s.p), s.ng) < 0.0f ? -1.0f : 1.0f;
+  return frame;
+}
+
+// Where the plan's channels are (-1: not planned).
+struct TexelChannels {
+  int kd, ka, ks, ke, alpha;
+  explicit TexelChannels(const TexturePlan& plan)
+      : kd(plan.kd_channel()),
+        ka(plan.ka_channel()),
+        ks(plan.ks_channel()),
+        ke(plan.ke_channel()),
+        alpha(plan.alpha_channel()) {}
+};
+
+void put3(TexelLanes& out, int channel, int i, const glm::vec3& value) {
+  for (int c = 0; c < 3; ++c) out.channel[channel + c][i] = value[c];
+}
+
+// Lane i through map_values, as the reference path does (bump maps, the nearest-texel knob).
+void scalar_lane(const Material& material, const MapFrame<float>& frame, const TexturePlan& plan,
+                 const TexelChannels& ch, int i, SurfaceLanes& surfaces, TexelLanes& out) {
+  const MapValues<float> values = map_values(material, frame, plan.filter);
+  if (ch.kd >= 0) put3(out, ch.kd, i, values.kd);
+  if (ch.ka >= 0 && ch.ka != ch.kd) put3(out, ch.ka, i, values.ka);
+  if (ch.ks >= 0) put3(out, ch.ks, i, values.ks);
+  if (ch.ke >= 0) put3(out, ch.ke, i, values.ke);
+  if (ch.alpha >= 0) out.channel[ch.alpha][i] = values.alpha;
+  if (plan.normals) {
+    surfaces.nx[i] = values.n.x;
+    surfaces.ny[i] = values.n.y;
+    surfaces.nz[i] = values.n.z;
+  }
+}
+
+// The lanes of mask (one material, no bump map, a lane filter) through read_map_lanes: the
+// values map_values gives them.
+void material_lanes(const Material& material, const MapFrameLanes& frames, std::uint32_t mask,
+                    const TexturePlan& plan, const TexelChannels& ch, SurfaceLanes& surfaces,
+                    TexelLanes& out) {
+  const std::array<TextureMap, kMapSlots>& maps = *material.map_storage;
+  MapTexelLanes texels;
+  MapTaps taps;
+  const TextureMap* tapped = nullptr;  // the map taps were last made for
+  auto read = [&](MapSlot slot) -> const TextureMap* {
+    const TextureMap& map = maps[static_cast<int>(slot)];
+    if (!map.present()) return nullptr;
+    if (tapped == nullptr || !same_taps(*tapped, map)) {
+      const int set = map.uv_set == 1 ? 1 : 0;
+      map_taps(map, plan.filter, frames.u[set], frames.v[set], frames.log_footprint[set], mask,
+               taps);
+      tapped = &map;
+    }
+    read_taps(*map.texture, taps, mask, texels);
+    return &map;
+  };
+  auto each_lane = [mask](auto&& f) {
+    for (std::uint32_t rest = mask; rest != 0; rest &= rest - 1) f(__builtin_ctz(rest));
+  };
+  auto rgb = [&texels](int i) {
+    return glm::vec3(texels.texel[0][i], texels.texel[1][i], texels.texel[2][i]);
+  };
+  if (read(MapSlot::diffuse) != nullptr) {
+    each_lane([&](int i) {
+      if (ch.kd >= 0) put3(out, ch.kd, i, rgb(i));
+      if (ch.ka >= 0 && ch.ka != ch.kd) put3(out, ch.ka, i, rgb(i));
+    });
+  }
+  if (read(MapSlot::ambient) != nullptr && ch.ka >= 0 && ch.ka != ch.kd) {
+    each_lane([&](int i) { put3(out, ch.ka, i, rgb(i)); });
+  }
+  if (read(MapSlot::specular) != nullptr && ch.ks >= 0) {
+    each_lane([&](int i) { put3(out, ch.ks, i, rgb(i)); });
+  }
+  if (read(MapSlot::emission) != nullptr && ch.ke >= 0) {
+    each_lane([&](int i) { put3(out, ch.ke, i, rgb(i)); });
+  }
+  if (read(MapSlot::shininess) != nullptr && ch.alpha >= 0) {
+    each_lane([&](int i) { out.channel[ch.alpha][i] = texels.texel[0][i]; });
+  }
+  if (const TextureMap* map = read(MapSlot::normal)) {
+    normal_map_lanes(material, *map, frames.tangents, texels.texel, mask, surfaces);
+  }
+}
+
+}  // namespace
+
 void texture_lanes(const SamplePacket& packet, const SampleCache& cache, const RenderContext& ctx,
                    int spp, SurfaceLanes& surfaces, TexelLanes& out) {
   const TexturePlan& plan = ctx.plan.textures;
-  const std::size_t channels = plan.channels();
-  unit_texels(channels, out);
+  unit_texels(plan.channels(), out);
   const Scene& scene = *ctx.scene;
   const float spread = cone_spread(static_cast<float>(scene.camera.fov_y), cache.image_height, spp);
-  const int kd = plan.kd_channel(), ka = plan.ka_channel(), ks = plan.ks_channel(),
-            ke = plan.ke_channel(), alpha = plan.alpha_channel();
+  const TexelChannels ch(plan);
+  // Lanes of textured materials: their frames, then the maps of each material in the packet for
+  // all its lanes at once (read_map_lanes), or per lane where a map needs map_values.
+  alignas(64) std::int32_t material_of[kLanes];
+  std::uint32_t pending = 0;
+  std::int32_t last = -1;  // the lanes of a packet mostly share a material: its flags once
+  bool textured = false, per_lane = false;
   for (int i = 0; i < kLanes; ++i) {
+    material_of[i] = -1;
     if (packet.object[i] < 0 || packet.valid[i] == 0) continue;
     const Object& object = scene.objects[static_cast<std::size_t>(packet.object[i])];
     const Material& material = scene.materials[static_cast<std::size_t>(object.material)];
-    if (!material.textured()) continue;
-    const glm::vec3 dir(static_cast<float>(packet.dir_x[i]), static_cast<float>(packet.dir_y[i]),
-                        static_cast<float>(packet.dir_z[i]));
-    const Surface s = surfaces.get(i);
-    const float t = packet.t[i];
-    const float cos_theta = glm::dot(dir, s.ng);
-    MapFrame<float> frame;
-    if (object.type == ObjectType::sphere) {
-      frame = sphere_map_frame(object.center, object.radius, s.p, t, spread, cos_theta);
-    } else {
-      const float b[3] = {1.0f - packet.u[i] - packet.v[i], packet.u[i], packet.v[i]};
-      frame = mesh_map_frame(*object.mesh, packet.prim[i], b, t, spread, cos_theta);
+    if (object.material != last) {
+      last = object.material;
+      textured = material.textured();
+      per_lane = !lane_filter(plan.filter) || material.map(MapSlot::bump).present();
     }
-    frame.n = s.n;
-    frame.v = s.v;
-    // The two-sided rule turned n_g towards the viewer where the ray met the back: for a
-    // triangle the stored face orientation tells, for a sphere the outward direction.
-    frame.side = glm::dot(outward(object, packet.prim[i], s.p), s.ng) < 0.0f ? -1.0f : 1.0f;
-    const MapValues<float> values = map_values(material, frame, plan.filter);
-    if (kd >= 0) {
-      for (int c = 0; c < 3; ++c) out.channel[kd + c][i] = values.kd[c];
+    if (!textured) continue;
+    if (per_lane) {
+      scalar_lane(material, lane_frame(packet, object, surfaces, spread, i), plan, ch, i, surfaces,
+                  out);
+      continue;
     }
-    if (ka >= 0 && ka != kd) {
-      for (int c = 0; c < 3; ++c) out.channel[ka + c][i] = values.ka[c];
-    }
-    if (ks >= 0) {
-      for (int c = 0; c < 3; ++c) out.channel[ks + c][i] = values.ks[c];
-    }
-    if (ke >= 0) {
-      for (int c = 0; c < 3; ++c) out.channel[ke + c][i] = values.ke[c];
-    }
-    if (alpha >= 0) out.channel[alpha][i] = values.alpha;
-    if (plan.normals) {
-      surfaces.nx[i] = values.n.x;
-      surfaces.ny[i] = values.n.y;
-      surfaces.nz[i] = values.n.z;
-    }
+    material_of[i] = object.material;
+    pending |= 1u << i;
+  }
+  if (pending == 0) return;
+  MapFrameLanes frames;
+  map_frame_lanes(packet, scene, surfaces, spread, pending, frames);
+  while (pending != 0) {
+    const std::int32_t m = material_of[__builtin_ctz(pending)];
+    std::uint32_t group = 0;
+    for (int i = 0; i < kLanes; ++i) group |= (material_of[i] == m ? 1u : 0u) << i;
+    pending &= ~group;
+    material_lanes(scene.materials[static_cast<std::size_t>(m)], frames, group, plan, ch, surfaces,
+                   out);
   }
 }
 

@@ -1,0 +1,42 @@
+// Micro-benchmarks of the maps' cost in the first pass (docs/engine.md, "Maps"): the benchmark
+// scene at 1280x720, 1 spp, untextured and with the bench's 2048^2 maps (a colour map on every
+// surface, a normal map on the quads), for profiling the textured re-trace on its own.
+#include <benchmark/benchmark.h>
+
+#include <memory>
+
+#include "analysis/bench/texture_bench.h"
+#include "base/assets.h"
+#include "engine/render_context.h"
+#include "engine/shade/pixel_factors.h"
+#include "engine/trace/embree_scene.h"
+#include "engine/trace/sample_cache.h"
+#include "engine/trace/single_sample_pass.h"
+#include "io/scene/scene_loader.h"
+
+namespace gloss {
+namespace {
+
+// range(0): 1 = with the maps.
+void BM_FirstPass720p(benchmark::State& state) {
+  Scene scene = load_scene(asset_path("scenes/cornell-teapot.json"));
+  scene.render.width = 1280;
+  scene.render.height = 720;
+  scene.render.spp = 1;
+  if (state.range(0) != 0) scene = with_benchmark_maps(scene);
+  const EmbreeScene embree(scene);
+  const RenderContext ctx = make_render_context(scene, embree);
+  SampleCache cache = make_sample_cache(scene, 1280, 720, 1);
+  PixelFactors factors;
+  Image total;
+  for (auto _ : state) {
+    reset_sample_cache(cache, scene, 1280, 720, 1);
+    trace_single_sample(cache, ctx, factors, &total);
+    benchmark::DoNotOptimize(total.pixels.data());
+  }
+  state.SetItemsProcessed(state.iterations() * 1280 * 720);
+}
+BENCHMARK(BM_FirstPass720p)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+}  // namespace gloss
