@@ -51,8 +51,10 @@ void map_taps(const TextureMap& map, MapFilter filter, const float* u, const flo
               const float* log_footprint, std::uint32_t mask, MapTaps& taps);
 
 // The texture's values at the taps of the lanes in mask (lanes outside it are left as they
-// were): read_map<float>(map, filter, uv, map_level_of_log(map, log_footprint)) for each.
-void read_taps(const Texture& texture, const MapTaps& taps, std::uint32_t mask, MapTexelLanes& out);
+// were): read_map<float>(map, filter, uv, map_level_of_log(map, log_footprint)) for each, its
+// first `channels` (1 to 4) channels.
+void read_taps(const Texture& texture, const MapTaps& taps, std::uint32_t mask, MapTexelLanes& out,
+               int channels);
 
 // map_taps, then read_taps.
 void read_map_lanes(const TextureMap& map, MapFilter filter, const float* u, const float* v,

@@ -101,7 +101,8 @@ void material_lanes(const Material& material, const MapFrameLanes& frames, std::
   MapTexelLanes texels;
   MapTaps taps;
   const TextureMap* tapped = nullptr;  // the map taps were last made for
-  auto read = [&](MapSlot slot) -> const TextureMap* {
+  // channels: what the slot uses (a shininess map its first; colour and normal maps three).
+  auto read = [&](MapSlot slot, int channels = 3) -> const TextureMap* {
     const TextureMap& map = maps[static_cast<int>(slot)];
     if (!map.present()) return nullptr;
     if (tapped == nullptr || !same_taps(*tapped, map)) {
@@ -110,7 +111,7 @@ void material_lanes(const Material& material, const MapFrameLanes& frames, std::
                taps);
       tapped = &map;
     }
-    read_taps(*map.texture, taps, mask, texels);
+    read_taps(*map.texture, taps, mask, texels, channels);
     return &map;
   };
   auto each_lane = [mask](auto&& f) {
@@ -134,7 +135,7 @@ void material_lanes(const Material& material, const MapFrameLanes& frames, std::
   if (read(MapSlot::emission) != nullptr && ch.ke >= 0) {
     each_lane([&](int i) { put3(out, ch.ke, i, rgb(i)); });
   }
-  if (read(MapSlot::shininess) != nullptr && ch.alpha >= 0) {
+  if (read(MapSlot::shininess, 1) != nullptr && ch.alpha >= 0) {
     each_lane([&](int i) { out.channel[ch.alpha][i] = texels.texel[0][i]; });
   }
   if (const TextureMap* map = read(MapSlot::normal)) {
