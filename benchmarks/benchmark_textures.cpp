@@ -38,5 +38,28 @@ void BM_FirstPass720p(benchmark::State& state) {
 }
 BENCHMARK(BM_FirstPass720p)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// A kd edit: recombination from the 1-spp cache (range(0): 1 = with the maps).
+void BM_KdEdit720p(benchmark::State& state) {
+  Scene scene = load_scene(asset_path("scenes/cornell-teapot.json"));
+  scene.render.width = 1280;
+  scene.render.height = 720;
+  scene.render.spp = 1;
+  if (state.range(0) != 0) scene = with_benchmark_maps(scene);
+  const EmbreeScene embree(scene);
+  SampleCache cache = make_sample_cache(scene, 1280, 720, 1);
+  PixelFactors factors;
+  trace_single_sample(cache, make_render_context(scene, embree), factors);
+  Scene edited = scene;
+  for (Material& m : edited.materials) m.diffuse *= 0.9f;
+  const RenderContext ctx = make_render_context(edited, embree);
+  TermImages out;
+  for (auto _ : state) {
+    combine_terms(factors, ctx, out, false);
+    benchmark::DoNotOptimize(out.total.pixels.data());
+  }
+  state.SetItemsProcessed(state.iterations() * 1280 * 720);
+}
+BENCHMARK(BM_KdEdit720p)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond)->UseRealTime();
+
 }  // namespace
 }  // namespace gloss

@@ -128,23 +128,42 @@ void TotalLanes::store(const std::int32_t* material, float (&rgb)[3 * kLanes],
 }
 
 // The textured lanes: each term times its multipliers before the total is formed, in
-// Recombination::terms' order (the scalar path of combine_terms, which the tests compare).
+// Recombination::terms' order (the scalar path of combine_terms, which the tests compare). A term
+// without a map is multiplied by 1 (exact), so the lane loop has no branch and vectorises; one
+// material's constants are scalars, as in store.
 void TotalLanes::store_mapped(const std::int32_t* material, const float* const (&maps)[4][3],
                               float (&total)[3][kLanes]) const {
+  alignas(64) static const float kOnes[kLanes] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+  auto channel = [&](std::size_t c, auto emission_at, auto ambient_at) {
+    const float* m[4];
+    for (int t = 0; t < 4; ++t) m[t] = maps[t][c] != nullptr ? maps[t][c] : kOnes;
+    const float background = m_recombination.background()[c];
+#pragma omp simd
+    for (int i = 0; i < kLanes; ++i) {
+      const bool hit = material[i] >= 0;
+      total[c][i] = form_total(
+          (hit ? emission_at(i) : 0.0f) * m[0][i], (hit ? ambient_at(i) : 0.0f) * m[1][i],
+          (hit ? m_diffuse[c][i] : 0.0f) * m[2][i], (hit ? m_specular[c][i] : 0.0f) * m[3][i],
+          (hit ? 0.0f : 1.0f) * background);
+    }
+  };
+  const std::int32_t one = common_lane_value(material);
+  if (one >= 0) {
+    const std::size_t k = static_cast<std::size_t>(one);
+    for (std::size_t c = 0; c < 3; ++c) {
+      const float emission = m_recombination.column(c)[k];
+      const float ambient = m_recombination.column(3 + c)[k];
+      channel(
+          c, [emission](int) { return emission; }, [ambient](int) { return ambient; });
+    }
+    return;
+  }
   gather_channel_pairs(
       m_recombination, material, 0, 3,
       [&](std::size_t c, const float(&emission)[kLanes], const float(&ambient)[kLanes]) {
-        const float background = m_recombination.background()[c];
-        for (int i = 0; i < kLanes; ++i) {
-          const bool hit = material[i] >= 0;
-          float term[4] = {hit ? emission[i] : 0.0f, hit ? ambient[i] : 0.0f,
-                           hit ? m_diffuse[c][i] : 0.0f, hit ? m_specular[c][i] : 0.0f};
-          for (int t = 0; t < 4; ++t) {
-            if (maps[t][c] != nullptr) term[t] *= maps[t][c][i];
-          }
-          total[c][i] =
-              form_total(term[0], term[1], term[2], term[3], (hit ? 0.0f : 1.0f) * background);
-        }
+        channel(
+            c, [&emission](int i) { return emission[i]; },
+            [&ambient](int i) { return ambient[i]; });
       });
 }
 
