@@ -224,5 +224,45 @@ TEST(EnvironmentEngine, TextureAndLightEditsKeepTheSky) {
   engine.set_on_publish(nullptr);
 }
 
+// A shininess map scales alpha per sample, and the fast path's lobe is the sample's: a map of
+// 0.25 everywhere on an alpha of 64 gives the image of alpha 16 without a map (within rounding:
+// the map's value comes through its filter), for the first pass and for the fast path's slots
+// made again at the cached hits (a `texture` edit that adds the map). Before, the fast path
+// read the material's own level (64): off by a lobe four times too narrow.
+TEST(EnvironmentEngine, TheFastPathsLobeIsTheShininessMapsAlpha) {
+  Scene scene = scene_in_environment(0);
+  for (Material& m : scene.materials) {
+    m.specular = glm::vec3(0.8f);
+    m.shininess = 64.0f;
+  }
+  Scene mapped = scene, narrow = scene;
+  for (Material& m : mapped.materials) {
+    m.map(MapSlot::shininess) = test::map_of(
+        test::texture_of(4, 4, 1, [](int, int) { return glm::vec4(0.25f); }), "quarter");
+  }
+  for (Material& m : narrow.materials) m.shininess = 16.0f;
+  const TermImages want = render(narrow);
+  EXPECT_LE(max_abs_diff(render(mapped).specular, want.specular), 1e-5);
+  EXPECT_GT(max_abs_diff(render(scene).specular, want.specular), 1e-2);  // the map matters
+
+  Frames frames;
+  ProgressiveOptions options;
+  options.edit_preview_budget_ms = 0;
+  ProgressiveRenderer engine(options);
+  converge(engine, scene, frames);
+  const auto frame = converge(engine, mapped, frames);  // the slots again at the cached hits
+  RenderOptions same_samples;  // the frame's adaptive refinement, not a fresh render's
+  same_samples.placement = &frame->refined;
+  EXPECT_LE(max_abs_diff(frame->images.specular, render(narrow, same_samples).specular), 1e-5);
+  expect_fresh(*frame, mapped);
+  // A shininess edit under the environment: its slots again at the cached hits and texels.
+  for (Material& m : mapped.materials) m.shininess = 32.0f;
+  for (Material& m : narrow.materials) m.shininess = 8.0f;
+  const auto edited = converge(engine, mapped, frames);
+  same_samples.placement = &edited->refined;
+  EXPECT_LE(max_abs_diff(edited->images.specular, render(narrow, same_samples).specular), 1e-5);
+  expect_fresh(*edited, mapped);
+}
+
 }  // namespace
 }  // namespace gloss

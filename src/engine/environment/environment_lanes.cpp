@@ -51,7 +51,7 @@ void lane_directions(const SurfaceLanes& s, const EnvironmentRotation<float>& ro
 }  // namespace
 
 void environment_lanes(const SamplePacket& packet, const SurfaceLanes& surfaces,
-                       const RenderContext& ctx, LightLanes (&out)[3]) {
+                       const RenderContext& ctx, const float* alpha_scale, LightLanes (&out)[3]) {
   const EnvironmentContext& env = ctx.environment;
   const PrefilteredEnvironment& maps = *env.maps;
   LaneDirections d;
@@ -78,7 +78,14 @@ void environment_lanes(const SamplePacket& packet, const SurfaceLanes& surfaces,
       diffuse_on[i] = env.diffuse[m];
       any_diffuse |= diffuse_on[i] != 0;
       if (env.specular[m] != 0) {
-        const LevelBlend& b = env.blend[m];
+        // A shininess map scales the material's alpha per lane: the lobe's levels are the
+        // lane's (the material's table entry where the map gives 1).
+        const bool scaled = alpha_scale != nullptr && alpha_scale[i] != 1.0f;
+        const LevelBlend b =
+            scaled
+                ? maps.blend(phong_equivalent_exponent(
+                      ctx.scene->render.model, ctx.scene->materials[m].shininess * alpha_scale[i]))
+                : env.blend[m];
         level_a[i] = b.a;
         any_a = true;
         if (b.wb != 0.0f) {  // one level (or the map) alone: no second read

@@ -24,7 +24,9 @@ void store_environment(const SamplePacket& packet, const SampleCache& cache,
   } else {
     SurfaceLanes surfaces;
     mapped_surfaces(packet, cache, ctx, plane, surfaces);  // normal maps included
-    environment_lanes(packet, surfaces, ctx, channels);
+    TexelLanes texels;  // the cached ones: a shininess map's alpha
+    load_texels(packet, width, plane, texels);
+    environment_lanes(packet, surfaces, ctx, alpha_lanes(ctx, texels), channels);
   }
   for (int c = 0; c < 3; ++c) {
     store_light(packet, width, channels[c], plane.lights[ctx.plan.environment_slot(c)]);

@@ -96,9 +96,17 @@ long long packet_light(const SamplePacket& packet, const SurfaceLanes& surfaces,
 // The environment's fast-path factors of the lanes, one LightLanes per colour channel: the
 // diffuse weight the irradiance / pi at n, the specular weight the lobe's mean around r, both at
 // intensity 1, and cosines of 1 so that the factor pipeline's c^alpha leaves them as they are
-// (engine/environment/environment_lanes.cpp).
+// (engine/environment/environment_lanes.cpp). alpha_scale: per lane what a shininess map
+// multiplies its material's alpha by (the plan's alpha channel; null without one): the lobe's
+// level is the lane's own.
 void environment_lanes(const SamplePacket& packet, const SurfaceLanes& surfaces,
-                       const RenderContext& ctx, LightLanes (&out)[3]);
+                       const RenderContext& ctx, const float* alpha_scale, LightLanes (&out)[3]);
+
+// The plan's alpha channel of texel lanes (null when the plan has none).
+inline const float* alpha_lanes(const RenderContext& ctx, const TexelLanes& texels) {
+  const int alpha = ctx.plan.textures.alpha_channel();
+  return alpha >= 0 ? texels.channel[alpha] : nullptr;
+}
 
 // The map's radiance (intensity 1) towards each missed lane of packet, 0 where the lane hit
 // (engine/environment/environment_stage.cpp): the sky.
@@ -179,7 +187,7 @@ long long shade_sample(const SamplePacket& packet, const SampleCache& cache,
   }
   if (ctx.plan.environment) {  // the fast path's three slots (environment_lanes.h)
     LightLanes channels[3];
-    environment_lanes(packet, surfaces, ctx, channels);
+    environment_lanes(packet, surfaces, ctx, alpha_lanes(ctx, maps), channels);
     for (int c = 0; c < 3; ++c) {
       const std::size_t slot = ctx.plan.environment_slot(c);
       store_light(packet, cache.width, channels[c], plane.lights[slot]);

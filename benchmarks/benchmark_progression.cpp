@@ -1,0 +1,51 @@
+// The progressive engine from a camera change to convergence at 16 spp, adaptive or uniform
+// (what `gloss-cli bench` reports as aa_ms and converge_16spp_ms), for profiling the passes.
+#include <benchmark/benchmark.h>
+
+#include <condition_variable>
+#include <mutex>
+
+#include "base/assets.h"
+#include "engine/progressive_renderer.h"
+#include "io/scene/scene_loader.h"
+
+namespace gloss {
+namespace {
+
+// range(0): 1 = adaptive, 0 = uniform.
+void BM_CameraChangeTo16spp(benchmark::State& state) {
+  Scene scene = load_scene(asset_path("scenes/cornell-teapot.json"));
+  scene.render.width = 1280;
+  scene.render.height = 720;
+  scene.render.spp = 16;
+  scene.render.sampling = state.range(0) != 0 ? Sampling::adaptive : Sampling::uniform;
+  ProgressiveOptions options;
+  options.terms = false;
+  ProgressiveRenderer engine(options);
+  std::mutex mutex;
+  std::condition_variable cv;
+  bool converged = false;
+  engine.set_on_publish([&] {
+    const auto frame = engine.latest();
+    std::lock_guard<std::mutex> lock(mutex);
+    if (frame->info.converged && frame->info.generation > 0) converged = true;
+    cv.notify_all();
+  });
+  const glm::vec3 eye = scene.camera.eye;
+  int run = 0;
+  for (auto _ : state) {
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      converged = false;
+    }
+    scene.camera.eye = eye + glm::vec3(run++ % 2 == 0 ? 0.01f : -0.01f, 0.0f, 0.0f);
+    engine.set_scene(scene);
+    std::unique_lock<std::mutex> lock(mutex);
+    cv.wait(lock, [&] { return converged; });
+  }
+  engine.set_on_publish(nullptr);
+}
+BENCHMARK(BM_CameraChangeTo16spp)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+}  // namespace gloss
