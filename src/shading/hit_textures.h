@@ -21,11 +21,12 @@ namespace gloss {
 // The surface at a hit as the maps need it.
 template <class T>
 struct MapFrame {
-  glm::vec<2, T> uv[2];           // (u, v) of each set (a shape with one set has it twice)
-  T footprint[2] = {T(0), T(0)};  // the sample's footprint in each set's (u, v) units
-  glm::vec<3, T> n;               // the shading normal, on the viewer's side
-  glm::vec<3, T> v;               // to the eye
-  T side = T(1);                  // -1 where the two-sided rule turned n around
+  // (u, v) of each set (a shape with one set has it twice); (0, 0) on a mesh without (u, v)
+  glm::vec<2, T> uv[2] = {glm::vec<2, T>(0), glm::vec<2, T>(0)};
+  T footprint[2] = {T(0), T(0)};             // the sample's footprint in each set's (u, v) units
+  glm::vec<3, T> n{T(0)};                    // the shading normal, on the viewer's side
+  glm::vec<3, T> v{T(0)};                    // to the eye
+  T side = T(1);                             // -1 where the two-sided rule turned n around
   glm::vec<3, T> tangent{T(1), T(0), T(0)};  // set 0's tangent as the mesh gives it (not turned)
   T handedness = T(1);
   glm::vec<3, T> dpdu{T(0)}, dpdv{T(0)};  // set 0's derivatives (bump maps); 0: the tangent frame's

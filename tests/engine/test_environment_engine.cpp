@@ -226,9 +226,11 @@ TEST(EnvironmentEngine, TextureAndLightEditsKeepTheSky) {
 
 // A shininess map scales alpha per sample, and the fast path's lobe is the sample's: a map of
 // 0.25 everywhere on an alpha of 64 gives the image of alpha 16 without a map (within rounding:
-// the map's value comes through its filter), for the first pass and for the fast path's slots
-// made again at the cached hits (a `texture` edit that adds the map). Before, the fast path
-// read the material's own level (64): off by a lobe four times too narrow.
+// the map's value comes through its filter): in the first pass, after adding the map (a `light`
+// edit: the plan gains an alpha channel), after a shininess edit (`environment`: the slots made
+// again from the cached hits and texels) and after swapping the map for another (`texture`: the
+// texels sampled again, then the slots). Before, the fast path read the material's own level
+// (64): off by a lobe four times too narrow.
 TEST(EnvironmentEngine, TheFastPathsLobeIsTheShininessMapsAlpha) {
   Scene scene = scene_in_environment(0);
   for (Material& m : scene.materials) {
@@ -249,19 +251,34 @@ TEST(EnvironmentEngine, TheFastPathsLobeIsTheShininessMapsAlpha) {
   ProgressiveOptions options;
   options.edit_preview_budget_ms = 0;
   ProgressiveRenderer engine(options);
+  engine.set_on_publish([&] {
+    std::lock_guard<std::mutex> lock(frames.mutex);
+    frames.seen.push_back(engine.latest()->info);
+  });
   converge(engine, scene, frames);
-  const auto frame = converge(engine, mapped, frames);  // the slots again at the cached hits
-  RenderOptions same_samples;  // the frame's adaptive refinement, not a fresh render's
-  same_samples.placement = &frame->refined;
-  EXPECT_LE(max_abs_diff(frame->images.specular, render(narrow, same_samples).specular), 1e-5);
-  expect_fresh(*frame, mapped);
-  // A shininess edit under the environment: its slots again at the cached hits and texels.
+  auto expect_narrow = [&](ChangeClass cause) {
+    const auto frame = converge(engine, mapped, frames);
+    {
+      std::lock_guard<std::mutex> lock(frames.mutex);
+      ASSERT_FALSE(frames.seen.empty());
+      EXPECT_EQ(frames.seen.front().cause, cause);
+    }
+    RenderOptions same_samples;  // the frame's adaptive refinement, not a fresh render's
+    same_samples.placement = &frame->refined;
+    EXPECT_LE(max_abs_diff(frame->images.specular, render(narrow, same_samples).specular), 1e-5);
+    expect_fresh(*frame, mapped);
+  };
+  expect_narrow(ChangeClass::light);
   for (Material& m : mapped.materials) m.shininess = 32.0f;
   for (Material& m : narrow.materials) m.shininess = 8.0f;
-  const auto edited = converge(engine, mapped, frames);
-  same_samples.placement = &edited->refined;
-  EXPECT_LE(max_abs_diff(edited->images.specular, render(narrow, same_samples).specular), 1e-5);
-  expect_fresh(*edited, mapped);
+  expect_narrow(ChangeClass::environment);
+  for (Material& m : mapped.materials) {
+    m.map(MapSlot::shininess) =
+        test::map_of(test::texture_of(4, 4, 1, [](int, int) { return glm::vec4(0.5f); }), "half");
+  }
+  for (Material& m : narrow.materials) m.shininess = 16.0f;
+  expect_narrow(ChangeClass::texture);
+  engine.set_on_publish(nullptr);
 }
 
 }  // namespace

@@ -81,8 +81,9 @@ TEST(MapLanes, ReadMapLanesGivesReadMapAtEveryLane) {
                 }
                 const glm::vec4 want =
                     read_map(map, filter, glm::vec2(u[i], v[i]), map_level_of_log(map, lf[i]));
+                // Bit for bit: the lanes' taps and blends are read_map's operations in its order.
                 for (int c = 0; c < 4; ++c) {
-                  ASSERT_NEAR(out.texel[c][i], want[c], 2e-6f)
+                  ASSERT_EQ(out.texel[c][i], want[c])
                       << "channels " << channels << " wrap " << to_string(wu) << "/"
                       << to_string(wv) << " filter " << to_string(filter) << " transform "
                       << transform << " lane " << i << " uv " << u[i] << "," << v[i] << " lf "
@@ -150,6 +151,11 @@ TEST(MapLanes, NormalMapLanesGiveMapValuesNormal) {
         f[i].v = random_unit(rng);
         if (glm::dot(f[i].v, f[i].n) < 0.0f) f[i].v = -f[i].v;
         f[i].tangent = kind == 1 ? 2.0f * f[i].n : kind == 2 ? glm::vec3(0.0f) : random_unit(rng);
+        // A random tangent not nearly along n: there Gram-Schmidt loses digits, and the two
+        // forms' rounding (FMA contraction differs) grows by 1 / |t - n (n . t)|.
+        while (kind != 1 && kind != 2 && std::fabs(glm::dot(f[i].tangent, f[i].n)) > 0.95f) {
+          f[i].tangent = random_unit(rng);
+        }
         f[i].handedness = unit(rng) < 0.5f ? -1.0f : 1.0f;
         f[i].side = unit(rng) < 0.3f ? -1.0f : 1.0f;
         const bool flat = i == 5, empty = i == 6;  // (0, 0, 1) and a texel of nothing
@@ -181,7 +187,7 @@ TEST(MapLanes, NormalMapLanesGiveMapValuesNormal) {
         }
         const glm::vec3 got(surfaces.nx[i], surfaces.ny[i], surfaces.nz[i]);
         for (int c = 0; c < 3; ++c) {
-          ASSERT_NEAR(got[c], want[c], 2e-6f) << "variant " << variant << " lane " << i;
+          ASSERT_NEAR(got[c], want[c], 4e-6f) << "variant " << variant << " lane " << i;
         }
       }
     }
@@ -203,8 +209,8 @@ std::shared_ptr<const Mesh> fan(int n, bool two_sets, bool tangents, bool uv = t
       mesh->positions.push_back({x(rng), x(rng), x(rng)});
       if (uv) mesh->uv[0].push_back({x(rng), x(rng)});
       if (uv && two_sets) mesh->uv[1].push_back({x(rng), x(rng)});
-      if (tangents) {
-        mesh->tangents.push_back(glm::vec4(random_unit(rng), k % 2 == 0 ? 1.0f : -1.0f));
+      if (tangents) {  // corners of one triangle with either handedness: the first's counts
+        mesh->tangents.push_back(glm::vec4(random_unit(rng), (k + c) % 2 == 0 ? 1.0f : -1.0f));
       }
     }
     mesh->triangles.push_back({base, base + 1, base + 2});
@@ -270,7 +276,6 @@ TEST(MapLanes, FrameLanesGiveTheMapFramesOfMeshesAndSpheres) {
         const glm::uvec3 t = o.mesh->triangles[packet.prim[i]];
         outward = glm::cross(o.mesh->positions[t.y] - o.mesh->positions[t.x],
                              o.mesh->positions[t.z] - o.mesh->positions[t.x]);
-        if (!o.mesh->textured()) f.uv[0] = f.uv[1] = glm::vec2(0.0f);
       }
       const std::string where = "object " + std::to_string(packet.object[i]) + " lane " +
                                 std::to_string(i) + " round " + std::to_string(round);

@@ -128,7 +128,8 @@ void TotalLanes::store(const std::int32_t* material, float (&rgb)[3 * kLanes],
 }
 
 // The textured lanes: each term times its multipliers before the total is formed, in
-// Recombination::terms' order (the scalar path of combine_terms, which the tests compare). A term
+// Recombination::terms' order (the scalar path of combine_terms; FMA contraction can fuse the
+// products into the sums differently in the two, an ulp apart on some pixels). A term
 // without a map is multiplied by 1 (exact), so the lane loop has no branch and vectorises; one
 // material's constants are scalars, as in store.
 void TotalLanes::store_mapped(const std::int32_t* material, const float* const (&maps)[4][3],

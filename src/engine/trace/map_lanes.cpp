@@ -133,7 +133,7 @@ void map_taps(const TextureMap& map, MapFilter filter, const float* u, const flo
   const float angle = map.rotation * 3.14159265358979323846f / 180.0f;
   const float cr = turned ? std::cos(angle) : 1.0f, sr = turned ? std::sin(angle) : 0.0f;
   const float density = texel_density_log2(texture.width(), texture.height(), su, sv);
-  const float top = static_cast<float>(texture.level_count() - 1);
+  const float top = static_cast<float>(levels - 1);  // all of them: kMaxLevels covers 2^31
   const bool trilinear = filter == MapFilter::trilinear;
 
   alignas(64) float cu[kLanes], cv[kLanes];

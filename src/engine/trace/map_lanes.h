@@ -26,7 +26,8 @@ inline bool lane_filter(MapFilter filter) {
 }
 
 // Where lanes read one level of a map: the level, the texel offsets (row * width + column) of
-// the four texels and the weights of the right column and the bottom row.
+// the four texels and the weights of the right column and the bottom row. 32-bit offsets: a
+// level of at most 2^31 texels (32 GB of RGBA float, far past any memory budget).
 struct LevelTaps {
   alignas(64) std::int32_t level[kLanes];
   alignas(64) std::int32_t t00[kLanes], t10[kLanes], t01[kLanes], t11[kLanes];

@@ -46,7 +46,8 @@ void normal_map_lanes(const Material& material, const TextureMap& map, const Tan
     mx = m_ok != 0 ? mx / m_len : 0.0f;
     my = m_ok != 0 ? my / m_len : 0.0f;
     mz = m_ok != 0 ? mz / m_len : 1.0f;
-    // Unturned (c = 1, s = 0, no mirror) this leaves mx and my exactly as they are; a select on
+    // Unturned (c = 1, s = 0, no mirror) this leaves mx and my equal to what they were (a -0 may
+    // become +0, which only `!=` below sees, and it sees them equal); a select on
     // the loop-invariant `turned` would keep GCC from vectorising the loop.
     const float x = c * mx - s * my, y = s * mx + c * my;
     mx = mirror_x * x;

@@ -2,8 +2,10 @@
 // A normal map's shading normals for the lanes of a packet at once (docs/engine.md, "Maps in
 // lanes"): shading/hit_textures.h normal_map_normal and the horizon rule (facing_viewer) as one
 // loop of selects over the lanes, the same operations in the same order, so each lane's normal
-// is map_values'. Per lane the scalar form's three normalisations, its branches and the
-// Gram-Schmidt step cost more than the map's lookup itself.
+// is map_values' up to rounding (GCC contracts multiplies and adds into FMAs differently in the
+// two forms: components an ulp or a few apart, more where the tangent nearly lies along n and
+// Gram-Schmidt loses digits). Per lane the scalar form's three normalisations, its branches and
+// the Gram-Schmidt step cost more than the map's lookup itself.
 #include <cstdint>
 
 #include "engine/simd/lanes.h"

@@ -28,15 +28,6 @@ glm::vec3 outward(const Object& object, std::uint32_t prim, const glm::vec3& p) 
   return glm::cross(mesh.positions[t.y] - mesh.positions[t.x],
                     mesh.positions[t.z] - mesh.positions[t.x]);
 }
-}  // namespace
-
-void unit_texels(std::size_t channels, TexelLanes& out) {
-  for (std::size_t c = 0; c < channels; ++c) {
-    for (int i = 0; i < kLanes; ++i) out.channel[c][i] = 1.0f;
-  }
-}
-
-namespace {
 
 // The hit's MapFrame (shading/map_frame.h) with the lane's shading normal, view and side.
 MapFrame<float> lane_frame(const SamplePacket& packet, const Object& object,
@@ -98,10 +89,12 @@ void material_lanes(const Material& material, const MapFrameLanes& frames, std::
                     const TexturePlan& plan, const TexelChannels& ch, SurfaceLanes& surfaces,
                     TexelLanes& out) {
   const std::array<TextureMap, kMapSlots>& maps = *material.map_storage;
-  MapTexelLanes texels;
+  MapTexelLanes texels{};  // lanes outside the mask are read (and discarded) by vector loops
   MapTaps taps;
   const TextureMap* tapped = nullptr;  // the map taps were last made for
-  // channels: what the slot uses (a shininess map its first; colour and normal maps three).
+  // channels: what the slot uses (a shininess map its first; colour and normal maps three);
+  // the channels after them keep the previous map's values, so each use below reads only what
+  // its own read filled.
   auto read = [&](MapSlot slot, int channels = 3) -> const TextureMap* {
     const TextureMap& map = maps[static_cast<int>(slot)];
     if (!map.present()) return nullptr;
@@ -144,6 +137,12 @@ void material_lanes(const Material& material, const MapFrameLanes& frames, std::
 }
 
 }  // namespace
+
+void unit_texels(std::size_t channels, TexelLanes& out) {
+  for (std::size_t c = 0; c < channels; ++c) {
+    for (int i = 0; i < kLanes; ++i) out.channel[c][i] = 1.0f;
+  }
+}
 
 void texture_lanes(const SamplePacket& packet, const SampleCache& cache, const RenderContext& ctx,
                    int spp, SurfaceLanes& surfaces, TexelLanes& out) {
