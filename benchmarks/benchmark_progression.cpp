@@ -6,18 +6,15 @@
 #include <cstdint>
 #include <mutex>
 
-#include "base/assets.h"
+#include "benchmark_scene.h"
 #include "engine/progressive_renderer.h"
-#include "io/scene/scene_loader.h"
 
 namespace gloss {
 namespace {
 
 // range(0): 1 = adaptive (registered: aa_ms's case), 0 = uniform (converge_16spp_ms's, slow).
 void BM_CameraChangeTo16spp(benchmark::State& state) {
-  Scene scene = load_scene(asset_path("scenes/cornell-teapot.json"));
-  scene.render.width = 1280;
-  scene.render.height = 720;
+  Scene scene = benchmark_scene_720p();
   scene.render.spp = 16;
   scene.render.sampling = state.range(0) != 0 ? Sampling::adaptive : Sampling::uniform;
   ProgressiveOptions options;

@@ -5,25 +5,19 @@
 
 #include <memory>
 
-#include "analysis/bench/texture_bench.h"
-#include "base/assets.h"
+#include "benchmark_scene.h"
 #include "engine/render_context.h"
 #include "engine/shade/pixel_factors.h"
 #include "engine/trace/embree_scene.h"
 #include "engine/trace/sample_cache.h"
 #include "engine/trace/single_sample_pass.h"
-#include "io/scene/scene_loader.h"
 
 namespace gloss {
 namespace {
 
 // range(0): 1 = with the maps.
 void BM_FirstPass720p(benchmark::State& state) {
-  Scene scene = load_scene(asset_path("scenes/cornell-teapot.json"));
-  scene.render.width = 1280;
-  scene.render.height = 720;
-  scene.render.spp = 1;
-  if (state.range(0) != 0) scene = with_benchmark_maps(scene);
+  const Scene scene = benchmark_scene_720p(state.range(0) != 0);
   const EmbreeScene embree(scene);
   const RenderContext ctx = make_render_context(scene, embree);
   SampleCache cache = make_sample_cache(scene, 1280, 720, 1);
@@ -40,11 +34,7 @@ BENCHMARK(BM_FirstPass720p)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseR
 
 // A kd edit: recombination from the 1-spp cache (range(0): 1 = with the maps).
 void BM_KdEdit720p(benchmark::State& state) {
-  Scene scene = load_scene(asset_path("scenes/cornell-teapot.json"));
-  scene.render.width = 1280;
-  scene.render.height = 720;
-  scene.render.spp = 1;
-  if (state.range(0) != 0) scene = with_benchmark_maps(scene);
+  const Scene scene = benchmark_scene_720p(state.range(0) != 0);
   const EmbreeScene embree(scene);
   SampleCache cache = make_sample_cache(scene, 1280, 720, 1);
   PixelFactors factors;

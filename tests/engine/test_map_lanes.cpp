@@ -20,6 +20,14 @@
 namespace gloss {
 namespace {
 
+// One map at the lanes of mask: its taps, then its four channels.
+void read_map_lanes(const TextureMap& map, MapFilter filter, const float* u, const float* v,
+                    const float* log_footprint, std::uint32_t mask, MapTexelLanes& out) {
+  MapTaps taps;
+  map_taps(map, filter, u, v, log_footprint, mask, taps);
+  read_taps(*map.texture, taps, mask, out, 4);
+}
+
 // A 37 x 20 map (odd level sizes down to 1 x 1) of values that differ at every texel.
 std::shared_ptr<const Texture> odd_map(int channels) {
   return test::texture_of(37, 20, channels, [](int i, int j) {
@@ -114,6 +122,26 @@ TEST(MapLanes, AHalfTexelPointIsTheMeanOfItsTwoTexels) {
   for (int c = 0; c < 4; ++c) {
     const float a = t[(7 * 37 + 3) * 4 + c], b = t[(7 * 37 + 4) * 4 + c];
     EXPECT_NEAR(out.texel[c][0], 0.5f * (a + b), 1e-6f) << "channel " << c;
+  }
+}
+
+// A read of fewer channels writes those alone (a shininess map reads its first).
+TEST(MapLanes, ReadTapsWritesOnlyTheChannelsAsked) {
+  TextureMap map;
+  map.texture = odd_map(4);
+  alignas(64) float u[kLanes], v[kLanes], lf[kLanes];
+  for (int i = 0; i < kLanes; ++i) u[i] = 0.05f * i, v[i] = 0.3f, lf[i] = -3.0f;
+  MapTaps taps;
+  map_taps(map, MapFilter::trilinear, u, v, lf, 0xffffu, taps);
+  MapTexelLanes one, four;
+  for (auto& c : one.texel) {
+    for (float& x : c) x = -7.0f;
+  }
+  read_taps(*map.texture, taps, 0xffffu, one, 1);
+  read_taps(*map.texture, taps, 0xffffu, four, 4);
+  for (int i = 0; i < kLanes; ++i) {
+    EXPECT_EQ(one.texel[0][i], four.texel[0][i]) << "lane " << i;
+    for (int c = 1; c < 4; ++c) EXPECT_EQ(one.texel[c][i], -7.0f) << "lane " << i;
   }
 }
 

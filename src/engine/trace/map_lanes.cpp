@@ -80,10 +80,10 @@ glm::vec4 blend(const Texture& texture, const LevelTaps& taps, int i) {
 }
 
 // The coordinates brought into their wrap's range (a non-finite one reads the first texel), then
-// the taps of both levels.
+// the taps of the level below and, where given (trilinear: some lane may blend it in), above.
 template <Wrap WU, Wrap WV>
 void taps_in_range(float* cu, float* cv, const std::int32_t* widths, const std::int32_t* heights,
-                   LevelTaps& near, LevelTaps& far) {
+                   LevelTaps& near, LevelTaps* far) {
 #pragma omp simd
   for (int i = 0; i < kLanes; ++i) {
     const float a = lane_range<WU>(cu[i]), b = lane_range<WV>(cv[i]);
@@ -91,12 +91,12 @@ void taps_in_range(float* cu, float* cv, const std::int32_t* widths, const std::
     cv[i] = std::isfinite(b) ? b : 0.0f;
   }
   level_taps<WU, WV>(cu, cv, widths, heights, near);
-  level_taps<WU, WV>(cu, cv, widths, heights, far);
+  if (far != nullptr) level_taps<WU, WV>(cu, cv, widths, heights, *far);
 }
 
 template <Wrap WU>
 void taps_for(Wrap wrap_v, float* cu, float* cv, const std::int32_t* widths,
-              const std::int32_t* heights, LevelTaps& near, LevelTaps& far) {
+              const std::int32_t* heights, LevelTaps& near, LevelTaps* far) {
   switch (wrap_v) {
     case Wrap::clamp:
       return taps_in_range<WU, Wrap::clamp>(cu, cv, widths, heights, near, far);
@@ -155,13 +155,15 @@ void map_taps(const TextureMap& map, MapFilter filter, const float* u, const flo
   }
   switch (map.wrap[0]) {
     case Wrap::clamp:
-      taps_for<Wrap::clamp>(map.wrap[1], cu, cv, widths, heights, near, far);
+      taps_for<Wrap::clamp>(map.wrap[1], cu, cv, widths, heights, near, trilinear ? &far : nullptr);
       break;
     case Wrap::mirror:
-      taps_for<Wrap::mirror>(map.wrap[1], cu, cv, widths, heights, near, far);
+      taps_for<Wrap::mirror>(map.wrap[1], cu, cv, widths, heights, near,
+                             trilinear ? &far : nullptr);
       break;
     case Wrap::repeat:
-      taps_for<Wrap::repeat>(map.wrap[1], cu, cv, widths, heights, near, far);
+      taps_for<Wrap::repeat>(map.wrap[1], cu, cv, widths, heights, near,
+                             trilinear ? &far : nullptr);
       break;
   }
 }
@@ -177,13 +179,6 @@ void read_taps(const Texture& texture, const MapTaps& taps, std::uint32_t mask, 
     if (f > 0.0f) t = t * (1.0f - f) + blend(texture, taps.far, i) * f;
     for (int c = 0; c < channels; ++c) out.texel[c][i] = t[c];
   }
-}
-
-void read_map_lanes(const TextureMap& map, MapFilter filter, const float* u, const float* v,
-                    const float* log_footprint, std::uint32_t mask, MapTexelLanes& out) {
-  MapTaps taps;
-  map_taps(map, filter, u, v, log_footprint, mask, taps);
-  read_taps(*map.texture, taps, mask, out, 4);
 }
 
 }  // namespace gloss

@@ -20,7 +20,7 @@ struct MapTexelLanes {
   alignas(64) float texel[4][kLanes];
 };
 
-// Whether read_map_lanes reads with this filter (the nearest-texel knob goes per lane).
+// Whether map_taps and read_taps read with this filter (the nearest-texel knob goes per lane).
 inline bool lane_filter(MapFilter filter) {
   return filter != MapFilter::nearest;
 }
@@ -56,9 +56,5 @@ void map_taps(const TextureMap& map, MapFilter filter, const float* u, const flo
 // first `channels` (1 to 4) channels.
 void read_taps(const Texture& texture, const MapTaps& taps, std::uint32_t mask, MapTexelLanes& out,
                int channels);
-
-// map_taps, then read_taps.
-void read_map_lanes(const TextureMap& map, MapFilter filter, const float* u, const float* v,
-                    const float* log_footprint, std::uint32_t mask, MapTexelLanes& out);
 
 }  // namespace gloss

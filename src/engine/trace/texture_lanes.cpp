@@ -83,7 +83,7 @@ void scalar_lane(const Material& material, const MapFrame<float>& frame, const T
   }
 }
 
-// The lanes of mask (one material, no bump map, a lane filter) through read_map_lanes: the
+// The lanes of mask (one material, no bump map, a lane filter) through map_taps and read_taps: the
 // values map_values gives them.
 void material_lanes(const Material& material, const MapFrameLanes& frames, std::uint32_t mask,
                     const TexturePlan& plan, const TexelChannels& ch, SurfaceLanes& surfaces,
@@ -152,7 +152,7 @@ void texture_lanes(const SamplePacket& packet, const SampleCache& cache, const R
   const float spread = cone_spread(static_cast<float>(scene.camera.fov_y), cache.image_height, spp);
   const TexelChannels ch(plan);
   // Lanes of textured materials: their frames, then the maps of each material in the packet for
-  // all its lanes at once (read_map_lanes), or per lane where a map needs map_values.
+  // all its lanes at once (map_lanes.h), or per lane where a map needs map_values.
   alignas(64) std::int32_t material_of[kLanes];
   std::uint32_t pending = 0;
   std::int32_t last = -1;  // the lanes of a packet mostly share a material: its flags once

@@ -17,9 +17,9 @@
 #include "editor/gl/raster/raster_renderer.h"
 #include "editor/model/export/glsl_export.h"
 #include "io/image/image_io.h"
-#include "io/scene/scene_loader.h"
 #include "reference/reference_renderer.h"
 #include "scene/geometry/tangent_space.h"
+#include "support/maps_scene.h"
 #include "support/test_maps.h"
 
 namespace gloss {
@@ -33,40 +33,14 @@ const Image& term(const TermImages& images, int t) {
 
 // Two spheres, a floor quad and a box, lit by two lights; the maps of `which` on every material.
 Scene mapped_scene(const std::string& which) {
-  Scene scene =
-      parse_scene(R"({"camera": {"eye": [0.4, 1.2, 5.5], "target": [0, -0.2, 0], "fov_y": 42},
-    "background": [0.1, 0.2, 0.3], "ambient": [0.15, 0.15, 0.15],
-    "lights": [{"position": [3, 4, 5], "diffuse": [1, 0.9, 0.8], "specular": [1, 1, 1]},
-               {"type": "directional", "direction": [0.3, -1, -0.4], "diffuse": [0.3, 0.3, 0.5],
-                "specular": [0.3, 0.3, 0.3]}],
-    "materials": {"a": {"ambient": [0.3, 0.2, 0.2], "diffuse": [0.8, 0.6, 0.5],
-                        "specular": [0.6, 0.6, 0.6], "emission": [0.05, 0.02, 0], "shininess": 40},
-                  "b": {"ambient": [0.2, 0.3, 0.2], "diffuse": [0.7, 0.8, 0.7],
-                        "specular": [0.3, 0.3, 0.3], "shininess": 12}},
-    "objects": [
-      {"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "a"},
-      {"type": "sphere", "center": [1.7, -0.4, -0.8], "radius": 0.6, "material": "b"},
-      {"type": "quad", "vertices": [[-5, -1, -5], [5, -1, -5], [5, -1, 5], [-5, -1, 5]],
-       "material": "b"},
-      {"type": "box", "min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5], "position": [-1.9, -0.5, 0.6],
-       "rotate_y": 25, "material": "a"}],
-    "render": {"width": 128, "height": 96, "spp": 1, "shadows": false}})",
-                  "raster-maps-" + which + ".json");
+  Scene scene = test::maps_scene("raster-maps-" + which + ".json");
   for (Material& m : scene.materials) {
     if (which == "diffuse" || which == "bilinear") {
       if (which == "bilinear") scene.render.map_filter = MapFilter::bilinear;
       m.map(MapSlot::diffuse) = test::map_of(test::checker(64, 8), "checker");
       m.map(MapSlot::diffuse).scale = glm::vec2(3.0f, 2.0f);
     } else if (which == "colours") {  // every colour map, wrap modes and a turned map
-      m.map(MapSlot::diffuse) = test::map_of(test::uv_ramp(32), "ramp");
-      m.map(MapSlot::diffuse).wrap = {Wrap::mirror, Wrap::clamp};
-      m.map(MapSlot::diffuse).scale = glm::vec2(2.5f, 1.7f);
-      m.map(MapSlot::diffuse).offset = glm::vec2(-0.3f, 0.2f);
-      m.map(MapSlot::ambient) = test::map_of(test::checker(16, 4), "checker");
-      m.map(MapSlot::specular) = test::map_of(test::uv_ramp(8), "ramp");
-      m.map(MapSlot::specular).rotation = 30.0f;
-      m.map(MapSlot::emission) = test::map_of(test::checker(32, 2), "checker");
-      m.map(MapSlot::shininess) = test::map_of(test::bumps(32), "bumps");
+      test::put_colour_maps(m);
     } else if (which == "normal") {
       m.map(MapSlot::normal) = test::map_of(test::ripples(64, 0.6f), "ripples");
       m.normal_scale = 1.5f;
