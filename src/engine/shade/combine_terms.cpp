@@ -104,12 +104,6 @@ void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermIm
       texel[t][c] = factors.texel[static_cast<std::size_t>(channel[t] + c)];
     }
   }
-  auto texel_terms = [&](std::size_t i, glm::vec3 term[4]) {
-    for (int t = 0; t < 4; ++t) {
-      if (texel[t][0] == nullptr) continue;
-      term[t] *= glm::vec3(texel[t][0][i], texel[t][1][i], texel[t][2][i]);
-    }
-  };
   // The pixel loop, instantiated per (one sample, term images, maps) so it holds no such
   // branches. kMaps: 0 none, 1 texel channels (one sample), 2 textured records.
   auto pixels_loop = [&](auto single_tag, auto terms_tag, auto maps_tag, std::size_t begin,
@@ -117,22 +111,35 @@ void combine_terms(const PixelFactors& factors, const RenderContext& ctx, TermIm
     constexpr bool kSingle = decltype(single_tag)::value;  // weight, background from material
     constexpr bool kTerms = decltype(terms_tag)::value;
     constexpr int kMaps = decltype(maps_tag)::value;
+    // Locals, not the captured arrays: the stores to the images may alias any float, and GCC
+    // otherwise reloads every pointer per pixel.
+    const float* tx[4][3];
+    for (int t = 0; t < 4; ++t) {
+      for (int c = 0; c < 3; ++c) tx[t][c] = texel[t][c];
+    }
+    const std::int32_t* const material = factors.material.data();
+    const float* const diffuse = factors.diffuse.data();
+    const float* const specular = factors.specular.data();
+    glm::vec3* const total = out.total.pixels.data();
     for (std::size_t i = begin; i != end; ++i) {
       glm::vec3 term[4] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
-      const std::int32_t m = factors.material[i];
+      const std::int32_t m = material[i];
       const float weight = kSingle ? 1.0f : factors.weight[i];
       const float missed = kSingle ? (m < 0 ? 1.0f : 0.0f) : factors.background[i];
       if (m >= 0) {
         if constexpr (kMaps == 2) {
           recombination.textured_terms(m, &factors.textured[i * factors.textured_stride], term);
         } else {
-          recombination.terms(m, weight, factors.diffuse.data() + i, factors.specular.data() + i,
-                              pixels, term);
-          if constexpr (kMaps == 1) texel_terms(i, term);
+          recombination.terms(m, weight, diffuse + i, specular + i, pixels, term);
+          if constexpr (kMaps == 1) {
+            for (int t = 0; t < 4; ++t) {
+              if (tx[t][0] != nullptr) term[t] *= glm::vec3(tx[t][0][i], tx[t][1][i], tx[t][2][i]);
+            }
+          }
         }
       }
-      out.total.pixels[i] = sky ? recombination.total_under_sky(term, factors.sky[i])
-                                : recombination.total(term, missed);
+      total[i] = sky ? recombination.total_under_sky(term, factors.sky[i])
+                     : recombination.total(term, missed);
       if constexpr (kTerms) {
         out.emissive.pixels[i] = term[0];
         out.ambient.pixels[i] = term[1];
