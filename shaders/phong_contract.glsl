@@ -27,6 +27,21 @@
 //   float gloss_visibility(int light, vec3 p, vec3 n_g)   vis: 1 lit, 0 shadowed
 //   GLOSS_ENVIRONMENT                  a #define, 1 with an environment light (environment.glsl
 //                                      included before this file and its inputs defined)
+// and it may define GLOSS_POINT_LIGHTS, GLOSS_DIRECTIONAL_LIGHTS and GLOSS_SPOT_LIGHTS (0 or 1,
+// 1 when left undefined) to leave out the code of light types it has no light of.
+
+// Which light types the program handles: a raster program defines these three from its scene's
+// lights (raster_programs.h), an exported shader leaves them undefined (all three). A branch on
+// a uniform costs both its sides on llvmpipe, so a type no light has would cost every fragment.
+#ifndef GLOSS_POINT_LIGHTS
+#define GLOSS_POINT_LIGHTS 1
+#endif
+#ifndef GLOSS_DIRECTIONAL_LIGHTS
+#define GLOSS_DIRECTIONAL_LIGHTS 1
+#endif
+#ifndef GLOSS_SPOT_LIGHTS
+#define GLOSS_SPOT_LIGHTS 1
+#endif
 
 #define GLOSS_PHONG 0
 #define GLOSS_BLINN_PHONG 1
@@ -120,20 +135,31 @@ float gloss_spot_factor(vec3 l, vec3 s, vec4 cone) {
 #if GLOSS_LIGHT_COUNT > 0
 // Light i of any type at p (light_source.h, source_factors): a point light as above; a
 // directional light from l = -D everywhere with att = 1; a spot as a point light times the
-// spot factor.
+// spot factor. Only the types the program declares (GLOSS_*_LIGHTS) are compiled in.
 GlossLightFactors gloss_light(int i, vec3 p, vec3 n, vec3 v, float vis) {
   vec4 cone = gloss_light_cone[i];
   int type = int(cone.x + 0.5);
-  if (type == GLOSS_DIRECTIONAL) {
+#if GLOSS_DIRECTIONAL_LIGHTS
+#if GLOSS_POINT_LIGHTS || GLOSS_SPOT_LIGHTS
+  if (type == GLOSS_DIRECTIONAL)
+#endif
+  {
     return gloss_factors_along(n, v, -gloss_light_direction[i], 1.0, vis);
   }
+#endif
+#if GLOSS_POINT_LIGHTS || GLOSS_SPOT_LIGHTS
   vec3 to_light = gloss_light_position[i] - p;
   float d = length(to_light);
   if (!(d > 0.0)) return GlossLightFactors(0.0, 0.0, 0.0, 0.0);  // a light on the surface
   vec3 l = to_light / d;
   float att = gloss_attenuation(gloss_light_attenuation[i], d);
+#if GLOSS_SPOT_LIGHTS && GLOSS_POINT_LIGHTS
   if (type == GLOSS_SPOT) att *= gloss_spot_factor(l, gloss_light_direction[i], cone);
+#elif GLOSS_SPOT_LIGHTS
+  att *= gloss_spot_factor(l, gloss_light_direction[i], cone);
+#endif
   return gloss_factors_along(n, v, l, att, vis);
+#endif
 }
 #endif
 

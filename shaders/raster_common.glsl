@@ -123,6 +123,20 @@ int gloss_cube_face(vec3 d, out vec2 right_up, out float major) {
 #define GLOSS_SHADOW_PERSPECTIVE 1
 #define GLOSS_SHADOW_ORTHOGRAPHIC 2
 
+// Which kinds of shadow map the program looks up: a raster program defines these from its
+// lights' maps (raster_programs.h); undefined, all three. As with the light types
+// (phong_contract.glsl), a kind no light has would cost every fragment on llvmpipe.
+#ifndef GLOSS_SHADOW_CUBE_MAPS
+#define GLOSS_SHADOW_CUBE_MAPS 1
+#endif
+#ifndef GLOSS_SHADOW_PERSPECTIVE_MAPS
+#define GLOSS_SHADOW_PERSPECTIVE_MAPS 1
+#endif
+#ifndef GLOSS_SHADOW_ORTHOGRAPHIC_MAPS
+#define GLOSS_SHADOW_ORTHOGRAPHIC_MAPS 1
+#endif
+#define GLOSS_SHADOW_SINGLE_MAPS (GLOSS_SHADOW_PERSPECTIVE_MAPS || GLOSS_SHADOW_ORTHOGRAPHIC_MAPS)
+
 #if GLOSS_SHADOWS && GLOSS_LIGHT_COUNT > 0
 // The layers of light i's maps (shadow_maps.h): six cube faces from gloss_shadow_layout[i].x
 // for a point light and a spot wider than 60 degrees, or one map: a spot's square frustum along
@@ -151,7 +165,13 @@ float gloss_visibility(int light, vec3 p, vec3 n_g) {
   int layer = layout_i.x;
   float dist, texel;
   vec3 towards;  // from the light to p, unit (the slope of the bias)
+  // Only the kinds the program declares are compiled in (GLOSS_SHADOW_*_MAPS, above).
+#if GLOSS_SHADOW_CUBE_MAPS
+#if GLOSS_SHADOW_SINGLE_MAPS
   if (kind == GLOSS_SHADOW_CUBE) {
+#else
+  {
+#endif
     vec3 d = p - gloss_light_position[light];
     dist = length(d);
     // d = 0 (a light on the surface) has no direction to look up: lit, as the ray tracer's
@@ -163,17 +183,34 @@ float gloss_visibility(int light, vec3 p, vec3 n_g) {
     uv = right_up / major * 0.5 + 0.5;
     texel = 2.0 * dist / gloss_shadow_size;
     towards = d / dist;
-  } else {
+  }
+#endif
+#if GLOSS_SHADOW_CUBE_MAPS && GLOSS_SHADOW_SINGLE_MAPS
+  else
+#endif
+#if GLOSS_SHADOW_SINGLE_MAPS
+  {
     vec3 d = p - gloss_shadow_origin[light];
     float w = dot(d, gloss_shadow_forward[light]);
     vec2 across = vec2(dot(d, gloss_shadow_right[light]), dot(d, gloss_shadow_up[light]));
     vec2 scale = gloss_shadow_scale[light];
+#if GLOSS_SHADOW_ORTHOGRAPHIC_MAPS && GLOSS_SHADOW_PERSPECTIVE_MAPS
     if (kind == GLOSS_SHADOW_ORTHOGRAPHIC) {
+#elif GLOSS_SHADOW_ORTHOGRAPHIC_MAPS
+    {
+#endif
+#if GLOSS_SHADOW_ORTHOGRAPHIC_MAPS
       uv = across / scale * 0.5 + 0.5;
       dist = w;
       texel = 2.0 * max(scale.x, scale.y) / gloss_shadow_size;
       towards = gloss_shadow_forward[light];
-    } else {
+    }
+#endif
+#if GLOSS_SHADOW_ORTHOGRAPHIC_MAPS && GLOSS_SHADOW_PERSPECTIVE_MAPS
+    else
+#endif
+#if GLOSS_SHADOW_PERSPECTIVE_MAPS
+    {
       // Behind the spot or outside its frustum the spot factor is 0 (nothing to shadow).
       if (!(w > 0.0)) return 1.0;
       uv = across / (w * scale) * 0.5 + 0.5;
@@ -181,8 +218,10 @@ float gloss_visibility(int light, vec3 p, vec3 n_g) {
       texel = 2.0 * w * max(scale.x, scale.y) / gloss_shadow_size;
       towards = d / dist;
     }
+#endif
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
   }
+#endif
   int size = int(gloss_shadow_size);
   ivec2 at = clamp(ivec2(floor(uv * gloss_shadow_size)), ivec2(0), ivec2(size - 1));
   // The pass drew with y negated (gloss_project): row 0 is the map's top.

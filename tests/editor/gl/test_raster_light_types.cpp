@@ -168,6 +168,35 @@ TEST_F(RasterLightTypes, ShadowMapDifferencesLieOnEdges) {
   }
 }
 
+// Each program holds only the code of the light types and shadow-map kinds its scene has
+// (raster_programs.h): every mix of types, with and without shadows, still agrees with the
+// reference (a type left out where a light needs it would shade that light as another type).
+TEST_F(RasterLightTypes, EveryMixOfTypesAgrees) {
+  RasterRenderer renderer;
+  Scene full = typed_scene(false, kHardSpot);
+  Light point;
+  point.position = glm::vec3(-1.5f, 3.0f, 2.5f);
+  point.diffuse = glm::vec3(0.5f, 0.5f, 0.4f);
+  point.specular = glm::vec3(0.6f);
+  full.lights.push_back(point);
+  for (int types = 1; types < 8; ++types) {
+    Scene scene = full;
+    scene.lights.clear();
+    for (const Light& light : full.lights) {
+      if ((types >> static_cast<int>(light.type)) & 1) scene.lights.push_back(light);
+    }
+    const std::string label = "types " + std::to_string(types);
+    for (ShadingFrequency f : {ShadingFrequency::pixel, ShadingFrequency::vertex}) {
+      EXPECT_TRUE(agrees(raster_agreement(renderer, scene, label, f), 1)) << label;
+    }
+    // With shadows the maps' kinds vary too (cube, perspective, orthographic): lit pixels agree.
+    scene.render.shadows = true;
+    const test::Agreement a =
+        raster_agreement(renderer, scene, label + " shadows", ShadingFrequency::pixel);
+    EXPECT_GT(a.share[0], 0.97) << label;
+  }
+}
+
 using test::with_planted_error;
 
 TEST_F(RasterLightTypes, PlantedErrorsFail) {

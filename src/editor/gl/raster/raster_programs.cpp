@@ -42,6 +42,15 @@ std::string RasterPrograms::source(const RasterVariant& v, GLenum stage) {
       std::string("#define GLOSS_PER_VERTEX ") + (v.pass == RasterPass::vertex ? "1" : "0") + "\n";
   text += std::string("#define GLOSS_ENVIRONMENT ") + (v.environment ? "1" : "0") + "\n";
   text += std::string("#define GLOSS_MAPS ") + (v.maps ? "1" : "0") + "\n";
+  const auto flag = [&](const char* name, int mask, int bit) {
+    text += std::string("#define ") + name + ((mask >> bit) & 1 ? " 1\n" : " 0\n");
+  };
+  flag("GLOSS_POINT_LIGHTS", v.light_types, 0);
+  flag("GLOSS_DIRECTIONAL_LIGHTS", v.light_types, 1);
+  flag("GLOSS_SPOT_LIGHTS", v.light_types, 2);
+  flag("GLOSS_SHADOW_CUBE_MAPS", v.shadow_kinds, 0);
+  flag("GLOSS_SHADOW_PERSPECTIVE_MAPS", v.shadow_kinds, 1);
+  flag("GLOSS_SHADOW_ORTHOGRAPHIC_MAPS", v.shadow_kinds, 2);
   if (v.pass == RasterPass::shadow) text += "#define GLOSS_SHADOW_PASS 1\n";
   text += kRasterCommonGlsl;
   text += kEnvironmentGlsl;

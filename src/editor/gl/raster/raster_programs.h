@@ -25,9 +25,16 @@ struct RasterVariant {
   bool shadows = false;      // GLOSS_SHADOWS: the shading passes look up the shadow maps
   bool environment = false;  // GLOSS_ENVIRONMENT: the environment's fast path (environment.glsl)
   bool maps = false;         // GLOSS_MAPS: the material has maps (shaders/texture_lookup.glsl)
+  // Bit t set: the program handles lights of LightType t (GLOSS_POINT_LIGHTS,
+  // GLOSS_DIRECTIONAL_LIGHTS, GLOSS_SPOT_LIGHTS), and shadow maps of LightShadow::Kind k
+  // (GLOSS_SHADOW_CUBE_MAPS, ..._PERSPECTIVE_MAPS, ..._ORTHOGRAPHIC_MAPS). The code for the
+  // others is left out: llvmpipe pays for both sides of a branch on a uniform. All by default.
+  int light_types = 7;
+  int shadow_kinds = 7;
   bool operator<(const RasterVariant& o) const {
-    return std::tie(shape, pass, light_count, shadows, environment, maps) <
-           std::tie(o.shape, o.pass, o.light_count, o.shadows, o.environment, o.maps);
+    return std::tie(shape, pass, light_count, shadows, environment, maps, light_types,
+                    shadow_kinds) < std::tie(o.shape, o.pass, o.light_count, o.shadows,
+                                             o.environment, o.maps, o.light_types, o.shadow_kinds);
   }
 };
 

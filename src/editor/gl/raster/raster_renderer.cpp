@@ -242,6 +242,12 @@ struct RasterRenderer::Impl {
     glFrontFace(left_handed ? GL_CCW : GL_CW);
     // The ray cone of one pixel at unit distance (texture/footprint.h), for the maps.
     const float spread = cone_spread(scene.camera.fov_y, scene.render.height, 1);
+    // The light types and shadow-map kinds present, so each program holds only their code.
+    int light_types = 0, shadow_kinds = 0;
+    for (const Light& light : scene.lights) light_types |= 1 << static_cast<int>(light.type);
+    if (shadows) {
+      for (const LightShadow& l : this->shadows.lights()) shadow_kinds |= 1 << l.kind;
+    }
     for (const Object* object : draw_order(scene, boxes, view)) {
       const Object& o = *object;
       const bool sphere = o.type == ObjectType::sphere;
@@ -254,6 +260,8 @@ struct RasterRenderer::Impl {
       RasterVariant variant{sphere ? RasterShape::sphere : RasterShape::mesh, own, lights, shadows,
                             with_environment && pass != RasterPass::shadow};
       variant.maps = with_maps;
+      variant.light_types = light_types;
+      variant.shadow_kinds = shadow_kinds;
       const GLuint program = programs.get(variant);
       if (program != current) {
         glUseProgram(program);
