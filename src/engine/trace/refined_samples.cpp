@@ -21,59 +21,88 @@ SamplePacket entry_packet(std::size_t e0, std::size_t e1) {
   return SamplePacket(static_cast<int>(e0), 0, static_cast<int>(e1), 1);
 }
 
-// Directions of the packet's entries: sample (entry mod spp) of pixel pixels[entry / spp].
-void entry_directions(SamplePacket& packet, const SampleCache& cache,
-                      const SamplePattern& pattern) {
-  const RefinedSamples& refined = cache.refined;
-  // Lane pixels and strata by increments (no division per lane; stride < count); masked-off
-  // lanes repeat the last entry, a finite direction nobody reads.
-  alignas(64) int lane_x[kLanes], lane_row[kLanes], lane_stratum[kLanes];
-  std::size_t k = static_cast<std::size_t>(packet.x0 / refined.spp);
-  int s = packet.x0 % refined.spp;
-  int stratum = sample_stratum(pattern, s);
-  int x = 0, row = 0;
-  std::size_t pixel_of_xy = SIZE_MAX;
-  for (int i = 0; i < kLanes; ++i) {
-    if (k != pixel_of_xy) {
-      const std::uint32_t pixel = refined.pixels[k];
-      x = static_cast<int>(pixel % static_cast<std::uint32_t>(cache.width));
-      row = static_cast<int>(pixel / static_cast<std::uint32_t>(cache.width)) + cache.row0;
-      pixel_of_xy = k;
-    }
-    lane_x[i] = x;
-    lane_row[i] = row;
-    lane_stratum[i] = stratum;
-    if (packet.x0 + i + 1 >= packet.x1) continue;
-    stratum += pattern.stride;  // sample_stratum of s + 1
-    if (stratum >= pattern.count) stratum -= pattern.count;
-    if (++s == refined.spp) {
-      s = 0;
-      stratum = 0;
-      ++k;
-    }
-  }
-  SampleOffset offset[kLanes];
-  sample_offsets(pattern, lane_stratum, lane_x, lane_row, kLanes, offset);
-  alignas(64) double px[kLanes], py[kLanes];
-  for (int i = 0; i < kLanes; ++i) {
-    px[i] = static_cast<double>(lane_x[i]) + static_cast<double>(offset[i].dx);
-    py[i] = static_cast<double>(lane_row[i]) + static_cast<double>(offset[i].dy);
-  }
-  packet_directions_at(packet, cache, px, py);
-}
+// The entries of up to kPacketsPerChunk packets, [begin, end) each (at most kLanes).
+struct EntryRange {
+  std::size_t begin, end;
+};
 
-// Runs f(packet) -> rays over the refined entries' packets on oneTBB workers; adds the rays to
-// ctx.rays. false when cancelled.
+// The pixel positions of the samples of a chunk's packets: packet k's lane i at k * kLanes + i
+// (a masked-off lane repeats its packet's last entry: a point inside the image nobody reads).
+// Sample (entry mod spp) of pixel pixels[entry / spp]. The offsets' hash is a chain of ten
+// dependent multiplies: made one packet at a time it waited on that chain (12 % of the refined
+// trace on the benchmark scene); over a whole chunk the lanes' chains overlap.
+struct ChunkPositions {
+  alignas(64) double x[kPacketsPerChunk * kLanes], y[kPacketsPerChunk * kLanes];
+
+  ChunkPositions(const SampleCache& cache, const SamplePattern& pattern, const EntryRange* packets,
+                 int n) {
+    const RefinedSamples& refined = cache.refined;
+    alignas(64) int lane_x[kPacketsPerChunk * kLanes], lane_row[kPacketsPerChunk * kLanes],
+        lane_stratum[kPacketsPerChunk * kLanes];
+    for (int p = 0; p < n; ++p) {
+      // Pixels and strata by increments (no division per lane; stride < count).
+      const EntryRange& range = packets[p];
+      std::size_t k = range.begin / static_cast<std::size_t>(refined.spp);
+      int s = static_cast<int>(range.begin % static_cast<std::size_t>(refined.spp));
+      int stratum = sample_stratum(pattern, s);
+      int x = 0, row = 0;
+      std::size_t pixel_of_xy = SIZE_MAX;
+      for (int i = 0; i < kLanes; ++i) {
+        if (k != pixel_of_xy) {
+          const std::uint32_t pixel = refined.pixels[k];
+          x = static_cast<int>(pixel % static_cast<std::uint32_t>(cache.width));
+          row = static_cast<int>(pixel / static_cast<std::uint32_t>(cache.width)) + cache.row0;
+          pixel_of_xy = k;
+        }
+        const int lane = p * kLanes + i;
+        lane_x[lane] = x;
+        lane_row[lane] = row;
+        lane_stratum[lane] = stratum;
+        if (range.begin + static_cast<std::size_t>(i) + 1 >= range.end) continue;
+        stratum += pattern.stride;  // sample_stratum of s + 1
+        if (stratum >= pattern.count) stratum -= pattern.count;
+        if (++s == refined.spp) {
+          s = 0;
+          stratum = 0;
+          ++k;
+        }
+      }
+    }
+    const int lanes = n * kLanes;
+    SampleOffset offset[kPacketsPerChunk * kLanes];
+    sample_offsets(pattern, lane_stratum, lane_x, lane_row, lanes, offset);
+    for (int i = 0; i < lanes; ++i) {
+      x[i] = static_cast<double>(lane_x[i]) + static_cast<double>(offset[i].dx);
+      y[i] = static_cast<double>(lane_row[i]) + static_cast<double>(offset[i].dy);
+    }
+  }
+
+  // Packet k's directions.
+  void directions(SamplePacket& packet, const SampleCache& cache, int k) const {
+    packet_directions_at(packet, cache, x + k * kLanes, y + k * kLanes);
+  }
+};
+
+// Runs f(packet) -> rays over the refined entries' packets, their directions set, on oneTBB
+// workers; adds the rays to ctx.rays. false when cancelled.
 template <class F>
 bool for_each_entry_packet(const SampleCache& cache, const RenderContext& ctx, F&& f) {
   const std::size_t entries = cache.refined.entries();
   const std::size_t per_chunk = static_cast<std::size_t>(kPacketsPerChunk) * kLanes;
   const int chunks = static_cast<int>((entries + per_chunk - 1) / per_chunk);
+  const SamplePattern pattern = make_sample_pattern(cache.seed, cache.refined.spp);
   return parallel_chunks(chunks, ctx.cancel, [&](int chunk) {
     long long rays = 0;
     const std::size_t end = std::min(entries, (static_cast<std::size_t>(chunk) + 1) * per_chunk);
+    EntryRange packets[kPacketsPerChunk] = {};
+    int n = 0;
     for (std::size_t e = static_cast<std::size_t>(chunk) * per_chunk; e < end; e += kLanes) {
-      SamplePacket packet = entry_packet(e, std::min(e + kLanes, end));
+      packets[n++] = {e, std::min(e + kLanes, end)};
+    }
+    const ChunkPositions positions(cache, pattern, packets, n);
+    for (int k = 0; k < n; ++k) {
+      SamplePacket packet = entry_packet(packets[k].begin, packets[k].end);
+      positions.directions(packet, cache, k);
       rays += f(packet);
     }
     finish_streaming_stores();
@@ -90,10 +119,8 @@ bool trace_refined_samples(SampleCache& cache, const RenderContext& ctx,
   refined.spp = spp;
   refined.pixels = std::move(pixels);
   size_plane(refined.plane, refined.entries(), ctx.plan.plane_shape());
-  const SamplePattern pattern = make_sample_pattern(cache.seed, spp);
   const int width = static_cast<int>(refined.entries());
   const bool done = for_each_entry_packet(cache, ctx, [&](SamplePacket& packet) {
-    entry_directions(packet, cache, pattern);
     const long long rays = trace_primary(packet, cache, ctx);
     store_hits(packet, width, refined.plane);
     return rays + shade_sample(packet, cache, ctx, refined.plane, no_consumer);
@@ -202,24 +229,30 @@ bool update_refined_samples(SampleCache& cache, const RenderContext& ctx,
   // The directions read the new placement: cache.refined is swapped for the duration (and back
   // on cancellation).
   std::swap(cache.refined, next);
-  const bool done = copied && parallel_chunks(chunks, ctx.cancel, [&](int chunk) {
-                      long long rays = 0;
-                      const std::size_t p0 = static_cast<std::size_t>(chunk) * kPacketsPerChunk;
-                      const std::size_t p1 = std::min(packets.size(), p0 + kPacketsPerChunk);
-                      for (std::size_t p = p0; p < p1; ++p) {
-                        SamplePacket packet = entry_packet(packets[p].begin, packets[p].end);
-                        entry_directions(packet, cache, pattern);
-                        if (packets[p].traced) {
-                          rays += trace_primary(packet, cache, ctx);
-                          store_hits(packet, width, cache.refined.plane);
-                        } else {
-                          load_hits(packet, width, cache.refined.plane);
-                        }
-                        rays += shade_sample(packet, cache, ctx, cache.refined.plane, no_consumer);
-                      }
-                      finish_streaming_stores();
-                      if (ctx.rays != nullptr) ctx.rays->fetch_add(rays, std::memory_order_relaxed);
-                    });
+  const bool done =
+      copied && parallel_chunks(chunks, ctx.cancel, [&](int chunk) {
+        long long rays = 0;
+        const std::size_t p0 = static_cast<std::size_t>(chunk) * kPacketsPerChunk;
+        const std::size_t p1 = std::min(packets.size(), p0 + kPacketsPerChunk);
+        EntryRange ranges[kPacketsPerChunk] = {};
+        for (std::size_t p = p0; p < p1; ++p) {
+          ranges[p - p0] = {packets[p].begin, packets[p].end};
+        }
+        const ChunkPositions positions(cache, pattern, ranges, static_cast<int>(p1 - p0));
+        for (std::size_t p = p0; p < p1; ++p) {
+          SamplePacket packet = entry_packet(packets[p].begin, packets[p].end);
+          positions.directions(packet, cache, static_cast<int>(p - p0));
+          if (packets[p].traced) {
+            rays += trace_primary(packet, cache, ctx);
+            store_hits(packet, width, cache.refined.plane);
+          } else {
+            load_hits(packet, width, cache.refined.plane);
+          }
+          rays += shade_sample(packet, cache, ctx, cache.refined.plane, no_consumer);
+        }
+        finish_streaming_stores();
+        if (ctx.rays != nullptr) ctx.rays->fetch_add(rays, std::memory_order_relaxed);
+      });
   if (!done) std::swap(cache.refined, next);  // the old placement, as it was
   spare = std::move(next.plane);              // the memory of whichever plane is not in use
   return done;
@@ -229,10 +262,8 @@ bool recompute_refined_light_factors(SampleCache& cache, const RenderContext& ct
   RefinedSamples& refined = cache.refined;
   if (refined.spp == 0) return true;
   size_plane(refined.plane, refined.entries(), ctx.plan.plane_shape());
-  const SamplePattern pattern = make_sample_pattern(cache.seed, refined.spp);
   const int width = static_cast<int>(refined.entries());
   return for_each_entry_packet(cache, ctx, [&](SamplePacket& packet) {
-    entry_directions(packet, cache, pattern);
     load_hits(packet, width, refined.plane);
     return shade_sample(packet, cache, ctx, refined.plane, no_consumer);
   });
@@ -242,10 +273,8 @@ bool visit_refined_samples(const SampleCache& cache, const RenderContext& ctx,
                            const std::function<long long(SamplePacket&)>& visit) {
   const RefinedSamples& refined = cache.refined;
   if (refined.spp == 0) return true;
-  const SamplePattern pattern = make_sample_pattern(cache.seed, refined.spp);
   const int width = static_cast<int>(refined.entries());
   return for_each_entry_packet(cache, ctx, [&](SamplePacket& packet) {
-    entry_directions(packet, cache, pattern);
     load_hits(packet, width, refined.plane);
     return visit(packet);
   });
