@@ -3,6 +3,22 @@
 // shadow-map visibility. Placed after the program's #version and #defines, before the contract.
 // The program defines GLOSS_LIGHT_COUNT (0 allowed) and GLOSS_SHADOWS (0 or 1).
 
+// Which kinds of shadow map the program looks up (a shading pass) or draws (a shadow pass: the
+// orthographic kind, or the two perspective ones): a raster program defines these
+// (raster_programs.h); undefined, all three. As with the light types (phong_contract.glsl), a
+// kind the pass has no map of would cost every fragment on llvmpipe, which evaluates both sides
+// of a branch on a uniform (a shadow pass's distance: 3 to 5 ms of a light drag's 6 cube faces).
+#ifndef GLOSS_SHADOW_CUBE_MAPS
+#define GLOSS_SHADOW_CUBE_MAPS 1
+#endif
+#ifndef GLOSS_SHADOW_PERSPECTIVE_MAPS
+#define GLOSS_SHADOW_PERSPECTIVE_MAPS 1
+#endif
+#ifndef GLOSS_SHADOW_ORTHOGRAPHIC_MAPS
+#define GLOSS_SHADOW_ORTHOGRAPHIC_MAPS 1
+#endif
+#define GLOSS_SHADOW_SINGLE_MAPS (GLOSS_SHADOW_PERSPECTIVE_MAPS || GLOSS_SHADOW_ORTHOGRAPHIC_MAPS)
+
 // The contract's inputs (phong_contract.glsl, header), set per object and per frame.
 uniform vec3 gloss_ka, gloss_kd, gloss_ks, gloss_ke;
 uniform float gloss_alpha;
@@ -71,7 +87,13 @@ vec4 gloss_project(vec3 p) {
 // one (a directional light).
 float gloss_view_distance(vec3 p) {
   vec3 d = p - gloss_view_origin;
+#if !GLOSS_SHADOW_ORTHOGRAPHIC_MAPS
+  return length(d);
+#elif !(GLOSS_SHADOW_CUBE_MAPS || GLOSS_SHADOW_PERSPECTIVE_MAPS)
+  return dot(d, gloss_view_forward);
+#else
   return gloss_view_ortho ? dot(d, gloss_view_forward) : length(d);
+#endif
 }
 
 // Window depth (glDepthRange 0..1) of world point p: what gloss_project gives it after the
@@ -122,20 +144,6 @@ int gloss_cube_face(vec3 d, out vec2 right_up, out float major) {
 #define GLOSS_SHADOW_CUBE 0
 #define GLOSS_SHADOW_PERSPECTIVE 1
 #define GLOSS_SHADOW_ORTHOGRAPHIC 2
-
-// Which kinds of shadow map the program looks up: a raster program defines these from its
-// lights' maps (raster_programs.h); undefined, all three. As with the light types
-// (phong_contract.glsl), a kind no light has would cost every fragment on llvmpipe.
-#ifndef GLOSS_SHADOW_CUBE_MAPS
-#define GLOSS_SHADOW_CUBE_MAPS 1
-#endif
-#ifndef GLOSS_SHADOW_PERSPECTIVE_MAPS
-#define GLOSS_SHADOW_PERSPECTIVE_MAPS 1
-#endif
-#ifndef GLOSS_SHADOW_ORTHOGRAPHIC_MAPS
-#define GLOSS_SHADOW_ORTHOGRAPHIC_MAPS 1
-#endif
-#define GLOSS_SHADOW_SINGLE_MAPS (GLOSS_SHADOW_PERSPECTIVE_MAPS || GLOSS_SHADOW_ORTHOGRAPHIC_MAPS)
 
 #if GLOSS_SHADOWS && GLOSS_LIGHT_COUNT > 0
 // The layers of light i's maps (shadow_maps.h): six cube faces from gloss_shadow_layout[i].x

@@ -40,12 +40,18 @@ layout(location = 0) out float gloss_distance;
 void main() {
   // From the light through the fragment; orthographic: along the light's way from where the
   // fragment's parallel ray crosses the view's front plane.
+  // (Only the kinds of view the pass draws: raster_common.glsl, GLOSS_SHADOW_*_MAPS.)
   vec3 o = gloss_view_origin;
   vec3 d = normalize(gloss_position - gloss_view_origin);
-  if (gloss_view_ortho) {
+#if GLOSS_SHADOW_ORTHOGRAPHIC_MAPS
+#if GLOSS_SHADOW_CUBE_MAPS || GLOSS_SHADOW_PERSPECTIVE_MAPS
+  if (gloss_view_ortho)
+#endif
+  {
     d = gloss_view_forward;
     o = gloss_position - dot(gloss_position - gloss_view_origin, d) * d;
   }
+#endif
   float t = gloss_sphere_surface_t(o, d);
   if (t < 0.0) discard;
   gl_FragDepth = gloss_window_depth(o + t * d);

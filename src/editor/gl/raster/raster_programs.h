@@ -27,8 +27,9 @@ struct RasterVariant {
   bool maps = false;         // GLOSS_MAPS: the material has maps (shaders/texture_lookup.glsl)
   // Bit t set: the program handles lights of LightType t (GLOSS_POINT_LIGHTS,
   // GLOSS_DIRECTIONAL_LIGHTS, GLOSS_SPOT_LIGHTS), and shadow maps of LightShadow::Kind k
-  // (GLOSS_SHADOW_CUBE_MAPS, ..._PERSPECTIVE_MAPS, ..._ORTHOGRAPHIC_MAPS). The code for the
-  // others is left out: llvmpipe pays for both sides of a branch on a uniform. All by default.
+  // (GLOSS_SHADOW_CUBE_MAPS, ..._PERSPECTIVE_MAPS, ..._ORTHOGRAPHIC_MAPS): those it looks up
+  // in a shading pass, the kind of view it draws in a shadow pass. The code for the others is
+  // left out: llvmpipe pays for both sides of a branch on a uniform. All by default.
   int light_types = 7;
   int shadow_kinds = 7;
   bool operator<(const RasterVariant& o) const {

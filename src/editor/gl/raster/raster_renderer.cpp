@@ -261,7 +261,11 @@ struct RasterRenderer::Impl {
                             with_environment && pass != RasterPass::shadow};
       variant.maps = with_maps;
       variant.light_types = light_types;
-      variant.shadow_kinds = shadow_kinds;
+      // A shadow pass draws one kind of view: orthographic, or perspective (cubes, spots).
+      variant.shadow_kinds = pass != RasterPass::shadow ? shadow_kinds
+                             : view.orthographic
+                                 ? 1 << LightShadow::orthographic
+                                 : (1 << LightShadow::cube) | (1 << LightShadow::perspective);
       const GLuint program = programs.get(variant);
       if (program != current) {
         glUseProgram(program);
