@@ -23,8 +23,11 @@
 uniform vec3 gloss_ka, gloss_kd, gloss_ks, gloss_ke;
 uniform float gloss_alpha;
 uniform vec3 gloss_scene_ambient;
-uniform int gloss_model;
-uniform bool gloss_energy_normalize;
+// The model and the normalisation switch are constants of the program (GLOSS_MODEL,
+// GLOSS_ENERGY_NORMALIZE, raster_programs.h), as in an exported shader: on a uniform llvmpipe
+// computed both models' cosines for every light at every fragment.
+const int gloss_model = GLOSS_MODEL;
+const bool gloss_energy_normalize = GLOSS_ENERGY_NORMALIZE != 0;
 #if GLOSS_LIGHT_COUNT > 0
 uniform vec3 gloss_light_position[GLOSS_LIGHT_COUNT];
 uniform vec3 gloss_light_ambient[GLOSS_LIGHT_COUNT];

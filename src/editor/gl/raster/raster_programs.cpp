@@ -51,6 +51,8 @@ std::string RasterPrograms::source(const RasterVariant& v, GLenum stage) {
   flag("GLOSS_SHADOW_CUBE_MAPS", v.shadow_kinds, 0);
   flag("GLOSS_SHADOW_PERSPECTIVE_MAPS", v.shadow_kinds, 1);
   flag("GLOSS_SHADOW_ORTHOGRAPHIC_MAPS", v.shadow_kinds, 2);
+  text += "#define GLOSS_MODEL " + std::to_string(v.model) + "\n";
+  text += std::string("#define GLOSS_ENERGY_NORMALIZE ") + (v.energy_normalize ? "1" : "0") + "\n";
   if (v.pass == RasterPass::shadow) text += "#define GLOSS_SHADOW_PASS 1\n";
   text += kRasterCommonGlsl;
   text += kEnvironmentGlsl;

@@ -32,10 +32,13 @@ struct RasterVariant {
   // left out: llvmpipe pays for both sides of a branch on a uniform. All by default.
   int light_types = 7;
   int shadow_kinds = 7;
+  int model = 0;                  // GLOSS_MODEL: 0 Phong, 1 Blinn-Phong (phong_contract.glsl)
+  bool energy_normalize = false;  // GLOSS_ENERGY_NORMALIZE
   bool operator<(const RasterVariant& o) const {
-    return std::tie(shape, pass, light_count, shadows, environment, maps, light_types,
-                    shadow_kinds) < std::tie(o.shape, o.pass, o.light_count, o.shadows,
-                                             o.environment, o.maps, o.light_types, o.shadow_kinds);
+    return std::tie(shape, pass, light_count, shadows, environment, maps, light_types, shadow_kinds,
+                    model, energy_normalize) <
+           std::tie(o.shape, o.pass, o.light_count, o.shadows, o.environment, o.maps, o.light_types,
+                    o.shadow_kinds, o.model, o.energy_normalize);
   }
 };
 

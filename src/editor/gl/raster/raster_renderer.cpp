@@ -132,8 +132,6 @@ float one_minus_cos(double degrees) {
 // Everything of the contract that is the same for every object of the frame.
 void set_scene_uniforms(GLuint program, const Scene& scene) {
   set_uniform(program, "gloss_scene_ambient", &scene.ambient.x);
-  set_uniform(program, "gloss_model", scene.render.model == ShadingModel::phong ? 0 : 1);
-  set_uniform(program, "gloss_energy_normalize", scene.render.energy_normalize ? 1 : 0);
   const int n = static_cast<int>(scene.lights.size());
   if (n == 0) return;
   std::vector<float> position, ambient, diffuse, specular, attenuation, direction, cone;
@@ -261,6 +259,8 @@ struct RasterRenderer::Impl {
                             with_environment && pass != RasterPass::shadow};
       variant.maps = with_maps;
       variant.light_types = light_types;
+      variant.model = scene.render.model == ShadingModel::phong ? 0 : 1;
+      variant.energy_normalize = scene.render.energy_normalize;
       // A shadow pass draws one kind of view: orthographic, or perspective (cubes, spots).
       variant.shadow_kinds = pass != RasterPass::shadow ? shadow_kinds
                              : view.orthographic
