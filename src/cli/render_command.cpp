@@ -293,7 +293,8 @@ void add_render_command(CLI::App& app) {
       "spp > 1: adaptive (default: samples where the centre image has edges) or uniform");
   args->aa_threshold_option = sub->add_option(
       "--aa-threshold", args->aa_threshold,
-      "adaptive: refine where neighbouring centres differ by more (0..1, default 1/64)");
+      "adaptive: refine where the centre image curves by more than T / 10 (its Laplacian, "
+      "0..1, default 1/64)");
   sub->add_flag("--srgb", args->srgb, "sRGB-encode the PNGs (default: clamp only)");
   args->exposure_option = sub->add_option(
       "--exposure", args->exposure,

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "engine/adaptive_refinement.h"
+#include "engine/trace/centre_ring.h"
 #include "engine/trace/refined_samples.h"
 
 namespace gloss {
@@ -39,9 +40,12 @@ bool AdaptiveProgression::refine(SampleCache& cache, const RenderContext& ctx,
     centre_total = &m_centres.total;
   }
   const RenderSettings& r = ctx.scene->render;
+  // The centres beyond the image's edges, for the current camera, lights and materials: a few
+  // thousand samples, traced again each time rather than kept in step with every edit.
+  CentreRing ring;
+  if (!trace_centre_ring(cache, ctx, ring)) return false;
   std::vector<std::uint32_t> pixels;
-  if (!choose_refined_pixels(cache, *centre_total, r, 0, cache.height, ctx.cancel,
-                             pixels)) {
+  if (!choose_refined_pixels(cache, ring, *centre_total, r, 0, cache.height, ctx.cancel, pixels)) {
     return false;
   }
   RefinedUpdate update;

@@ -8,6 +8,7 @@
 #include "engine/environment/environment_stage.h"
 #include "engine/render_context.h"
 #include "engine/shade/pixel_factors.h"
+#include "engine/trace/centre_ring.h"
 #include "engine/trace/embree_scene.h"
 #include "engine/trace/refined_samples.h"
 #include "engine/trace/sample_cache.h"
@@ -70,7 +71,9 @@ TermImages render(const Scene& scene, const RenderOptions& options) {
                                            static_cast<std::uint32_t>((row0 + rows) * w));
         for (auto p = first; p != last; ++p) pixels.push_back(*p - region0);
       } else {
-        pixels = choose_refined_pixels(cache, band.total, scene.render, row0 - halo0,
+        CentreRing ring;
+        trace_centre_ring(cache, ctx, ring);
+        pixels = choose_refined_pixels(cache, ring, band.total, scene.render, row0 - halo0,
                                        row0 - halo0 + rows);
       }
       trace_refined_samples(cache, ctx, std::move(pixels), spp);

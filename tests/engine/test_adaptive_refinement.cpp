@@ -33,11 +33,42 @@ struct HandImage {
     }
   }
   std::size_t at(int x, int y) const { return static_cast<std::size_t>(y) * cache.width + x; }
-  // The refined pixels off the image border (the border is always refined).
+  // A centre ring that repeats the image's edge pixels (each point as its nearest pixel).
+  CentreRing edge_ring() const {
+    const int w = cache.width, h = cache.height;
+    CentreRing ring;
+    ring.width = w;
+    ring.height = h;
+    ring.top = ring.bottom = true;
+    const std::size_t slots = cache.planes[0].lights.size();
+    ring.words = static_cast<int>((slots + 31) / 32);
+    auto add = [&](int x, int y) {
+      const std::size_t p = at(std::clamp(x, 0, w - 1), std::clamp(y, 0, h - 1));
+      ring.object.push_back(cache.planes[0].object[p]);
+      ring.total.push_back(total.pixels[p]);
+      for (int k = 0; k < ring.words; ++k) ring.lit.push_back(0u);
+      for (std::size_t s = 0; s < slots; ++s) {
+        if (cache.planes[0].lights[s].spec_weight[p] > 0.0f) {
+          ring.lit[(ring.object.size() - 1) * ring.words + s / 32] |= 1u << (s % 32);
+        }
+      }
+    };
+    for (int y = 0; y < h; ++y) {
+      add(-1, y);
+      add(w, y);
+    }
+    for (int x = -1; x <= w; ++x) add(x, -1);
+    for (int x = -1; x <= w; ++x) add(x, h);
+    return ring;
+  }
+  std::vector<std::uint32_t> all_refined(const CentreRing& ring) const {
+    return choose_refined_pixels(cache, ring, total, render, 0, cache.height);
+  }
+  // The refined pixels off the image border, the ring repeating the edges.
   std::vector<std::uint32_t> refined(float threshold) {
     render.aa_threshold = threshold;
     std::vector<std::uint32_t> out;
-    for (const std::uint32_t p : choose_refined_pixels(cache, total, render, 0, cache.height)) {
+    for (const std::uint32_t p : all_refined(edge_ring())) {
       const int x = static_cast<int>(p) % cache.width, y = static_cast<int>(p) / cache.width;
       if (x > 0 && y > 0 && x < cache.width - 1 && y < cache.height - 1) out.push_back(p);
     }
@@ -52,14 +83,28 @@ std::vector<std::uint32_t> pixel_list(std::initializer_list<std::pair<int, int>>
   return out;
 }
 
-TEST(AdaptiveRefinement, TheImageBorderIsAlwaysRefined) {
-  HandImage img(4, 3, 0);  // uniform: nothing inside differs
-  img.render.aa_threshold = 1.0f;
-  EXPECT_EQ(
-      choose_refined_pixels(img.cache, img.total, img.render, 0, 3),
-      pixel_list({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {0, 1}, {3, 1}, {0, 2}, {1, 2}, {2, 2}, {3, 2}},
-                 4));
-  EXPECT_TRUE(img.refined(1.0f).empty());
+// The border is compared with the centre ring beyond it, like any pixel with its neighbours.
+TEST(AdaptiveRefinement, TheImageBorderIsComparedWithTheRing) {
+  HandImage img(4, 3, 1);  // one object, lit everywhere, grey
+  img.render.aa_threshold = 1.0f / 64.0f;
+  CentreRing ring = img.edge_ring();
+  EXPECT_TRUE(img.all_refined(ring).empty());  // nothing differs, the border included
+  // Another object just left of row 1 (x = -1): its three neighbours in column 0.
+  ring.object[ring.left(1)] = 1;
+  EXPECT_EQ(img.all_refined(ring), pixel_list({{0, 0}, {0, 1}, {0, 2}}, 4));
+  // In shadow just below (2, 2) instead (y = 3): its three neighbours in row 2.
+  ring = img.edge_ring();
+  ring.lit[ring.below(2)] = 0u;
+  EXPECT_EQ(img.all_refined(ring), pixel_list({{1, 2}, {2, 2}, {3, 2}}, 4));
+  // Brighter above the corner (3, 0), by 0.2 (y = -1, x = 3): the corner's Laplacian 0.2 sees it.
+  ring = img.edge_ring();
+  ring.total[ring.above(3)] = glm::vec3(0.7f);
+  EXPECT_EQ(img.all_refined(ring), pixel_list({{3, 0}}, 4));
+  // The ring's corner points (-1, -1) and (4, 3) are diagonal neighbours of the image's corners.
+  ring = img.edge_ring();
+  ring.object[ring.above(-1)] = 2;
+  ring.object[ring.below(4)] = 2;
+  EXPECT_EQ(img.all_refined(ring), pixel_list({{0, 0}, {3, 2}}, 4));
 }
 
 TEST(AdaptiveRefinement, AnotherObjectRefinesItsWholeNeighbourhood) {
@@ -77,10 +122,29 @@ TEST(AdaptiveRefinement, AColourStepRefinesBothSidesOnlyAboveTheThreshold) {
     for (int x = 3; x < 6; ++x) img.total.pixels[img.at(x, y)] = glm::vec3(0.5f, 0.8f, 0.5f);
   }
   const std::vector<std::uint32_t> step = pixel_list({{2, 1}, {3, 1}, {2, 2}, {3, 2}}, 6);
+  // The curvature test sees it: Laplacian +-0.3 on the two sides, above t / 10 for t < 3.
   EXPECT_EQ(img.refined(0.29f), step);
-  // Above 0.3 only the curvature test sees it: Laplacian +-0.3 on the two sides, above t / 10.
   EXPECT_EQ(img.refined(2.99f), step);
   EXPECT_TRUE(img.refined(3.01f).empty());
+}
+
+// A smooth gradient is not an edge, however steep: the centre of a linear ramp is its pixel's
+// mean exactly, and its Laplacian is 0.
+TEST(AdaptiveRefinement, ASteepSmoothGradientIsNotRefined) {
+  HandImage img(8, 4, 0);
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 0; x < 8; ++x) {
+      img.total.pixels[img.at(x, y)] = glm::vec3(0.1f + 0.1f * static_cast<float>(x));
+    }
+  }
+  // Neighbours 0.1 apart, 6.4 times the default threshold of 1/64.
+  EXPECT_TRUE(img.refined(1.0f / 64.0f).empty());
+  // A kink in the ramp (it turns flat from column 4 on) curves: Laplacian -0.1 at column 4,
+  // above 1/640, and 0 elsewhere.
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 5; x < 8; ++x) img.total.pixels[img.at(x, y)] = glm::vec3(0.5f);
+  }
+  EXPECT_EQ(img.refined(1.0f / 64.0f), pixel_list({{4, 1}, {4, 2}}, 8));
 }
 
 // The rule compares what is displayed (docs/spec/shading.md, "Output encodings"): exposure, tone
@@ -91,15 +155,17 @@ TEST(AdaptiveRefinement, ItComparesTheDisplayedValues) {
   img.total.pixels[img.at(2, 2)] = glm::vec3(1.5f);
   // The clamp shows 1 and 1.5 as the same white: no edge.
   EXPECT_TRUE(img.refined(0.2f).empty());
-  // One stop down they show as 0.5 and 0.75: the 3 x 3 block around the brighter pixel.
-  const std::vector<std::uint32_t> block =
-      pixel_list({{1, 1}, {2, 1}, {3, 1}, {1, 2}, {2, 2}, {3, 2}, {1, 3}, {2, 3}, {3, 3}}, 5);
+  // One stop down they show as 0.5 and 0.75: Laplacian -1 at the brighter pixel, 0.25 at its
+  // four neighbours (above 0.2 / 10), 0 at the diagonal ones.
+  const std::vector<std::uint32_t> cross = pixel_list({{2, 1}, {1, 2}, {2, 2}, {3, 2}, {2, 3}}, 5);
   img.render.exposure = -1.0f;
-  EXPECT_EQ(img.refined(0.2f), block);
-  // Reinhard at exposure 0: 1 / 2 = 0.5 and 1.5 / 2.5 = 0.6.
+  EXPECT_EQ(img.refined(0.2f), cross);
+  EXPECT_EQ(img.refined(3.0f), pixel_list({{2, 2}}, 5));  // 0.3: the brighter pixel only
+  // Reinhard at exposure 0: 1 / 2 = 0.5 and 1.5 / 2.5 = 0.6: Laplacian 0.4 and 0.1.
   img.render.exposure = 0.0f;
   img.render.tone = ToneCurve::reinhard;
-  EXPECT_EQ(img.refined(0.09f), block);
+  EXPECT_EQ(img.refined(0.99f), cross);
+  EXPECT_EQ(img.refined(1.01f), pixel_list({{2, 2}}, 5));
 }
 
 TEST(AdaptiveRefinement, TheSrgbEncodingMagnifiesDarkSteps) {
@@ -120,7 +186,7 @@ TEST(AdaptiveRefinement, APeakBelowTheStepThresholdIsRefinedWhereItCurves) {
   HandImage img(6, 4, 0);
   img.total.pixels[img.at(2, 2)] = glm::vec3(0.5f, 0.51f, 0.5f);  // steps of 0.01 only
   EXPECT_TRUE(img.refined(0.5f).empty());  // Laplacian 0.04 at the peak, 0.01 beside it
-  // t / 10 = 0.005: the peak and its side neighbours (not (2, 3), a border pixel anyway).
+  // t / 10 = 0.005: the peak and its side neighbours ((2, 3) is on the border: not counted).
   EXPECT_EQ(img.refined(0.05f), pixel_list({{2, 1}, {1, 2}, {2, 2}, {3, 2}}, 6));
   EXPECT_EQ(img.refined(0.125f), pixel_list({{2, 2}}, 6));  // 0.0125: the peak only
 }
@@ -179,7 +245,9 @@ TEST(AdaptiveRefinement, PlacementDoesNotDependOnTheRenderersBands) {
   PixelFactors factors;
   Image total;
   ASSERT_TRUE(trace_single_sample(cache, ctx, factors, &total));
-  EXPECT_EQ(banded, choose_refined_pixels(cache, total, scene.render, 0, 30));
+  CentreRing ring;
+  ASSERT_TRUE(trace_centre_ring(cache, ctx, ring));
+  EXPECT_EQ(banded, choose_refined_pixels(cache, ring, total, scene.render, 0, 30));
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "engine/trace/single_sample_pass.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "engine/shade/power_lanes.h"
@@ -142,6 +143,30 @@ bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFact
       });
   if (!done) drop_planes(cache, 0);
   if (done) borrow_texels(cache.planes[0], ctx.plan, factors);
+  return done;
+}
+
+bool trace_single_sample_at(SampleCache& strip, const SampleCache& image, const double* px,
+                            const double* py, std::size_t n, const RenderContext& ctx,
+                            PixelFactors& factors, Image* total) {
+  drop_planes(strip, 0);
+  append_planes(strip, ctx.plan.plane_shape(), 1);
+  const bool done = fused_factors_pass(
+      strip, ctx, factors, total, [&](SamplePacket& packet, auto& on_light, TexelLanes& texels) {
+        alignas(64) double x[kLanes], y[kLanes];
+        const std::size_t first =
+            static_cast<std::size_t>(packet.y0) * strip.width + static_cast<std::size_t>(packet.x0);
+        for (int i = 0; i < kLanes; ++i) {
+          const std::size_t k = std::min(first + static_cast<std::size_t>(i), n - 1);
+          x[i] = px[k];
+          y[i] = py[k];
+        }
+        packet_directions_at(packet, image, x, y);
+        const long long rays = trace_primary(packet, strip, ctx);
+        store_hits(packet, strip.width, strip.planes[0]);
+        return rays + shade_sample(packet, strip, ctx, strip.planes[0], on_light, &texels);
+      });
+  if (!done) drop_planes(strip, 0);
   return done;
 }
 

@@ -20,6 +20,15 @@ namespace gloss {
 bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFactors& factors,
                          Image* total = nullptr);
 
+// One sample at each image point (px[i], py[i]) (pixels, image rows; outside the image too) into
+// strip, whose pixel i (row by row) is point i (pixels past n repeat the last point), the
+// directions made as image's (its camera and size); the factors and total as
+// trace_single_sample makes them at pixel centres. strip holds image's camera and seed, one
+// plane after the call. false when cancelled.
+bool trace_single_sample_at(SampleCache& strip, const SampleCache& image, const double* px,
+                            const double* py, std::size_t n, const RenderContext& ctx,
+                            PixelFactors& factors, Image* total);
+
 // For a cache of one sample per pixel (a light edit in the first full-resolution pass): the
 // light factors from the cached hits and the pixel factors in one pass, equal to
 // recompute_light_factors followed by build_pixel_factors. false when cancelled (factors, total

@@ -259,8 +259,8 @@ const FieldTable<RenderSettings>& render_fields() {
                                                             "refine threshold")
                     .range(0.0, 1.0)
                     .ui(0.001, 0.25, true)
-                    .explain("adaptive: refine where neighbouring centre pixels differ by more, "
-                             "per channel of the displayed total (after exposure, tone, clamp)"));
+                    .explain("adaptive: refine where the displayed total (after exposure, tone, "
+                             "clamp) curves by more than a tenth of this at a centre pixel"));
     t.push_back(scalar_field<&RenderSettings::env_resolution>(whole, "env_resolution",
                                                               "environment map resolution")
                     .range(1, 8)
