@@ -146,7 +146,8 @@ bool choose_refined_pixels(const SampleCache& cache, const CentreRing& ring, con
     scratch.shown.resize(entries * 3);
     const auto row = [&](int r) {
       const std::size_t at = static_cast<std::size_t>(r - s0) * padded;
-      return PaddedRow{&scratch.object[at], &scratch.lit[at * words], &scratch.shown[at * 3]};
+      return PaddedRow{scratch.object.data() + at, scratch.lit.data() + at * words,
+                       scratch.shown.data() + at * 3};
     };
     // The ring's points from index first on (count of them) into entries from e of row pr.
     const auto from_ring = [&](const PaddedRow& pr, int e, std::size_t first, int n) {
