@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 #include "display/display_transform.h"
 #include "engine/parallel_loops.h"
@@ -127,6 +128,9 @@ bool choose_refined_pixels(const SampleCache& cache, const CentreRing& ring, con
   const SamplePlane& plane = cache.planes.at(0);
   const std::size_t slots = plane.lights.size();
   const int words = ring.words;
+  if (ring.width != w || ring.height != h || static_cast<std::size_t>(words) != (slots + 31) / 32) {
+    throw std::invalid_argument("choose_refined_pixels: the centre ring is not the region's");
+  }
   // Rows the rule reads: the region's, and the ring's above or below it.
   const auto exists = [&](int r) {
     return (r >= 0 && r < h) || (r == -1 && ring.top) || (r == h && ring.bottom);
