@@ -38,11 +38,29 @@ void mark_differences(const PaddedRow& ra, int a, const PaddedRow& rb, int b, in
   const std::int32_t* __restrict oa = ra.object + a;
   const std::int32_t* __restrict ob = rb.object + b;
   for (int i = 0; i < n; ++i) out[i] |= oa[i] != ob[i] ? bit : 0;
+  if (words == 1) {  // up to 32 slots: a contiguous loop, vector code (the strided one is not)
+    const std::uint32_t* __restrict la = ra.lit + a;
+    const std::uint32_t* __restrict lb = rb.lit + b;
+    for (int i = 0; i < n; ++i) out[i] |= la[i] != lb[i] ? bit : 0;
+    return;
+  }
   for (int k = 0; k < words; ++k) {  // lit and visible on one side only
     const std::uint32_t* __restrict la = ra.lit + static_cast<std::size_t>(a) * words + k;
     const std::uint32_t* __restrict lb = rb.lit + static_cast<std::size_t>(b) * words + k;
     for (int i = 0; i < n; ++i) out[i] |= la[i * words] != lb[i * words] ? bit : 0;
   }
+}
+
+// lit[x * words] |= bit where spec[x] > 0, x < n: one slot's lit state into the entries' words.
+// A function of its own: in the band's loop the stores through lit might have changed the
+// captured width (int and unsigned alias), which was reloaded per pixel and kept it scalar.
+void mark_lit(const float* __restrict spec, int n, int words, std::uint32_t bit,
+              std::uint32_t* __restrict lit) {
+  if (words == 1) {  // up to 32 slots: contiguous, vector code
+    for (int x = 0; x < n; ++x) lit[x] |= spec[x] > 0.0f ? bit : 0u;
+    return;
+  }
+  for (int x = 0; x < n; ++x) lit[x * words] |= spec[x] > 0.0f ? bit : 0u;
 }
 
 // refine[x] |= 1 where the displayed row mid's 4-neighbour Laplacian (rows up and down beside
@@ -178,10 +196,8 @@ bool choose_refined_pixels(const SampleCache& cache, const CentreRing& ring, con
       const std::size_t first = static_cast<std::size_t>(r) * w;
       std::copy_n(&plane.object[first], w, pr.object + 1);
       for (std::size_t s = 0; s < slots; ++s) {
-        const float* spec = &plane.lights[s].spec_weight[first];
-        std::uint32_t* lit = pr.lit + words + s / 32;
-        const std::uint32_t bit = 1u << (s % 32);
-        for (int x = 0; x < w; ++x) lit[x * words] |= spec[x] > 0.0f ? bit : 0u;
+        mark_lit(&plane.lights[s].spec_weight[first], w, words, 1u << (s % 32),
+                 pr.lit + words + s / 32);
       }
       display_values(&linear.pixels[first].x, pr.shown + 3, 3 * static_cast<std::size_t>(w),
                      display);
