@@ -91,6 +91,7 @@ bool ProgressiveRenderer::Impl::step() {
     if (cache.samples() == 1) {
       ok = relight_single_sample(cache, ctx, factors, total);
       factors_done = total_done = true;
+      if (total != nullptr && cache.refined.spp > 0) refined_sky_stale = true;
     } else {
       ok = recompute_light_factors(cache, ctx);
     }
@@ -115,7 +116,7 @@ bool ProgressiveRenderer::Impl::step() {
     redo = ChangeClass::exponent;  // cancelled: the factors are rebuilt from the samples
     const std::vector<std::uint32_t> placed = cache.refined.pixels;
     // The same placement keeps the refined samples' hits (re-lit at most), and so the sky.
-    const bool sky_kept = sky_current;
+    const bool sky_kept = sky_current && !refined_sky_stale;
     sky_current = false;
     ok = refine(total, total_done);
     sky_current = sky_kept && ok && cache.refined.pixels == placed;
@@ -123,13 +124,16 @@ bool ProgressiveRenderer::Impl::step() {
     // estimates start again, their sums being per refined entry and new entries holding the
     // fast path (remapping the kept entries' sums instead would keep their estimates). The centre
     // image, made with the estimates, then no longer holds the other pixels' totals: the frame's
-    // total is made whole. Without an environment the centre image is the centres' total
+    // total is made whole. Without an environment light the centre image is the centres' total
     // whatever the placement (after a restart too, where this whole-image pass took 1 to 1.5 ms
     // of the camera change's adaptive pass on the benchmark scene).
     if (cache.refined.pixels != placed) {
       environment.reset();
       if (ctx.plan.environment) total_done = false;
     }
+    // The refined pixels' sky is not current (a new placement, a light edit's fused pass): it is
+    // made again below (environment_sky), and so the total, whole.
+    if (!sky_current && ctx.plan.sky) total_done = false;
     factors_done = true;
   } else if (dirty == ChangeClass::none) {
     // Double the samples each pass: 1, 2, 4, 8 ... up to the target.
@@ -147,6 +151,7 @@ bool ProgressiveRenderer::Impl::step() {
   const bool fused_total = total_done && total != nullptr;
   const bool sky_made = !sky_current && !fused_total;
   if (ok && sky_made) ok = environment_sky(cache, ctx, factors);
+  if (ok && sky_made) refined_sky_stale = false;
   if (ok) sky_current = true;
   ctx.rays = nullptr;
   if (!ok) {

@@ -72,6 +72,9 @@ struct ProgressiveRenderer::Impl {
   // edit that changes_sky, and from the start of a pass that changes the samples until it
   // completes): only then is it made again.
   bool sky_current = false;
+  // The fused 1-spp pass of a light edit wrote the centres' sky over the refined pixels' (the
+  // means over their samples): the next refinement makes the sky again.
+  bool refined_sky_stale = false;
   int pass = 0;
   std::uint64_t worker_generation = 0;
   Clock::time_point worker_changed_at;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
 
 #include "engine/adaptive_refinement.h"
 #include "engine/environment/environment_estimate.h"
@@ -72,7 +73,8 @@ TermImages render(const Scene& scene, const RenderOptions& options) {
         for (auto p = first; p != last; ++p) pixels.push_back(*p - region0);
       } else {
         CentreRing ring;
-        trace_centre_ring(cache, ctx, ring);
+        // render() is not cancellable (ctx.cancel is null), so this never fails.
+        if (!trace_centre_ring(cache, ctx, ring)) throw std::logic_error("render: the ring failed");
         pixels = choose_refined_pixels(cache, ring, band.total, scene.render, row0 - halo0,
                                        row0 - halo0 + rows);
       }

@@ -224,6 +224,37 @@ TEST(EnvironmentEngine, TextureAndLightEditsKeepTheSky) {
   engine.set_on_publish(nullptr);
 }
 
+// The environment shown where rays miss while no material has kd or ks: the plan has a sky but
+// no environment light. With the total only (the viewport's view), a new placement of the
+// refined pixels makes their sky again (the mean over their samples, where they missed), in the
+// first converged image and after later edits; keeping the centre image's total had kept the
+// centre's sky there (off by 0.53 on this scene, a review's finding).
+TEST(EnvironmentEngine, ASkyWithoutEnvironmentLightIsMadeAgainForNewRefinedPixels) {
+  Frames frames;
+  ProgressiveOptions options;
+  options.edit_preview_budget_ms = 0;
+  options.terms = false;
+  ProgressiveRenderer engine(options);
+  Scene scene = scene_in_environment(0);
+  scene.render.sampling = Sampling::adaptive;
+  scene.render.spp = 4;
+  for (Material& m : scene.materials) {
+    m.diffuse = glm::vec3(0.0f);
+    m.specular = glm::vec3(0.0f);
+    m.emission = glm::vec3(0.3f, 0.1f, 0.2f);
+  }
+  auto frame = converge(engine, scene, frames);
+  ASSERT_FALSE(frame->refined.empty());
+  expect_fresh(*frame, scene);
+  scene.lights[0].position += glm::vec3(0.3f, 0.2f, 0.0f);
+  frame = converge(engine, scene, frames);
+  expect_fresh(*frame, scene);
+  scene.materials[0].emission = glm::vec3(0.5f, 0.2f, 0.1f);
+  frame = converge(engine, scene, frames);
+  expect_fresh(*frame, scene);
+  engine.set_on_publish(nullptr);
+}
+
 // A shininess map scales alpha per sample, and the fast path's lobe is the sample's: a map of
 // 0.25 everywhere on an alpha of 64 gives the image of alpha 16 without a map (within rounding:
 // the map's value comes through its filter): in the first pass, after adding the map (a `light`

@@ -34,12 +34,6 @@ bool trace_centre_ring(const SampleCache& cache, const RenderContext& ctx, Centr
   SampleCache strip;
   strip.width = kStripWidth;
   strip.height = static_cast<int>((n + kStripWidth - 1) / kStripWidth);
-  strip.image_height = cache.image_height;
-  strip.row0 = 0;
-  strip.target_spp = 1;  // centres
-  strip.seed = cache.seed;
-  strip.camera = cache.camera;
-  strip.camera_d = cache.camera_d;
   PixelFactors factors;
   Image total;
   if (!trace_single_sample_at(strip, cache, px.data(), py.data(), n, ctx, factors, &total)) {

@@ -40,7 +40,10 @@ struct CentreRing {
 };
 
 // The ring of the cache's region (its camera, image size and rows), traced and shaded with ctx
-// into ring. false when cancelled (ring is then incomplete).
+// into ring, as the fused 1-spp pass shades the centres: with the environment's fast path, also
+// where the centre image holds its exact estimates (env_samples > 0), so a border pixel's
+// curvature may then see the fast path beside it. false when cancelled (ring is then
+// incomplete).
 bool trace_centre_ring(const SampleCache& cache, const RenderContext& ctx, CentreRing& ring);
 
 }  // namespace gloss

@@ -149,6 +149,12 @@ bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFact
 bool trace_single_sample_at(SampleCache& strip, const SampleCache& image, const double* px,
                             const double* py, std::size_t n, const RenderContext& ctx,
                             PixelFactors& factors, Image* total) {
+  strip.image_height = image.image_height;
+  strip.row0 = 0;
+  strip.target_spp = 1;  // centres
+  strip.seed = image.seed;
+  strip.camera = image.camera;
+  strip.camera_d = image.camera_d;
   drop_planes(strip, 0);
   append_planes(strip, ctx.plan.plane_shape(), 1);
   const bool done = fused_factors_pass(

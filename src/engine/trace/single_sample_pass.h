@@ -23,8 +23,8 @@ bool trace_single_sample(SampleCache& cache, const RenderContext& ctx, PixelFact
 // One sample at each image point (px[i], py[i]) (pixels, image rows; outside the image too) into
 // strip, whose pixel i (row by row) is point i (pixels past n repeat the last point), the
 // directions made as image's (its camera and size); the factors and total as
-// trace_single_sample makes them at pixel centres. strip holds image's camera and seed, one
-// plane after the call. false when cancelled.
+// trace_single_sample makes them at pixel centres. strip's width and height are the caller's;
+// the call gives it image's camera, image height and seed, and one plane. false when cancelled.
 bool trace_single_sample_at(SampleCache& strip, const SampleCache& image, const double* px,
                             const double* py, std::size_t n, const RenderContext& ctx,
                             PixelFactors& factors, Image* total);

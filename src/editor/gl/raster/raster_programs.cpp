@@ -29,7 +29,9 @@ std::string describe(const RasterVariant& v) {
                                                        : "sky";
   return std::string(shape) + " " + pass_name(v.pass) + " pass, " + std::to_string(v.light_count) +
          " lights" + (v.shadows ? ", shadow maps" : "") + (v.environment ? ", environment" : "") +
-         (v.maps ? ", maps" : "");
+         (v.maps ? ", maps" : "") + ", light types " + std::to_string(v.light_types) +
+         ", shadow kinds " + std::to_string(v.shadow_kinds) +
+         (v.model == 0 ? ", Phong" : ", Blinn-Phong") + (v.energy_normalize ? ", normalised" : "");
 }
 
 }  // namespace
