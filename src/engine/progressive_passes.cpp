@@ -127,12 +127,10 @@ bool ProgressiveRenderer::Impl::step() {
     // total is made whole. Without an environment light the centre image is the centres' total
     // whatever the placement (after a restart too, where this whole-image pass took 1 to 1.5 ms
     // of the camera change's adaptive pass on the benchmark scene).
-    if (cache.refined.pixels != placed) {
-      environment.reset();
-      if (ctx.plan.environment) total_done = false;
-    }
+    if (cache.refined.pixels != placed) environment.reset();
     // The refined pixels' sky is not current (a new placement, a light edit's fused pass): it is
-    // made again below (environment_sky), and so the total, whole.
+    // made again below (environment_sky), and so the total, whole. (An environment light implies
+    // a sky, so a new placement under one always takes this path.)
     if (!sky_current && ctx.plan.sky) total_done = false;
     factors_done = true;
   } else if (dirty == ChangeClass::none) {

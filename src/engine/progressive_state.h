@@ -13,7 +13,7 @@
 #include <mutex>
 #include <thread>
 
-#include "engine/adaptive_progression.h"
+#include "engine/adaptive/adaptive_progression.h"
 #include "engine/edit_preview.h"
 #include "engine/environment/environment_estimate.h"
 #include "engine/frame_pool.h"

@@ -4,14 +4,14 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "engine/adaptive_refinement.h"
+#include "engine/adaptive/adaptive_refinement.h"
 #include "engine/environment/environment_estimate.h"
 #include "engine/environment/environment_stage.h"
 #include "engine/render_context.h"
 #include "engine/shade/pixel_factors.h"
-#include "engine/trace/centre_ring.h"
+#include "engine/adaptive/centre_ring.h"
 #include "engine/trace/embree_scene.h"
-#include "engine/trace/refined_samples.h"
+#include "engine/adaptive/refined_samples.h"
 #include "engine/trace/sample_cache.h"
 #include "engine/trace/single_sample_pass.h"
 #include "scene/fields/validation.h"

@@ -24,7 +24,7 @@ bool parse_pow_mode(const std::string& name, PowMode& mode);
 
 // How the samples of spp > 1 are spent: every pixel gets spp stratified samples (uniform), or
 // the pixel centre first and spp stratified samples only where the centre image needs them
-// (adaptive; the rule is in engine/adaptive_refinement.h and docs/spec/shading.md).
+// (adaptive; the rule is in engine/adaptive/adaptive_refinement.h and docs/spec/shading.md).
 enum class Sampling { adaptive, uniform };
 
 const char* to_string(Sampling sampling);

@@ -1,6 +1,6 @@
 // Adaptive sampling: the refinement rule on images made by hand, refined pixels equal to uniform
 // sampling's, the others to the centre sample, a placement independent of the renderer's bands.
-#include "engine/adaptive_refinement.h"
+#include "engine/adaptive/adaptive_refinement.h"
 
 #include <algorithm>
 #include <cmath>
@@ -40,17 +40,14 @@ struct HandImage {
     ring.width = w;
     ring.height = h;
     ring.top = ring.bottom = true;
-    const std::size_t slots = cache.planes[0].lights.size();
-    ring.words = static_cast<int>((slots + 31) / 32);
+    const std::vector<LightFactorPlane>& lights = cache.planes[0].lights;
+    ring.spec_weight.resize(lights.size());
     auto add = [&](int x, int y) {
       const std::size_t p = at(std::clamp(x, 0, w - 1), std::clamp(y, 0, h - 1));
       ring.object.push_back(cache.planes[0].object[p]);
       ring.total.push_back(total.pixels[p]);
-      for (int k = 0; k < ring.words; ++k) ring.lit.push_back(0u);
-      for (std::size_t s = 0; s < slots; ++s) {
-        if (cache.planes[0].lights[s].spec_weight[p] > 0.0f) {
-          ring.lit[(ring.object.size() - 1) * ring.words + s / 32] |= 1u << (s % 32);
-        }
+      for (std::size_t s = 0; s < lights.size(); ++s) {
+        ring.spec_weight[s].push_back(lights[s].spec_weight[p]);
       }
     };
     for (int y = 0; y < h; ++y) {
@@ -94,7 +91,7 @@ TEST(AdaptiveRefinement, TheImageBorderIsComparedWithTheRing) {
   EXPECT_EQ(img.all_refined(ring), pixel_list({{0, 0}, {0, 1}, {0, 2}}, 4));
   // In shadow just below (2, 2) instead (y = 3): its three neighbours in row 2.
   ring = img.edge_ring();
-  ring.lit[ring.below(2)] = 0u;
+  ring.spec_weight[0][ring.below(2)] = 0.0f;
   EXPECT_EQ(img.all_refined(ring), pixel_list({{1, 2}, {2, 2}, {3, 2}}, 4));
   // Brighter above the corner (3, 0), by 0.2 (y = -1, x = 3): the corner's Laplacian 0.2 sees it.
   ring = img.edge_ring();

@@ -10,7 +10,7 @@
 #include "engine/environment/scrambled_sobol.h"
 #include "engine/simd/lane_mask.h"
 #include "engine/trace/ray_packet.h"
-#include "engine/trace/refined_samples.h"
+#include "engine/adaptive/refined_samples.h"
 #include "engine/trace/sample_packet.h"
 #include "engine/trace/self_shadow.h"
 #include "engine/trace/texture_lanes.h"

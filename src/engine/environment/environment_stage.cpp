@@ -6,7 +6,7 @@
 #include "engine/environment/environment_taps.h"
 #include "engine/environment/environment_uv_lanes.h"
 #include "engine/parallel_loops.h"
-#include "engine/trace/refined_samples.h"
+#include "engine/adaptive/refined_samples.h"
 #include "engine/trace/sample_packet.h"
 #include "engine/trace/texture_lanes.h"
 #include "shading/environment.h"

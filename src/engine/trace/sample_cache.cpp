@@ -1,7 +1,7 @@
 #include "engine/trace/sample_cache.h"
 
+#include "engine/adaptive/refined_samples.h"
 #include "engine/best_fit.h"
-#include "engine/trace/refined_samples.h"
 #include "engine/trace/sample_packet.h"
 #include "shading/sampling.h"
 

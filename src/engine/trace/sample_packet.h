@@ -197,16 +197,24 @@ long long shade_sample(const SamplePacket& packet, const SampleCache& cache,
   return rays;
 }
 
-// Traces sample `stratum` of the packet into plane: directions, primary hits (stored), then
-// shade_sample. Returns the rays traced.
+// Traces the packet's primary rays (its directions set) into plane, `width` entries a row: the
+// hits stored, then shade_sample. Returns the rays traced.
+template <class OnLight>
+long long trace_directed_sample(SamplePacket& packet, const SampleCache& cache,
+                                const RenderContext& ctx, int width, SamplePlane& plane,
+                                OnLight&& on_light, TexelLanes* texels = nullptr) {
+  const long long rays = trace_primary(packet, cache, ctx);
+  store_hits(packet, width, plane);
+  return rays + shade_sample(packet, cache, ctx, plane, on_light, texels);
+}
+
+// Traces sample `stratum` of the packet into plane: directions, then trace_directed_sample.
 template <class OnLight>
 long long trace_sample(SamplePacket& packet, const SampleCache& cache, const RenderContext& ctx,
                        const SamplePattern& pattern, int stratum, SamplePlane& plane,
                        OnLight&& on_light, TexelLanes* texels = nullptr) {
   packet_directions(packet, cache, pattern, stratum);
-  const long long rays = trace_primary(packet, cache, ctx);
-  store_hits(packet, cache.width, plane);
-  return rays + shade_sample(packet, cache, ctx, plane, on_light, texels);
+  return trace_directed_sample(packet, cache, ctx, cache.width, plane, on_light, texels);
 }
 
 // Runs f(packet) -> rays over the cached region's packets, band by band of whole rows on

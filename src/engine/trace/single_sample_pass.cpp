@@ -168,9 +168,8 @@ bool trace_single_sample_at(SampleCache& strip, const SampleCache& image, const 
           y[i] = py[k];
         }
         packet_directions_at(packet, image, x, y);
-        const long long rays = trace_primary(packet, strip, ctx);
-        store_hits(packet, strip.width, strip.planes[0]);
-        return rays + shade_sample(packet, strip, ctx, strip.planes[0], on_light, &texels);
+        return trace_directed_sample(packet, strip, ctx, strip.width, strip.planes[0], on_light,
+                                     &texels);
       });
   if (!done) drop_planes(strip, 0);
   return done;

@@ -6,10 +6,10 @@
 
 #include <glm/geometric.hpp>
 
+#include "engine/adaptive/refined_samples.h"
 #include "engine/trace/map_frame_lanes.h"
 #include "engine/trace/map_lanes.h"
 #include "engine/trace/normal_map_lanes.h"
-#include "engine/trace/refined_samples.h"
 #include "engine/trace/sample_packet.h"
 
 #include "shading/hit_textures.h"

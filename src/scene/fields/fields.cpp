@@ -232,7 +232,7 @@ const FieldTable<RenderSettings>& render_fields() {
                     .explain("PNGs and the viewport sRGB-encoded; off: clamped as is"));
     // The display transform changes no linear value (PFM and EXR hold the image before it);
     // adaptive sampling's placement reads the displayed image, which the engine's follow-up
-    // after every edit chooses again (engine/adaptive_refinement.h).
+    // after every edit chooses again (engine/adaptive/adaptive_refinement.h).
     t.push_back(
         scalar_field<&RenderSettings::exposure>(FieldKind::number, "exposure", "exposure")
             .range(-kMaxExposureStops, kMaxExposureStops)

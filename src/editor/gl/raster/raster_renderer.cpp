@@ -325,12 +325,19 @@ struct RasterRenderer::Impl {
 };
 
 RasterRenderer::RasterRenderer(SourceEdit edit) : m_impl(std::make_unique<Impl>(std::move(edit))) {
-  // Build the programs a one-light scene with shadows needs now, so that a shader that does not
-  // compile on this driver is reported when the raster path is chosen, not mid-frame.
+  // Build the programs a scene of one point light with shadows draws with (the default scene's)
+  // now, so that a shader that does not compile on this driver is reported when the raster path
+  // is chosen, not mid-frame, and the first frame finds them built. Programs of other light
+  // types and map kinds are built when a scene first needs them.
   for (RasterShape shape : {RasterShape::mesh, RasterShape::sphere}) {
     for (RasterPass pass : {RasterPass::shadow, RasterPass::pixel, RasterPass::vertex}) {
       if (shape == RasterShape::sphere && pass == RasterPass::vertex) continue;
-      m_impl->programs.get({shape, pass, 1, pass != RasterPass::shadow});
+      RasterVariant variant{shape, pass, 1, pass != RasterPass::shadow};
+      variant.light_types = 1 << static_cast<int>(LightType::point);
+      variant.shadow_kinds = pass == RasterPass::shadow
+                                 ? (1 << LightShadow::cube) | (1 << LightShadow::perspective)
+                                 : 1 << LightShadow::cube;
+      m_impl->programs.get(variant);
     }
   }
 }

@@ -15,7 +15,7 @@
 // aa_threshold) had refined such gradients, up to a third of the refined pixels of the shipped
 // scenes, and left as many or more pixels off the 256-spp reference (docs/accuracy.md).
 // Pixels on the image border are compared with the centres just outside the image
-// (trace/centre_ring.h), like any other: an edge just outside the last row of centres (a floor
+// (adaptive/centre_ring.h), like any other: an edge just outside the last row of centres (a floor
 // ending at the bottom of the frame) is seen there. (The border used to be refined whole.)
 // What it cannot see: detail that falls between pixel centres (geometry thinner than a pixel, a
 // highlight smaller than one) leaves no trace in the centre image and stays unrefined
@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "base/image.h"
-#include "engine/trace/centre_ring.h"
+#include "engine/adaptive/centre_ring.h"
 #include "engine/trace/sample_cache.h"
 #include "scene/render_settings.h"
 

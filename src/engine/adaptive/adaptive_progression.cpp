@@ -1,11 +1,11 @@
-#include "engine/adaptive_progression.h"
+#include "engine/adaptive/adaptive_progression.h"
 
 #include <utility>
 #include <vector>
 
-#include "engine/adaptive_refinement.h"
-#include "engine/trace/centre_ring.h"
-#include "engine/trace/refined_samples.h"
+#include "engine/adaptive/adaptive_refinement.h"
+#include "engine/adaptive/centre_ring.h"
+#include "engine/adaptive/refined_samples.h"
 
 namespace gloss {
 

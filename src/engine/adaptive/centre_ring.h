@@ -21,11 +21,10 @@ namespace gloss {
 struct CentreRing {
   int width = 0, height = 0;
   bool top = false, bottom = false;
-  // Per point (index below): the object hit (-1: none), each slot's spec_weight > 0 (a bit per
-  // slot, slot k in word k / 32 of the point's words) and the linear total.
+  // Per point (index below): the object hit (-1: none), each light slot's spec_weight (> 0: lit
+  // and visible), the linear total.
   std::vector<std::int32_t> object;
-  int words = 0;  // per point
-  std::vector<std::uint32_t> lit;
+  std::vector<std::vector<float>> spec_weight;  // [slot][point]
   std::vector<glm::vec3> total;
 
   std::size_t points() const { return object.size(); }

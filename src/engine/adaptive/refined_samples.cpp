@@ -1,4 +1,4 @@
-#include "engine/trace/refined_samples.h"
+#include "engine/adaptive/refined_samples.h"
 
 #include <algorithm>
 #include <atomic>
@@ -121,9 +121,7 @@ bool trace_refined_samples(SampleCache& cache, const RenderContext& ctx,
   size_plane(refined.plane, refined.entries(), ctx.plan.plane_shape());
   const int width = static_cast<int>(refined.entries());
   const bool done = for_each_entry_packet(cache, ctx, [&](SamplePacket& packet) {
-    const long long rays = trace_primary(packet, cache, ctx);
-    store_hits(packet, width, refined.plane);
-    return rays + shade_sample(packet, cache, ctx, refined.plane, no_consumer);
+    return trace_directed_sample(packet, cache, ctx, width, refined.plane, no_consumer);
   });
   if (!done) {
     refined.spp = 0;

@@ -1,4 +1,4 @@
-#include "engine/trace/centre_ring.h"
+#include "engine/adaptive/centre_ring.h"
 
 #include "engine/shade/pixel_factors.h"
 #include "engine/trace/single_sample_pass.h"
@@ -40,16 +40,12 @@ bool trace_centre_ring(const SampleCache& cache, const RenderContext& ctx, Centr
     return false;
   }
   const SamplePlane& plane = strip.planes[0];
-  const std::size_t slots = plane.lights.size();
-  ring.words = static_cast<int>((slots + 31) / 32);
-  ring.object.assign(plane.object.begin(), plane.object.begin() + static_cast<std::ptrdiff_t>(n));
-  ring.total.assign(total.pixels.begin(), total.pixels.begin() + static_cast<std::ptrdiff_t>(n));
-  ring.lit.assign(n * static_cast<std::size_t>(ring.words), 0u);
-  for (std::size_t s = 0; s < slots; ++s) {
-    const auto& spec = plane.lights[s].spec_weight;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (spec[i] > 0.0f) ring.lit[i * ring.words + s / 32] |= 1u << (s % 32);
-    }
+  const auto points = static_cast<std::ptrdiff_t>(n);
+  ring.object.assign(plane.object.begin(), plane.object.begin() + points);
+  ring.total.assign(total.pixels.begin(), total.pixels.begin() + points);
+  ring.spec_weight.clear();
+  for (const LightFactorPlane& light : plane.lights) {
+    ring.spec_weight.emplace_back(light.spec_weight.begin(), light.spec_weight.begin() + points);
   }
   return true;
 }

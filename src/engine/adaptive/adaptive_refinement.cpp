@@ -1,4 +1,4 @@
-#include "engine/adaptive_refinement.h"
+#include "engine/adaptive/adaptive_refinement.h"
 
 #include <algorithm>
 #include <cmath>
@@ -145,8 +145,8 @@ bool choose_refined_pixels(const SampleCache& cache, const CentreRing& ring, con
   const int padded = w + 2;  // entries per padded row
   const SamplePlane& plane = cache.planes.at(0);
   const std::size_t slots = plane.lights.size();
-  const int words = ring.words;
-  if (ring.width != w || ring.height != h || static_cast<std::size_t>(words) != (slots + 31) / 32) {
+  const int words = static_cast<int>((slots + 31) / 32);  // lit bits per entry
+  if (ring.width != w || ring.height != h || ring.spec_weight.size() != slots) {
     throw std::invalid_argument("choose_refined_pixels: the centre ring is not the region's");
   }
   // Rows the rule reads: the region's, and the ring's above or below it.
@@ -173,11 +173,10 @@ bool choose_refined_pixels(const SampleCache& cache, const CentreRing& ring, con
     };
     // The ring's points from index first on (count of them) into entries from e of row pr.
     const auto from_ring = [&](const PaddedRow& pr, int e, std::size_t first, int n) {
-      for (int i = 0; i < n; ++i) {
-        pr.object[e + i] = ring.object[first + i];
-        for (int k = 0; k < words; ++k) {
-          pr.lit[(e + i) * words + k] = ring.lit[(first + i) * words + k];
-        }
+      std::copy_n(&ring.object[first], n, pr.object + e);
+      for (std::size_t s = 0; s < slots; ++s) {
+        mark_lit(&ring.spec_weight[s][first], n, words, 1u << (s % 32),
+                 pr.lit + e * words + s / 32);
       }
       display_values(&ring.total[first].x, pr.shown + 3 * e, 3 * static_cast<std::size_t>(n),
                      display);
