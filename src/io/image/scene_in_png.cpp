@@ -7,26 +7,10 @@
 
 #include "base/error.h"
 #include "io/image/image_io.h"
+#include "io/scene/scene_files.h"
 #include "io/scene/scene_loader.h"
 
 namespace gloss {
-
-namespace {
-
-namespace fs = std::filesystem;
-
-// Relative model paths of scene, made absolute against folder (the current folder when empty).
-void make_model_paths_absolute(Scene& scene, const fs::path& folder) {
-  for (Object& object : scene.objects) {
-    std::string& file = object.params.file;
-    if (object.type != ObjectType::mesh || file.empty() || fs::path(file).is_absolute()) continue;
-    std::error_code ec;
-    const fs::path absolute = fs::absolute(folder / file, ec).lexically_normal();
-    if (!ec) file = absolute.string();
-  }
-}
-
-}  // namespace
 
 bool has_png_signature(const std::string& path) {
   static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
@@ -40,7 +24,7 @@ bool has_png_signature(const std::string& path) {
 
 std::string embedded_scene_text(const Scene& scene) {
   Scene copy = scene;
-  make_model_paths_absolute(copy, fs::path(scene.path).parent_path());
+  make_scene_files_absolute(copy, std::filesystem::path(scene.path).parent_path().string());
   return scene_to_json_text(copy);
 }
 
@@ -56,9 +40,9 @@ Scene load_scene_from_png(const std::string& path, std::vector<std::string>* war
                                "' text); only PNGs written by gloss or gloss-cli reopen as scenes");
   }
   // The label names the PNG and what inside it is meant; its folder is the PNG's, so a relative
-  // model path (from a PNG written before paths were made absolute) resolves beside the PNG.
+  // file name (from a PNG written before names were made absolute) resolves beside the PNG.
   Scene scene = parse_scene(*text, path + " (embedded scene)", warnings, notes);
-  make_model_paths_absolute(scene, fs::path(path).parent_path());
+  make_scene_files_absolute(scene, std::filesystem::path(path).parent_path().string());
   scene.path.clear();
   return scene;
 }

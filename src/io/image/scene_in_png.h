@@ -16,12 +16,13 @@ inline constexpr const char* kSceneChunkKeyword = "gloss:scene";
 // True when the file starts with the 8-byte PNG signature; false for a missing or short file.
 bool has_png_signature(const std::string& path);
 
-// The scene JSON to embed in a PNG: scene_to_json_text with each relative model path made
-// absolute (against the scene's folder), so the PNG reopens from whatever folder it is saved to.
+// The scene JSON to embed in a PNG: scene_to_json_text with each relative file name (models,
+// maps, the environment) made absolute against the scene's folder (scene_files.h), so the PNG
+// reopens from whatever folder it is saved to.
 std::string embedded_scene_text(const Scene& scene);
 
 // The scene a gloss PNG carries, read, validated and resolved as load_scene does. The scene has
-// no path (it is untitled: saving it asks for a name) and absolute model paths. Throws
+// no path (it is untitled: saving it asks for a name) and absolute file names. Throws
 // InputError naming the PNG: one line when it carries no scene, and for an error inside the
 // embedded JSON the PNG plus the place ("shot.png (embedded scene):3:7: ...",
 // "shot.png (embedded scene): objects[1].radius: ...").

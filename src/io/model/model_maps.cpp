@@ -6,9 +6,9 @@
 #include <sstream>
 #include <utility>
 
-#include "base/text/ascii.h"
 #include "base/error.h"
 #include "base/memory_budget.h"
+#include "base/text/ascii.h"
 #include "io/image/texture_reader.h"
 #include "io/model/map_reading.h"
 #include "io/model/mtl_maps.h"
@@ -181,6 +181,24 @@ void read_model_maps(const std::string& path, Model& model, const ModelOptions& 
 std::string model_map_reference(const std::string& model, const std::string& material,
                                 MapSlot slot) {
   return model + "#" + material + "/" + to_string(slot);
+}
+
+void name_maps_for_scene(std::vector<Material>& materials, const std::string& model_file) {
+  const fs::path folder = fs::path(model_file).parent_path();
+  for (Material& material : materials) {
+    for (int s = 0; s < kMapSlots; ++s) {
+      const auto slot = static_cast<MapSlot>(s);
+      if (!std::as_const(material).map(slot).named()) continue;
+      TextureMap& map = material.map(slot);
+      std::string inner_model, inner_material;
+      MapSlot inner_slot;
+      if (split_model_map_reference(map.file, inner_model, inner_material, inner_slot)) {
+        map.file = model_map_reference(model_file, inner_material, inner_slot);
+      } else {
+        map.file = (folder / map.file).lexically_normal().generic_string();
+      }
+    }
+  }
 }
 
 bool split_model_map_reference(const std::string& file, std::string& model, std::string& material,

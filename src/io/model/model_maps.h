@@ -12,6 +12,7 @@
 // the model still loads. Maps gloss makes from a model, or takes from inside it, are named
 // MODEL#MATERIAL/SLOT, which a scene reads back through model_map_cache.h.
 #include <string>
+#include <vector>
 
 #include "io/model/model_loader.h"
 
@@ -24,6 +25,12 @@ void read_model_maps(const std::string& path, Model& model, const ModelOptions& 
 // The reference of a map made from or held in a model: MODEL#MATERIAL/SLOT.
 std::string model_map_reference(const std::string& model, const std::string& material,
                                 MapSlot slot);
+
+// Names the maps of a model's materials as a scene names files, for the model file as the scene
+// names it (model_file, relative to the scene's folder or absolute): an image named relative to
+// the model's folder gets that folder in front, a map made from or held in the model
+// MODEL#MATERIAL/SLOT gets model_file as its MODEL.
+void name_maps_for_scene(std::vector<Material>& materials, const std::string& model_file);
 
 // Splits a reference (false when file is a plain image path).
 bool split_model_map_reference(const std::string& file, std::string& model, std::string& material,

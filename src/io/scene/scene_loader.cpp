@@ -3,10 +3,10 @@
 #include <filesystem>
 #include <utility>
 
-#include "base/text/ascii.h"
 #include "base/atomic_file.h"
 #include "base/error.h"
 #include "base/memory_budget.h"
+#include "base/text/ascii.h"
 #include "base/text/text_distance.h"
 #include "io/image/scene_in_png.h"
 #include "io/json/field_json.h"
@@ -16,6 +16,7 @@
 #include "io/model/model_map_cache.h"
 #include "io/scene/environment_reader.h"
 #include "io/scene/material_maps.h"
+#include "io/scene/scene_files.h"
 #include "io/scene/scene_json_reader.h"
 #include "io/scene/scene_object_reader.h"
 #include "scene/fields/fields.h"
@@ -134,16 +135,6 @@ void refuse_materials_file(const nlohmann::json& root, const std::string& path) 
   }
 }
 
-// A file named relative to the folder `from`, named relative to `to` (absolute paths stay; so
-// does a path that cannot be made relative).
-std::string rebased(const std::string& file, const std::filesystem::path& from,
-                    const std::filesystem::path& to) {
-  const std::filesystem::path path(file);
-  if (file.empty() || path.is_absolute()) return file;
-  const std::filesystem::path relative = (from / path).lexically_normal().lexically_relative(to);
-  return relative.empty() ? (from / path).string() : relative.generic_string();
-}
-
 bool has_mtl_extension(const std::string& path) {
   return lower_extension(path) == ".mtl";
 }
@@ -209,38 +200,8 @@ Scene load_scene(const std::string& path, std::vector<std::string>* warnings,
 }
 
 void save_scene(const Scene& scene, const std::string& path) {
-  namespace fs = std::filesystem;
-  // Relative OBJ paths were written against the old scene's folder; rebase them onto the new one.
   Scene moved = scene;
-  const fs::path from = fs::absolute(fs::path(scene.path).parent_path()).lexically_normal();
-  const fs::path to = fs::absolute(fs::path(path).parent_path()).lexically_normal();
-  if (!scene.path.empty() && from != to) {
-    for (Object& object : moved.objects) {
-      const fs::path file(object.params.file);
-      if (object.type != ObjectType::mesh || file.empty() || file.is_absolute()) continue;
-      const fs::path relative = (from / file).lexically_normal().lexically_relative(to);
-      object.params.file = relative.empty() ? (from / file).string() : relative.generic_string();
-    }
-  }
-  if (!scene.path.empty() && from != to) {
-    for (Material& material : moved.materials) {
-      for (int s = 0; s < kMapSlots; ++s) {
-        const auto slot = static_cast<MapSlot>(s);
-        if (material.map(slot).named()) {
-          material.map(slot).file = rebased(material.map(slot).file, from, to);
-        }
-      }
-    }
-  }
-  if (!scene.path.empty() && from != to && !moved.environment.file.empty()) {
-    const fs::path file(moved.environment.file);
-    if (!file.is_absolute()) {
-      const fs::path relative = (from / file).lexically_normal().lexically_relative(to);
-      moved.environment.file =
-          relative.empty() ? (from / file).string() : relative.generic_string();
-    }
-  }
-  moved.path = path;
+  rebase_scene_files(moved, path);  // relative names follow the new folder
   write_text_atomically(path, scene_to_json_text(moved));
 }
 

@@ -201,19 +201,7 @@ void read_mesh(const JsonObjectReader& reader, const ObjectReadContext& context,
   if (context.claimed_bytes != nullptr) *context.claimed_bytes += model.map_bytes;
   if (context.model_maps != nullptr) context.model_maps->keep(resolved, model);
   // The model's maps named as the scene names files: relative to the scene's folder.
-  for (Material& material : model.materials) {
-    for (int s = 0; s < kMapSlots; ++s) {
-      if (!material.map(static_cast<MapSlot>(s)).named()) continue;
-      TextureMap& map = material.map(static_cast<MapSlot>(s));
-      std::string inner_model, inner_material;
-      MapSlot slot;
-      if (split_model_map_reference(map.file, inner_model, inner_material, slot)) {
-        map.file = model_map_reference(params.file, inner_material, slot);
-      } else {
-        map.file = (file_path.parent_path() / map.file).lexically_normal().generic_string();
-      }
-    }
-  }
+  name_maps_for_scene(model.materials, params.file);
 
   std::vector<const ModelPart*> parts;
   std::vector<std::string> groups;

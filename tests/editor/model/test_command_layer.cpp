@@ -150,20 +150,28 @@ TEST(CommandLayer, SaveAsKeepsThePathThroughUndo) {
   EXPECT_EQ(layer.scene().path, "/tmp/elsewhere.json");
 }
 
-TEST(CommandLayer, SaveAsRebasesRelativeMeshFiles) {
+// Every relative file name follows the document: model files, maps and the environment map (Save
+// As used to move the model files only, so a saved copy of the studio scene lost its map).
+TEST(CommandLayer, SaveAsRebasesRelativeFiles) {
   Scene scene = test::two_sphere_scene();
   scene.path = "/data/scenes/room.json";
   scene.objects[0].params.file = "../models/cup.obj";
   scene.objects[1].params.file = "/abs/teapot.obj";
+  scene.materials[0].map(MapSlot::diffuse).file = "maps/wood.png";
+  scene.environment.file = "../environments/studio.exr";
   CommandLayer layer(scene);
   layer.execute(test::set_render("shadows", false));
   layer.set_path("/data/out/copy.json");
   EXPECT_EQ(layer.scene().objects[0].params.file, "../models/cup.obj");  // same depth
+  EXPECT_EQ(layer.scene().materials[0].map(MapSlot::diffuse).file, "../scenes/maps/wood.png");
   layer.set_path("/data/copy.json");
   EXPECT_EQ(layer.scene().objects[0].params.file, "models/cup.obj");
   EXPECT_EQ(layer.scene().objects[1].params.file, "/abs/teapot.obj");
+  EXPECT_EQ(layer.scene().materials[0].map(MapSlot::diffuse).file, "scenes/maps/wood.png");
+  EXPECT_EQ(layer.scene().environment.file, "environments/studio.exr");
   layer.undo();
   EXPECT_EQ(layer.scene().objects[0].params.file, "models/cup.obj");
+  EXPECT_EQ(layer.scene().environment.file, "environments/studio.exr");
 }
 
 TEST(CommandLayer, HistoryIsBounded) {

@@ -142,6 +142,38 @@ TEST(NewObjects, AModelIsScaledSetDownAndPlacedInsideTheCornellRoom) {
   EXPECT_EQ(after.material_names[after.objects.back().material].rfind("cube/", 0), 0u);
 }
 
+// A model's maps are named as a scene names files, the model's folder in front: a scene saved
+// after adding the spider named its textures ("engineflare1.jpg") beside the scene, where they
+// are not, and did not open again.
+TEST(NewObjects, ATexturedModelsMapsAreFoundAgainWhenTheSavedSceneOpens) {
+  const std::string file = "/usr/share/assimp/models/OBJ/spider.obj";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << "assimp-testmodels is not installed";
+  const Scene scene = shipped("spheres");
+  const Scene after = with(scene, model_objects(scene, file));
+  int maps = 0;
+  for (const Material& m : after.materials) {
+    if (!m.has_map(MapSlot::diffuse)) continue;
+    ++maps;
+    // Relative to the scene's folder, as a saved scene names its maps.
+    const std::string& name = m.map(MapSlot::diffuse).file;
+    EXPECT_FALSE(std::filesystem::path(name).is_absolute()) << name;
+    const std::filesystem::path file =
+        (std::filesystem::path(scene.path).parent_path() / name).lexically_normal();
+    EXPECT_EQ(std::filesystem::canonical(file).parent_path(), "/usr/share/assimp/models/OBJ")
+        << name;
+  }
+  // Four: the faces use Skin, HLeibTex, BeinTex and Augentex; the MTL's Brusttex is unused.
+  EXPECT_EQ(maps, 4);
+
+  ScratchFolder folder;
+  save_scene(after, folder.file("spider-scene.json"));
+  Scene back;
+  ASSERT_NO_THROW(back = load_scene(folder.file("spider-scene.json")));
+  int back_maps = 0;
+  for (const Material& m : back.materials) back_maps += m.has_map(MapSlot::diffuse) ? 1 : 0;
+  EXPECT_EQ(back_maps, 4);
+}
+
 TEST(NewObjects, InAnEmptySceneAModelIsCentredOnTheTarget) {
   Scene scene;
   scene.camera.target = {1, 2, 3};

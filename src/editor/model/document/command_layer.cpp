@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "io/scene/scene_files.h"
 #include "scene/memory/scene_bytes.h"
 
 namespace gloss {
@@ -97,14 +98,14 @@ bool CommandLayer::open_document(std::shared_ptr<const Scene> scene, const std::
 }
 
 void CommandLayer::set_path(const std::string& path) {
-  move_document(m_scene, path);
+  rebase_scene_files(m_scene, path);
   // From the newest step back to the step that opened this document (exclusive): undo steps
   // hold the document before them, redo steps the document after them.
   for (auto it = m_undo.rbegin(); it != m_undo.rend() && !it->opens; ++it) {
-    move_document(it->other, path);
+    rebase_scene_files(it->other, path);
   }
   for (auto it = m_redo.rbegin(); it != m_redo.rend() && !it->opens; ++it) {
-    move_document(it->other, path);
+    rebase_scene_files(it->other, path);
   }
   ++m_revision;
 }

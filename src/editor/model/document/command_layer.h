@@ -46,7 +46,8 @@ class CommandLayer {
   void reset(Scene scene, bool saved);
 
   // Records that the document now lives at path (save as): the path is the document's identity,
-  // not an edit, so every undo step of this document takes it too (document.h's move_document)
+  // not an edit, so every undo step of this document takes it too (rebase_scene_files,
+  // io/scene/scene_files.h)
   // and no step is recorded. Steps beyond an open_document step hold another document and keep
   // their path.
   void set_path(const std::string& path);

@@ -1,7 +1,6 @@
 #include "editor/model/document/document.h"
 
 #include <algorithm>
-#include <filesystem>
 #include <stdexcept>
 
 #include "io/material/preset_table.h"
@@ -68,22 +67,6 @@ Scene builtin_scene() {
   scene.render.height = 600;
   scene.render.spp = 4;
   return scene;
-}
-
-void move_document(Scene& scene, const std::string& path) {
-  namespace fs = std::filesystem;
-  const fs::path old_folder = fs::path(scene.path).parent_path();
-  const fs::path new_folder = fs::path(path).parent_path();
-  for (Object& object : scene.objects) {
-    std::string& file = object.params.file;
-    if (file.empty() || fs::path(file).is_absolute()) continue;
-    std::error_code ec;
-    const fs::path target = fs::absolute(old_folder / file, ec).lexically_normal();
-    const fs::path base = fs::absolute(new_folder, ec).lexically_normal();
-    const fs::path relative = target.lexically_relative(base);
-    file = relative.empty() ? target.string() : relative.string();
-  }
-  scene.path = path;
 }
 
 std::string object_label(const Scene& scene, int object) {

@@ -1,7 +1,8 @@
 #pragma once
 // The editor's document is a Scene (scene.h); only the command layer writes it. This header holds
 // the rules that edits share: the exponent rescaling of the model switch, the document
-// comparison, the built-in scene, moving a document to a new file, labels of objects.
+// comparison, the built-in scene, labels of objects. (Moving a document to a new file:
+// io/scene/scene_files.h.)
 #include <string>
 
 #include "scene/scene.h"
@@ -26,10 +27,6 @@ bool same_scene(const Scene& a, const Scene& b);
 // Gold and silver spheres under one white light: the scene used when no file is given and the
 // shipped default scene is missing. Throws when the preset table cannot be read.
 Scene builtin_scene();
-
-// Gives scene a new file path, rewriting the relative file names of its objects (OBJ meshes) so
-// they still name the same files from the new folder.
-void move_document(Scene& scene, const std::string& path);
 
 // "object 2 (gold sphere)" style names for menus and labels; "object 2" when unnamed.
 std::string object_label(const Scene& scene, int object);

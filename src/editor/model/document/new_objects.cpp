@@ -16,6 +16,7 @@
 #include "editor/model/view/camera_controller.h"
 #include "engine/pick.h"
 #include "io/model/model_loader.h"
+#include "io/model/model_maps.h"
 #include "io/scene/scene_loader.h"
 #include "scene/geometry/placement.h"
 #include "scene/geometry/shapes.h"
@@ -292,7 +293,7 @@ AddObjects primitive_objects(const Scene& scene, ObjectType type) {
 
 AddObjects model_objects(const Scene& scene, const std::string& path,
                          std::vector<std::string>* warnings, std::vector<std::string>* notes) {
-  const Model model = load_model(path);
+  Model model = load_model(path);
   glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
   for (const ModelPart& part : model.parts) {
     glm::vec3 a, b;
@@ -308,6 +309,18 @@ AddObjects model_objects(const Scene& scene, const std::string& path,
   const glm::vec3 position = placement_offset(scene, lo * scale, hi * scale);
   const glm::mat4 own = glm::scale(glm::translate(glm::mat4(1.0f), position), glm::vec3(scale));
   const std::string absolute = std::filesystem::absolute(path).lexically_normal().string();
+  // The maps as the scene names files: relative to its folder (the model's folder in front), so
+  // a saved scene finds them; absolute in an untitled scene.
+  std::string from_scene;
+  if (!scene.path.empty()) {
+    std::error_code ec;
+    const std::filesystem::path folder =
+        std::filesystem::absolute(std::filesystem::path(scene.path).parent_path(), ec);
+    if (!ec) {
+      from_scene = std::filesystem::path(absolute).lexically_relative(folder.lexically_normal());
+    }
+  }
+  name_maps_for_scene(model.materials, from_scene.empty() ? absolute : from_scene);
   const std::string stem = std::filesystem::path(path).stem().string();
 
   AddObjects add;

@@ -274,9 +274,7 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
 
 LineResult ScriptHost::save(const SaveAction& a, const std::string& where) {
   try {
-    Scene scene = layer().scene();
-    move_document(scene, a.path);  // relative model paths follow the new folder
-    save_scene(scene, a.path);
+    save_scene(layer().scene(), a.path);  // relative file names follow the new folder
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s%s\n", where.c_str(), e.what());
     return LineResult::stop(1);

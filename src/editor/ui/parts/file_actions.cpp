@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <limits>
 
-#include "base/text/ascii.h"
 #include "base/error.h"
+#include "base/text/ascii.h"
 #include "editor/model/document/document.h"
 #include "editor/model/document/new_objects.h"
 #include "editor/model/export/glsl_export.h"
@@ -95,10 +95,8 @@ void FileActions::add_model(const std::string& path) {
 }
 
 void FileActions::save_scene_as(const std::string& requested) {
-  const std::string path = requested;  // may refer into the document, which changes below
-  Scene scene = m_document.scene();
-  move_document(scene, path);
-  save_scene(scene, path);
+  const std::string path = requested;    // may refer into the document, which changes below
+  save_scene(m_document.scene(), path);  // relative file names follow the new folder
   m_document.set_path(path);
   m_document.mark_saved();
   remember_recent(RecentKind::scene, path);

@@ -1,0 +1,76 @@
+#include "io/scene/scene_files.h"
+
+#include <filesystem>
+#include <functional>
+#include <utility>
+
+#include "io/model/model_maps.h"
+
+namespace gloss {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Calls rename(file) on each file name of the scene that rename may change: an object's file
+// (a model's), a plain map's file or a model map's MODEL part, the environment's file.
+void for_each_scene_file(Scene& scene, const std::function<void(std::string&)>& rename) {
+  for (Object& object : scene.objects) {
+    if (!object.params.file.empty()) rename(object.params.file);
+  }
+  for (Material& material : scene.materials) {
+    for (int s = 0; s < kMapSlots; ++s) {
+      const auto slot = static_cast<MapSlot>(s);
+      // The const accessor reads: the non-const one makes the material's own copy of its maps
+      // (they are shared between copies of the scene, material.h).
+      const TextureMap& map = std::as_const(material).map(slot);
+      if (!map.named()) continue;
+      std::string file = map.file;
+      std::string model, model_material;
+      MapSlot model_slot;
+      if (split_model_map_reference(file, model, model_material, model_slot)) {
+        rename(model);
+        file = model_map_reference(model, model_material, model_slot);
+      } else {
+        rename(file);
+      }
+      if (file != map.file) material.map(slot).file = file;
+    }
+  }
+  if (!scene.environment.file.empty()) rename(scene.environment.file);
+}
+
+fs::path absolute_folder(const std::string& path) {
+  std::error_code ec;
+  const fs::path folder = fs::absolute(fs::path(path).parent_path(), ec);
+  return (ec ? fs::path(path).parent_path() : folder).lexically_normal();
+}
+
+}  // namespace
+
+void rebase_scene_files(Scene& scene, const std::string& new_path) {
+  const fs::path from = absolute_folder(scene.path);
+  const fs::path to = absolute_folder(new_path);
+  if (from != to) {
+    for_each_scene_file(scene, [&](std::string& file) {
+      const fs::path name(file);
+      if (name.is_absolute()) return;
+      const fs::path target = (from / name).lexically_normal();
+      const fs::path relative = target.lexically_relative(to);
+      file = relative.empty() ? target.generic_string() : relative.generic_string();
+    });
+  }
+  scene.path = new_path;
+}
+
+void make_scene_files_absolute(Scene& scene, const std::string& folder) {
+  std::error_code ec;
+  const fs::path base = fs::absolute(fs::path(folder), ec);
+  for_each_scene_file(scene, [&](std::string& file) {
+    const fs::path name(file);
+    if (name.is_absolute() || ec) return;
+    file = (base / name).lexically_normal().generic_string();
+  });
+}
+
+}  // namespace gloss
