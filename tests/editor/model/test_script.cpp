@@ -82,7 +82,7 @@ TEST(Script, BadLinesNameTheLine) {
   expect_error_on_line("wait\n\nfrobnicate 3\n", 3, "unknown command 'frobnicate'");
   expect_error_on_line("set 0 diffuse 1 0\n", 1, "missing colour");
   expect_error_on_line("set 0 gloss 5\n", 1, "unknown material field 'gloss'");
-  expect_error_on_line("set x shininess 5\n", 1, "object index");
+  expect_error_on_line("set\n", 1, "missing object (an index or a name)");
   expect_error_on_line("model lambert\n", 1, "phong or blinn-phong");
   expect_error_on_line("quit\nquit now\n", 2, "unexpected 'now'");
   expect_error_on_line("screenshot a.png movie\n", 1, "viewport, terms, window, shown or exr");

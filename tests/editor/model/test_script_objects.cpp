@@ -114,6 +114,30 @@ TEST(ScriptObjects, SelectTakesANameToo) {
   EXPECT_NE(errors.find("run.txt:1: no object called 'lefty'"), std::string::npos) << errors;
 }
 
+// docs/editor.md: "OBJECT is an index or a name" for `set` and `preset` too (they took an index
+// only: "expected an index for object index, got 'right'").
+TEST(ScriptObjects, SetAndPresetTakeANameToo) {
+  test::QuietScriptHost host(test::two_sphere_scene());  // 0 "left", 1 "right"
+  std::string errors;
+  ASSERT_EQ(run_all("set right shininess 5\n"
+                    "preset left ruby\n"
+                    "set \"right\" diffuse 0.25\n",
+                    host, errors),
+            0)
+      << errors;
+  const Scene& scene = host.layer().scene();
+  EXPECT_EQ(scene.materials[scene.objects[1].material].shininess, 5.0f);
+  EXPECT_EQ(scene.materials[scene.objects[1].material].diffuse, glm::vec3(0.25f));
+  EXPECT_EQ(scene.materials[scene.objects[0].material].preset, "ruby");
+  EXPECT_EQ(host.layer().undo_count(), 3u);
+  EXPECT_EQ(run_all("set rigth shininess 7\n", host, errors), 2);
+  EXPECT_NE(errors.find("run.txt:1: no object called 'rigth' (did you mean 'right'"),
+            std::string::npos)
+      << errors;
+  // A field is still checked when the script is read, before any line runs.
+  test::expect_script_error("set right gloss 5\n", 1, "unknown material field 'gloss'");
+}
+
 TEST(ScriptObjects, AddedObjectsAreSelected) {
   test::QuietScriptHost host(test::two_sphere_scene());
   std::string errors;

@@ -232,13 +232,24 @@ bool parse_raster_line(Tokens& t, const std::string& verb, ScriptAction& out) {
 
 ScriptAction parse_line(Tokens& t) {
   const std::string& verb = t.words[0];
+  // `preset OBJECT NAME`, `set OBJECT FIELD VALUE...`: an object named by its name is found when
+  // the line runs (object_line_command), as for the object lines.
   if (verb == "preset") {
-    const int object = t.index("object index");
-    return Command(ApplyPreset{object, t.word("preset name")});
+    ObjectLineAction a;
+    a.object = parse_object_ref(t);
+    a.verb = ObjectLineAction::Verb::preset;
+    a.text = t.word("preset name");
+    if (a.object.index >= 0) return Command(ApplyPreset{a.object.index, a.text});
+    return a;
   }
   if (verb == "set") {
-    const int object = t.index("object index");
-    return parse_field(t, material_fields(), FieldPart::material, object, t.word("field"));
+    ObjectLineAction a;
+    a.object = parse_object_ref(t);
+    a.verb = ObjectLineAction::Verb::field;
+    a.field = std::get<SetField>(parse_field(t, material_fields(), FieldPart::material,
+                                             std::max(a.object.index, 0), t.word("field")));
+    if (a.object.index >= 0) return Command(a.field);
+    return a;
   }
   if (verb == "model") {
     SetModel c;

@@ -163,15 +163,17 @@ struct ObjectLineAction {
     solo,
     name,
     rename_material,
-    assign
+    assign,
+    preset  // `preset OBJECT NAME` with OBJECT a name
   };
   Verb verb = Verb::add;
   ObjectRef object;
   ObjectType type = ObjectType::sphere;  // add
   std::string text;   // add_model: the path; name: the new name; rename_material: OLD;
-                      // assign: the material's name
+                      // assign: the material's name; preset: the preset's name
   std::string text2;  // rename_material: NEW
-  SetField field;     // field: the transform field and value (index set when the line runs)
+  SetField field;     // field: a transform or material field and its value (the index is set
+                      // when the line runs)
 };
 
 // `save PATH`: the scene saved to PATH as File > Save scene as does (PATH becomes its file).

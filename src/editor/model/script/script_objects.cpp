@@ -169,6 +169,8 @@ Command object_line_command(const Scene& scene, const ObjectLineAction& line,
       return SoloObjects{{object}};
     case Verb::name:
       return RenameObject{object, line.text};
+    case Verb::preset:
+      return ApplyPreset{object, line.text};
     case Verb::assign: {
       const int material = find_material(scene, line.text);
       if (material < 0) {
