@@ -97,6 +97,11 @@ void ProgressiveRenderer::Impl::publish_frame(std::shared_ptr<RenderedFrame> fra
   info.rays = rays;
   info.converged = converged;
   info.cause = cause;
+  const bool exact_path = ctx.plan.environment && ctx.environment.sampler != nullptr;
+  info.env_target = exact_path ? scene->render.env_samples : 0;
+  // The estimates belong to the full-size samples; a coarse preview shows the fast path.
+  const bool full_size = width == scene->render.width && height == scene->render.height;
+  info.env_steps = exact_path && full_size ? environment.steps : 0;
   {
     std::lock_guard<std::mutex> lock(mutex);
     first_in_flight = false;

@@ -15,17 +15,21 @@
 namespace gloss {
 
 struct FrameInfo {
-  std::uint64_t generation = 0;           // counts set_scene() calls that changed something
-  int pass = 0;                           // passes published for this generation so far, from 0
-  int width = 0, height = 0;              // size of this pass's images (coarse passes are smaller)
-  int spp = 0;                            // samples per pixel in these images
-  int target_spp = 0;                     // scene.render.spp
-  double pass_ms = 0;                     // compute time of this pass
-  double since_change_ms = 0;             // from the set_scene() of this generation to publication
-  long long rays = 0;                     // primary + shadow rays traced for this pass
-  std::size_t refined_traced = 0;         // adaptive: pixels whose refined samples it traced anew
-  bool sky_sampled = false;               // it sampled the sky anew (the map where rays missed)
-  bool converged = false;                 // nothing more will be computed for this scene
+  std::uint64_t generation = 0;    // counts set_scene() calls that changed something
+  int pass = 0;                    // passes published for this generation so far, from 0
+  int width = 0, height = 0;       // size of this pass's images (coarse passes are smaller)
+  int spp = 0;                     // samples per pixel in these images
+  int target_spp = 0;              // scene.render.spp
+  double pass_ms = 0;              // compute time of this pass
+  double since_change_ms = 0;      // from the set_scene() of this generation to publication
+  long long rays = 0;              // primary + shadow rays traced for this pass
+  std::size_t refined_traced = 0;  // adaptive: pixels whose refined samples it traced anew
+  bool sky_sampled = false;        // it sampled the sky anew (the map where rays missed)
+  bool converged = false;          // nothing more will be computed for this scene
+  // An environment light's exact path (docs/engine.md, "The environment"): the directions every
+  // sample has taken so far, against render.env_samples. 0 of N: the environment is still the
+  // fast path's (no shadows, no horizon). env_target 0: no exact path to take.
+  int env_steps = 0, env_target = 0;
   ChangeClass cause = ChangeClass::full;  // what the edit that led here invalidated
 };
 

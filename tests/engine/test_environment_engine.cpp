@@ -148,6 +148,20 @@ TEST(EnvironmentEngine, ExactEstimatesConvergeToTheOneShotImageWithoutPrimaryRay
   scene.render.sampling = Sampling::uniform;
   auto frame = converge(engine, scene, frames);
   expect_fresh(*frame, scene);
+  {
+    // The frames say how far the exact path got (the editor's status bar shows it): full-size
+    // frames of the fast path report 0 of 32 directions, then 16 and 32 (16, then doubling).
+    std::lock_guard<std::mutex> lock(frames.mutex);
+    std::vector<int> steps;
+    for (const FrameInfo& info : frames.seen) {
+      EXPECT_EQ(info.env_target, 32);
+      if (info.width == scene.render.width && (steps.empty() || steps.back() != info.env_steps)) {
+        steps.push_back(info.env_steps);
+      }
+    }
+    EXPECT_EQ(steps, (std::vector<int>{0, 16, 32}));
+    EXPECT_EQ(frames.seen.back().env_steps, 32);
+  }
   // A rotation: the first frame recomputes the fast path from the cached hits (no ray), the
   // next ones trace the estimates' shadow rays only: fewer than one primary ray per sample each
   // step would need besides.

@@ -55,6 +55,16 @@ void renderer_texts(const Viewport& viewport, const ViewSettings& view, std::str
                   info.spp, info.target_spp, info.width, info.height, info.pass_ms, speed.c_str(),
                   state);
     brief = format("ray traced | %d/%d spp | %s", info.spp, info.target_spp, state);
+    // The environment's exact path follows the samples, for minutes on a large image: say which
+    // image is shown (the fast path has no shadows) and how far it got.
+    if (info.env_target > 0) {
+      const std::string environment =
+          info.env_steps == 0
+              ? std::string(" | environment: fast preview, no shadows yet")
+              : format(" | environment %d/%d directions", info.env_steps, info.env_target);
+      full += environment;
+      brief += environment;
+    }
   } else {
     full = brief = "waiting for the first frame";
   }
