@@ -18,6 +18,7 @@
 
 #include "base/assets.h"
 #include "base/error.h"
+#include "base/text/ascii.h"
 #include "base/text/number_text.h"
 #include "base/text/text_distance.h"
 #include "base/version.h"
@@ -187,7 +188,19 @@ class OutputWriter {
   bool m_committed = false;
 };
 
+// Each output is written in its option's format whatever its name says; a name whose extension
+// says another (PNG bytes in shot.jpg) is refused before anything is rendered.
+void check_extension(const std::string& path, const char* option, const char* extension,
+                     const char* format) {
+  if (path.empty() || lower_extension(path) == extension) return;
+  throw InputError(path,
+                   std::string(option) + " writes " + format + ": name the file *" + extension);
+}
+
 void run_render(RenderArgs args) {
+  check_extension(args.png, "-o", ".png", "PNG");
+  check_extension(args.pfm, "--pfm", ".pfm", "PFM");
+  check_extension(args.exr, "--exr", ".exr", "OpenEXR");
   std::vector<std::string> warnings, notes;
   Scene scene = load_scene(args.scene, &warnings, &notes);
   apply_overrides(args, scene);

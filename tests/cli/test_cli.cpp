@@ -173,6 +173,16 @@ TEST_F(Cli, InvalidSceneContentExitsTwoNamingTheField) {
   expect_failure(run("render " + scene("model.json")), 2, "model.json: render.model:");
 }
 
+// PNG bytes in a file named .jpg: refused, exit 2, nothing written (new-user review).
+TEST_F(Cli, AnOutputNamedForAnotherFormatExitsTwo) {
+  expect_failure(run("render " + scene() + " -o shot.jpg"), 2,
+                 "shot.jpg: -o writes PNG: name the file *.png");
+  expect_failure(run("render " + scene() + " --pfm out.png"), 2, "out.png: --pfm writes PFM");
+  expect_failure(run("render " + scene() + " --exr out.hdr"), 2, "out.hdr: --exr writes OpenEXR");
+  EXPECT_FALSE(std::filesystem::exists(outputs.path() / "shot.jpg"));
+  EXPECT_EQ(run("render " + scene() + " -o SHOT.PNG --width 8 --height 6").status, 0);
+}
+
 TEST_F(Cli, OutputInAMissingFolderExitsOne) {
   expect_failure(run("render " + scene() + " -o no/such/folder/out.png"), 1, "no/such/folder");
   expect_failure(run("render " + scene() + " -o out.png --pfm no/such/out.pfm"), 1, "no/such");
@@ -181,11 +191,11 @@ TEST_F(Cli, OutputInAMissingFolderExitsOne) {
 TEST_F(Cli, OutputInAReadOnlyFolderExitsOneAndLeavesNothing) {
   std::string target;
   if (::geteuid() == 0) {
-    target = "/proc/gloss-cli-test-out.png";  // root may write anywhere except such file systems
+    target = "/proc/gloss-cli-test-out.pfm";  // root may write anywhere except such file systems
   } else {
     std::filesystem::create_directories(outputs.path() / "locked");
     ::chmod((outputs.path() / "locked").c_str(), 0555);
-    target = "locked/out.png";
+    target = "locked/out.pfm";
   }
   const CliRun r = run("render " + scene() + " -o out.png --pfm " + target);
   EXPECT_EQ(r.status, 1) << r.err;
