@@ -80,7 +80,11 @@ int main(int argc, char** argv) {
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return cli.exit(e) == 0 ? 0 : 2;
+    // --help and --version arrive as "errors" with exit code 0; CLI11 prints them. Anything else
+    // is one error line, as every other bad input is.
+    if (e.get_exit_code() == 0) return cli.exit(e);
+    std::fprintf(stderr, "error: %s (gloss --help lists the options)\n", e.what());
+    return 2;
   }
   std::optional<Scene> scene;
   std::optional<Script> script;

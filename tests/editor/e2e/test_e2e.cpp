@@ -6,6 +6,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -27,9 +28,10 @@ class EditorE2E : public test::EditorProcessTest {
  protected:
   EditorE2E() : EditorProcessTest("gloss-e2e-") {}
   // Runs gloss on the test scene with script_text; with_display = false runs it without X.
-  EditorRun run(const std::string& script_text, bool with_display = true) {
+  EditorRun run(const std::string& script_text, bool with_display = true,
+                const std::string& options = "") {
     return run_editor(std::string(GLOSS_APP_TEST_DATA) + "/gold_sphere.json", script_text,
-                      with_display);
+                      with_display, options);
   }
 };
 
@@ -127,6 +129,16 @@ TEST_F(EditorE2E, ABadScriptLineIsAnErrorNamingTheLine) {
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("script.txt:3:"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("frobnicate"), std::string::npos) << r.err;
+}
+
+// A bad command-line option is one error line, exit 2, as every other bad input (it was CLI11's
+// two lines without "error:").
+TEST_F(EditorE2E, ABadOptionIsOneErrorLine) {
+  const EditorRun r = run("quit\n", false, "--bogus");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("--bogus"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
 TEST_F(EditorE2E, ACommandThatFailsAtRunTimeNamesItsLine) {

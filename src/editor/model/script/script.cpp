@@ -291,7 +291,12 @@ ScriptAction parse_line(Tokens& t) {
   }
   if (verb == "undo") return UndoAction{};
   if (verb == "redo") return RedoAction{};
-  if (verb == "wait") return t.done() ? WaitAction{} : WaitAction{t.number("timeout seconds")};
+  if (verb == "wait") {
+    if (t.done()) return WaitAction{};
+    const double seconds = t.number("timeout seconds");
+    if (!(seconds > 0.0)) throw std::runtime_error("wait: the timeout must be > 0 seconds");
+    return WaitAction{seconds};
+  }
   if (verb == "screenshot") {
     ScreenshotAction s;
     s.path = t.word("path");
