@@ -233,7 +233,9 @@ void draw_layout(App& app) {
   draw_quality_panel(app.quality, app.windows, app.view, app.commands,
                      ImVec2(viewport_pos.x + viewport_size.x - quality_w, viewport_pos.y),
                      ImVec2(quality_w, viewport_size.y));
-  app.notices.draw(viewport_pos.x + viewport_size.x, viewport_pos.y + viewport_size.y);
+  // Below the viewport's maximise button.
+  app.notices.draw(viewport_pos.x + viewport_size.x,
+                   viewport_pos.y + ImGui::GetFrameHeight() + 8.0f);
   FileBrowser& browser = app.session.browser;
   std::string chosen;
   if (browser.draw(app.session.recent.of(recent_kind(browser.purpose)), chosen)) {

@@ -1,6 +1,7 @@
 #include "editor/ui/notices.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include <imgui.h>
@@ -37,14 +38,24 @@ double Notices::expire(double now_s) {
   return next;
 }
 
-void Notices::draw(float right, float bottom) const {
+void Notices::draw(float right, float top) const {
   if (items.empty()) return;
-  ImGui::SetNextWindowPos(ImVec2(right - 12.0f, bottom - 12.0f), ImGuiCond_Always,
-                          ImVec2(1.0f, 1.0f));
+  // The window's size from the wrapped texts themselves: an auto-resized window takes its size
+  // from the frame before, and a screenshot of the frame a notice arrived cut its last line.
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float wrap = ImGui::GetFontSize() * 40.0f;
+  ImVec2 content(0.0f, 0.0f);
+  for (const Notice& n : items) {
+    const ImVec2 size = ImGui::CalcTextSize(n.text.c_str(), nullptr, false, wrap);
+    content.x = std::max(content.x, std::ceil(size.x) + 1.0f);  // no wrap from rounding
+    content.y += size.y + (content.y > 0.0f ? style.ItemSpacing.y : 0.0f);
+  }
+  ImGui::SetNextWindowPos(ImVec2(right - 12.0f, top), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+  ImGui::SetNextWindowSize(
+      ImVec2(content.x + 2.0f * style.WindowPadding.x, content.y + 2.0f * style.WindowPadding.y));
   ImGui::SetNextWindowBgAlpha(0.85f);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                                 ImGuiWindowFlags_AlwaysAutoResize |
-                                 ImGuiWindowFlags_NoSavedSettings |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoInputs |
                                  ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
   if (!ImGui::Begin("##notices", nullptr, flags)) {
     ImGui::End();
@@ -53,7 +64,7 @@ void Notices::draw(float right, float bottom) const {
   for (const Notice& n : items) {
     const ImVec4 colour =
         n.error ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.6f, 0.95f, 0.6f, 1.0f);
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40.0f);
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + wrap);
     ImGui::TextColored(colour, "%s", n.text.c_str());
     ImGui::PopTextWrapPos();
   }

@@ -1,6 +1,8 @@
 #pragma once
-// Short messages shown over the bottom-right corner of the viewport: saved files (with their
-// path), errors from panels and dialogs. Each stays for a few seconds; errors stay longer.
+// Short messages shown over the top-right corner of the viewport: saved files (with their path),
+// errors from panels and dialogs. Each stays for a few seconds; errors stay longer. The top
+// right, because the pixel inspector, the term sheet's total and the lobe view's notes sit at the
+// bottom, where they were covered.
 #include <string>
 #include <vector>
 
@@ -21,8 +23,8 @@ struct Notices {
   // Drops expired notices; returns seconds until the next expiry (for the event-loop timeout),
   // or a negative value when none is shown.
   double expire(double now_s);
-  // Draws the notices stacked above 'bottom_right' (screen coordinates).
-  void draw(float right, float bottom) const;
+  // Draws the shown notices stacked below (right, top) (screen coordinates), right-aligned.
+  void draw(float right, float top) const;
 };
 
 }  // namespace gloss

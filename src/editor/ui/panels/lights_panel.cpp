@@ -51,7 +51,7 @@ void draw_lights(Commands& commands, Selection& selection, ViewSettings& view) {
     ImGui::SetTooltip("a directional light from the eye that turns with the camera");
   }
   if (count == 0) {
-    ImGui::TextDisabled("no lights: only ambient, emission and the environment show");
+    disabled_text_wrapped("no lights: only ambient, emission and the environment show");
     return;
   }
   selection.light = std::clamp(selection.light, 0, count - 1);

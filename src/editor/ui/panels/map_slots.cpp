@@ -53,8 +53,10 @@ void draw_slot(Commands& commands, FileBrowser& browser, MapThumbnails& thumbnai
     ImGui::SameLine();
     // Applied on Enter: one command (one undo step) per scale typed, not one per keystroke.
     float scale[2] = {map.scale.x, map.scale.y};
-    ImGui::SetNextItemWidth(-1.0f);
-    if (ImGui::InputFloat2("##scale", scale, "%.3g", ImGuiInputTextFlags_EnterReturnsTrue)) {
+    // Labelled: two bare numbers beside Load and Clear did not say what they are.
+    ImGui::SetNextItemWidth(
+        -(ImGui::CalcTextSize("scale").x + ImGui::GetStyle().ItemInnerSpacing.x));
+    if (ImGui::InputFloat2("scale", scale, "%.3g", ImGuiInputTextFlags_EnterReturnsTrue)) {
       TextureMap scaled = map;
       scaled.scale = glm::vec2(scale[0], scale[1]);
       set_map(commands, object, slot, scaled);

@@ -14,6 +14,13 @@ inline void section_title(const char* title) {
   ImGui::Separator();
 }
 
+// A note in the disabled colour, wrapped at the window's edge instead of cut there.
+inline void disabled_text_wrapped(const char* text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", text);
+  ImGui::PopStyleColor();
+}
+
 // The width of a radio button or checkbox with label: the box, the gap, the text.
 inline float toggle_width(const char* label) {
   return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x +

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "editor/model/document/document.h"
+#include "editor/ui/panels/panel_widgets.h"
 #include "editor/ui/viewport/lobe_plots.h"
 #include "io/material/preset_table.h"
 
@@ -32,7 +33,8 @@ void draw_lobe_controls(ViewSettings& view, bool document_energy) {
   ImGui::SliderFloat("light elevation", &view.lobe_elevation_deg, 0.0f, 90.0f,
                      "%.1f\xC2\xB0 above the surface");
   view.lobe_elevation_deg = std::clamp(view.lobe_elevation_deg, 0.0f, 90.0f);
-  ImGui::SameLine();
+  same_line_if_fits(200.0f + ImGui::GetStyle().ItemInnerSpacing.x +
+                    ImGui::CalcTextSize("energy normalisation").x);
   if (ImGui::BeginCombo("energy normalisation", energy_label(view.lobe_energy, document_energy))) {
     for (LobeEnergy e : {LobeEnergy::scene, LobeEnergy::on, LobeEnergy::off}) {
       if (ImGui::Selectable(energy_label(e, document_energy), e == view.lobe_energy)) {
@@ -42,14 +44,15 @@ void draw_lobe_controls(ViewSettings& view, bool document_energy) {
     ImGui::EndCombo();
   }
   ImGui::PopItemWidth();
-  ImGui::SameLine();
+  // The row wraps in a narrow viewport instead of running past its edge.
+  same_line_if_fits(toggle_width("log radius"));
   ImGui::Checkbox("log radius", &view.lobe_log_radius);
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
         "three decades of luminance, one ring each: a physical reference's\n"
         "bright peak and a classic lobe of ks <= 1 in one plot");
   }
-  ImGui::SameLine();
+  same_line_if_fits(toggle_width("4x rule"));
   ImGui::Checkbox("4x rule", &view.keep_highlight_size);
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
