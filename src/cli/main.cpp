@@ -5,11 +5,13 @@
 #include <exception>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "base/error.h"
 #include "base/text/printable_text.h"
+#include "base/text/text_distance.h"
 #include "base/version.h"
 #include "cli/commands.h"
 
@@ -49,6 +51,20 @@ int main(int argc, char** argv) {
   gloss::add_tradeoff_command(app);
   gloss::add_fit_command(app);
   gloss::add_export_commands(app);
+
+  // A first word that names no command: CLI11 would say only "A subcommand is required".
+  if (argc > 1 && argv[1][0] != '-') {
+    std::vector<std::string> commands;
+    for (const CLI::App* sub : app.get_subcommands({})) commands.push_back(sub->get_name());
+    if (std::find(commands.begin(), commands.end(), argv[1]) == commands.end()) {
+      // A suggestion only within two edits ("rendr"): "frobnicate" is no misspelt "fit".
+      std::vector<std::string> nearest = gloss::nearest_words(argv[1], commands, 1);
+      if (!nearest.empty() && gloss::edit_distance(argv[1], nearest[0]) > 2) nearest.clear();
+      return report_error(std::string("unknown command '") + argv[1] + "'" +
+                              gloss::did_you_mean(nearest) + "; gloss-cli --help lists them",
+                          2);
+    }
+  }
 
   // Run: the chosen subcommand's callback runs inside parse.
   try {

@@ -154,6 +154,14 @@ TEST_F(Cli, UnknownOptionExitsTwo) {
   expect_failure(run("render " + scene() + " -o out.png --glossy"), 2, "tiny.json");
 }
 
+TEST_F(Cli, AnUnknownCommandIsNamedWithTheNearestOne) {
+  expect_failure(run("rendr " + scene()), 2,
+                 "error: unknown command 'rendr' (did you mean 'render'?)");
+  const CliRun far = run("frobnicate");
+  EXPECT_EQ(far.status, 2);
+  EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
+}
+
 TEST_F(Cli, ImpossibleOverridesExitTwoNamingTheOption) {
   expect_failure(run("render " + scene() + " -o out.png --width 0"), 2, "tiny.json: --width:");
   expect_failure(run("render " + scene() + " -o out.png --height 99999"), 2, "--height");

@@ -58,7 +58,13 @@ LineResult export_glsl_line(ScriptHost& host, const ExportGlslAction& a, const s
     std::fprintf(stderr, "error: %s%s\n", where.c_str(), e.what());
     return LineResult::stop(1);
   }
-  std::printf("export glsl: %s (material %d of object %d)\n", a.path.c_str(), material, object);
+  // Named as the panels name them: the material's name, the object's label.
+  const std::string material_name =
+      material >= 0 && material < static_cast<int>(scene.material_names.size())
+          ? scene.material_names[static_cast<std::size_t>(material)]
+          : std::to_string(material);
+  std::printf("export glsl: %s (material '%s' of %s)\n", a.path.c_str(), material_name.c_str(),
+              object_label(scene, object).c_str());
   std::fflush(stdout);
   return LineResult::go_on();
 }
