@@ -63,6 +63,21 @@ TEST(SceneFiles, AScenesFilesMadeAbsoluteAgainstItsFolder) {
   EXPECT_EQ(scene.environment.file, "/data/environments/studio.exr");
 }
 
+// An untitled scene's relative names are relative to the current folder (as the loader reads
+// them): saved, they are named from the new file's folder.
+TEST(SceneFiles, AnUntitledScenesNamesAreRelativeToTheCurrentFolder) {
+  Scene scene = scene_naming_files();
+  scene.path.clear();
+  const std::filesystem::path here = std::filesystem::current_path();
+  rebase_scene_files(scene, (here / "saved" / "room.json").string());
+  EXPECT_EQ(scene.objects[0].params.file, "../../models/cup.obj");  // was ../models/cup.obj
+  scene = scene_naming_files();
+  scene.path.clear();
+  make_scene_files_absolute(scene, "");
+  EXPECT_EQ(scene.environment.file,
+            (here.parent_path() / "environments" / "studio.exr").lexically_normal().string());
+}
+
 TEST(SceneFiles, MovingTheSceneLeavesTheSharedMapsOfItsCopiesAlone) {
   const Scene original = scene_naming_files();
   Scene moved = original;  // shares the maps (material.h)

@@ -40,17 +40,23 @@ void for_each_scene_file(Scene& scene, const std::function<void(std::string&)>& 
   if (!scene.environment.file.empty()) rename(scene.environment.file);
 }
 
-fs::path absolute_folder(const std::string& path) {
+// The folder names are relative to, absolute: the current folder for "" (an untitled scene's
+// relative names are relative to it, as the loader resolves them).
+fs::path absolute_of(fs::path folder) {
+  if (folder.empty()) folder = ".";
   std::error_code ec;
-  const fs::path folder = fs::absolute(fs::path(path).parent_path(), ec);
-  return (ec ? fs::path(path).parent_path() : folder).lexically_normal();
+  fs::path absolute = (fs::absolute(folder, ec)).lexically_normal();
+  if (ec) return folder.lexically_normal();
+  // "/a/b/." normalises to "/a/b/": without the trailing separator it compares equal to "/a/b".
+  if (!absolute.has_filename() && absolute.has_relative_path()) absolute = absolute.parent_path();
+  return absolute;
 }
 
 }  // namespace
 
 void rebase_scene_files(Scene& scene, const std::string& new_path) {
-  const fs::path from = absolute_folder(scene.path);
-  const fs::path to = absolute_folder(new_path);
+  const fs::path from = absolute_of(fs::path(scene.path).parent_path());
+  const fs::path to = absolute_of(fs::path(new_path).parent_path());
   if (from != to) {
     for_each_scene_file(scene, [&](std::string& file) {
       const fs::path name(file);
@@ -64,12 +70,10 @@ void rebase_scene_files(Scene& scene, const std::string& new_path) {
 }
 
 void make_scene_files_absolute(Scene& scene, const std::string& folder) {
-  std::error_code ec;
-  const fs::path base = fs::absolute(fs::path(folder), ec);
+  const fs::path base = absolute_of(folder);
   for_each_scene_file(scene, [&](std::string& file) {
     const fs::path name(file);
-    if (name.is_absolute() || ec) return;
-    file = (base / name).lexically_normal().generic_string();
+    if (!name.is_absolute()) file = (base / name).lexically_normal().generic_string();
   });
 }
 
