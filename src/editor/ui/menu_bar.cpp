@@ -44,7 +44,7 @@ void file_menu(Commands& commands, const Selection& selection, Session& session,
   if (ImGui::MenuItem("Add model...")) browser.start(BrowsePurpose::add_model, path, "");
   ImGui::Separator();
   // A shipped scene is never saved over: Save asks for a name in the user's folder (Save as).
-  const bool own_file = !path.empty() && !is_shipped_path(path);
+  const bool own_file = saves_in_place(path);
   if (ImGui::MenuItem("Save scene", "Ctrl+Shift+S", false, own_file)) {
     try {
       files.save_scene_as(path);

@@ -209,6 +209,10 @@ class ScriptPlayer::Host : public ScriptHost {
     return LineResult::go_on();
   }
   LineResult save(const SaveAction& a, const std::string& where) override {
+    if (const std::string refusal = shipped_scene_refusal(a.path); !refusal.empty()) {
+      std::fprintf(stderr, "error: %s%s\n", where.c_str(), refusal.c_str());
+      return LineResult::stop(2);  // bad input, as the core host says (script_runner.cpp)
+    }
     try {
       m_app.files.save_scene_as(a.path);
     } catch (const std::exception& e) {

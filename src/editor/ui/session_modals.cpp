@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "editor/model/session/file_defaults.h"
 #include "editor/ui/panels/panels.h"
 #include "editor/ui/parts/commands.h"
 #include "editor/ui/parts/file_actions.h"
@@ -13,6 +14,15 @@
 #include "editor/ui/parts/session.h"
 
 namespace gloss {
+
+namespace {
+// Why a question offers no "save" answer: the scene has no file, or its file is one gloss ships.
+void save_as_hint(const std::string& path) {
+  ImGui::TextDisabled(path.empty() ? "(untitled: use Save scene as... first to keep them)"
+                                   : "(a scene gloss ships: use Save scene as... first to keep "
+                                     "them)");
+}
+}  // namespace
 
 void draw_recovery_modal(const Session& session, FileActions& files) {
   if (!session.offered_recovery) return;
@@ -43,7 +53,10 @@ void draw_quit_modal(OpenWindows& windows, Commands& commands, FileActions& file
   if (!ImGui::BeginPopupModal(id, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
   const std::string& path = commands.scene().path;
   ImGui::TextUnformatted("The scene has changes that are not saved.");
-  if (!path.empty() && ImGui::Button("Save and quit", ImVec2(150, 0))) {
+  // Never over a file gloss ships (it was: Save and quit rewrote assets/scenes/spheres.json).
+  const bool in_place = saves_in_place(path);
+  if (!in_place) save_as_hint(path);
+  if (in_place && ImGui::Button("Save and quit", ImVec2(150, 0))) {
     try {
       files.save_scene_as(path);
       run.quit = true;
@@ -53,7 +66,7 @@ void draw_quit_modal(OpenWindows& windows, Commands& commands, FileActions& file
     windows.quit_question = false;
     ImGui::CloseCurrentPopup();
   }
-  if (!path.empty()) ImGui::SameLine();
+  if (in_place) ImGui::SameLine();
   if (ImGui::Button("Quit without saving", ImVec2(150, 0))) {
     run.quit = true;
     windows.quit_question = false;
@@ -76,12 +89,13 @@ void draw_open_modal(Session& session, Commands& commands, FileActions& files) {
   ImGui::TextUnformatted("The scene has changes that are not saved.");
   ImGui::Text("Open %s anyway?",
               std::filesystem::path(session.unsaved.waiting_path()).filename().string().c_str());
-  if (path.empty()) ImGui::TextDisabled("(untitled: use Save scene as... first to keep them)");
+  const bool in_place = saves_in_place(path);
+  if (!in_place) save_as_hint(path);
   std::optional<UnsavedAnswer> answer;
-  if (!path.empty() && ImGui::Button("Save, then open", ImVec2(150, 0))) {
+  if (in_place && ImGui::Button("Save, then open", ImVec2(150, 0))) {
     answer = UnsavedAnswer::save;
   }
-  if (!path.empty()) ImGui::SameLine();
+  if (in_place) ImGui::SameLine();
   if (ImGui::Button("Discard changes", ImVec2(150, 0))) answer = UnsavedAnswer::discard;
   ImGui::SameLine();
   if (ImGui::Button("Cancel", ImVec2(150, 0)) ||

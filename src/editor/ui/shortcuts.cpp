@@ -91,7 +91,7 @@ void object_action(App& app, ShortcutAction action) {
 // asks for a name in the user's folder instead.
 void save_scene_shortcut(App& app) {
   const std::string& path = app.document.scene().path;
-  if (path.empty() || is_shipped_path(path)) {
+  if (!saves_in_place(path)) {
     app.session.browser.start(BrowsePurpose::save_scene, path, scene_file_name(path));
     return;
   }

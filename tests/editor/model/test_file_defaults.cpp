@@ -49,6 +49,18 @@ TEST(FileDefaults, ShippedFilesAreTheAssetsFolders) {
   EXPECT_FALSE(is_shipped_path(""));
 }
 
+// "Save and quit" and "Save, then open" rewrote a shipped scene (new-user review): only a scene
+// with a file of its own saves in place; every save asks shipped_scene_refusal.
+TEST(FileDefaults, OnlyAScenesOwnFileIsSavedInPlace) {
+  ScratchFolder folder;
+  EXPECT_TRUE(saves_in_place(folder.file("scene.json")));
+  EXPECT_FALSE(saves_in_place(asset_path("scenes/spheres.json")));
+  EXPECT_FALSE(saves_in_place(""));
+  EXPECT_EQ(shipped_scene_refusal(folder.file("scene.json")), "");
+  EXPECT_NE(shipped_scene_refusal(asset_path("scenes/spheres.json")).find("a scene gloss ships"),
+            std::string::npos);
+}
+
 TEST(FileDefaults, ASaveStartsInTheUsersFolderNeverInTheAssets) {
   ScratchFolder home;
   std::filesystem::create_directories(home.path() / "Papers");

@@ -1,7 +1,10 @@
 // Script parsing (every command of docs/editor.md) and replay through the command layer; bad
 // lines are errors that name the file and the line.
+#include <filesystem>
+
 #include <gtest/gtest.h>
 
+#include "base/assets.h"
 #include "base/error.h"
 #include "editor/model/document/command_layer.h"
 #include "editor/model/script/script.h"
@@ -157,6 +160,20 @@ TEST(Script, ReplayGoesThroughTheCommandLayer) {
   // Script lines are sealed one by one: undo takes back the second only.
   EXPECT_EQ(host.layer().scene().materials[0].shininess, 5.0f);
   EXPECT_EQ(errors, "");
+}
+
+// A script never saves over a scene gloss ships: exit 2, nothing written.
+TEST(Script, SavingOverAShippedSceneIsRefused) {
+  RecordingHost host(test::two_sphere_scene());
+  std::string errors;
+  const std::string target = asset_path("scenes/zz-save-refused-test.json");
+  const LineResult r = run_all("save " + target + "\n", host, errors);
+  EXPECT_EQ(r.next, LineResult::Next::stop);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(errors.find("run.txt:1: " + target + " is a scene gloss ships"), std::string::npos)
+      << errors;
+  EXPECT_FALSE(std::filesystem::exists(target));
+  std::filesystem::remove(target);  // should the refusal ever fail, no stray file stays
 }
 
 TEST(Script, ViewLinesAndWaitsGoToTheHost) {

@@ -279,6 +279,9 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
 }
 
 LineResult ScriptHost::save(const SaveAction& a, const std::string& where) {
+  if (const std::string refusal = shipped_scene_refusal(a.path); !refusal.empty()) {
+    return bad_line(where, refusal);
+  }
   try {
     save_scene(layer().scene(), a.path);  // relative file names follow the new folder
   } catch (const std::exception& e) {

@@ -38,6 +38,11 @@ bool is_shipped_path(const std::string& path) {
   return is_within(canonical_or_normal(path), canonical_or_normal(asset_dir()));
 }
 
+std::string shipped_scene_refusal(const std::string& path) {
+  if (!is_shipped_path(path)) return "";
+  return path + " is a scene gloss ships: save it under another name";
+}
+
 fs::path save_folder(const fs::path& last) {
   if (is_folder(last) && !is_shipped_path(last.string())) return last;
   return documents_dir();

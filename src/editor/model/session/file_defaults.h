@@ -14,6 +14,16 @@ namespace gloss {
 // assets/ or an install's share/gloss/assets): a file gloss ships, never overwritten.
 bool is_shipped_path(const std::string& path);
 
+// The reason a save to path is refused ("" when it is not a file gloss ships): every way of
+// saving a scene (the panels, the questions before quitting or opening, scripts) asks it.
+std::string shipped_scene_refusal(const std::string& path);
+
+// Whether a scene at path may be saved where it is (Save, Ctrl+Shift+S, "Save and quit", "Save,
+// then open"): it has a file and the file is not one gloss ships. Otherwise only Save as.
+inline bool saves_in_place(const std::string& path) {
+  return !path.empty() && !is_shipped_path(path);
+}
+
 // The folder a save or an export starts in: last (the folder of the user's last chosen file)
 // when it is a folder and not shipped, else documents_dir() (config_paths.h).
 std::filesystem::path save_folder(const std::filesystem::path& last);

@@ -95,7 +95,11 @@ void FileActions::add_model(const std::string& path) {
 }
 
 void FileActions::save_scene_as(const std::string& requested) {
-  const std::string path = requested;    // may refer into the document, which changes below
+  const std::string path = requested;  // may refer into the document, which changes below
+  // The last guard: no caller writes over a scene gloss ships (the panels offer Save as).
+  if (const std::string refusal = shipped_scene_refusal(path); !refusal.empty()) {
+    throw std::runtime_error(refusal);
+  }
   save_scene(m_document.scene(), path);  // relative file names follow the new folder
   m_document.set_path(path);
   m_document.mark_saved();
