@@ -22,6 +22,7 @@
 #include "base/assets.h"
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "base/text/ascii.h"
 #include "cli/commands.h"
 #include "cli/scene_messages.h"
 #include "io/scene/scene_loader.h"
@@ -140,6 +141,9 @@ void run_tradeoff_command(const TradeoffArgs& args) {
   const std::string script = plot_script();
   if (!args.csv.empty()) check_writable(args.csv);
   if (!args.plot.empty()) {
+    if (lower_extension(args.plot) != ".png") {
+      throw InputError(args.plot, "--plot writes PNG: name the file *.png");
+    }
     check_writable(args.plot);
     if (::access(kPython, X_OK) != 0) {
       throw RuntimeFailure("cannot write " + args.plot + ": " + kPython +
@@ -164,6 +168,9 @@ void run_tradeoff_command(const TradeoffArgs& args) {
     return true;
   });
 
+  if (rows.empty()) {  // every knob asked for was skipped (the notes above say why)
+    throw InputError(args.scene, "nothing measured: no knob asked for applies to this scene");
+  }
   const std::string csv = tradeoff_to_csv(rows);
   if (!args.csv.empty()) {
     write_text_atomically(args.csv, csv);

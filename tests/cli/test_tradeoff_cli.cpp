@@ -89,6 +89,21 @@ TEST_F(TradeoffCli, BadSceneExitsWith2NamingTheFile) {
   EXPECT_TRUE(outputs.entries().empty());
 }
 
+// The scene has no teapot: asked for the tessellation knob alone, nothing is measured. That is
+// said (exit 2), not an empty table, nor the plot script's TypeError; a plot not named .png is
+// refused before anything runs.
+TEST_F(TradeoffCli, NothingMeasuredAndAPlotNamedForAnotherFormatExitTwo) {
+  const TradeoffRun none = run(scene() + kSmall + " --knobs tessellation --plot p.png");
+  EXPECT_EQ(none.status, 2);
+  EXPECT_NE(none.err.find("nothing measured: no knob asked for applies to this scene"),
+            std::string::npos)
+      << none.err;
+  const TradeoffRun jpg = run(scene() + kSmall + " --plot p.jpg");
+  EXPECT_EQ(jpg.status, 2);
+  EXPECT_NE(jpg.err.find("p.jpg: --plot writes PNG"), std::string::npos) << jpg.err;
+  EXPECT_TRUE(outputs.entries().empty());
+}
+
 TEST_F(TradeoffCli, UnwritableOutputExitsWith1BeforeMeasuring) {
   for (const char* option : {" --csv no/such/folder/rows.csv", " --plot no/such/folder/p.png"}) {
     const TradeoffRun r = run(scene() + kSmall + option);

@@ -233,9 +233,15 @@ void draw_layout(App& app) {
   draw_quality_panel(app.quality, app.windows, app.view, app.commands,
                      ImVec2(viewport_pos.x + viewport_size.x - quality_w, viewport_pos.y),
                      ImVec2(quality_w, viewport_size.y));
-  // Below the viewport's maximise button.
-  app.notices.draw(viewport_pos.x + viewport_size.x,
-                   viewport_pos.y + ImGui::GetFrameHeight() + 8.0f);
+  // Below the viewport's maximise button; in the lobe view, whose controls run along its top,
+  // above its bottom edge.
+  if (app.view.mode == ViewMode::lobe) {
+    app.notices.draw(viewport_pos.x + viewport_size.x, viewport_pos.y + viewport_size.y - 12.0f,
+                     false);
+  } else {
+    app.notices.draw(viewport_pos.x + viewport_size.x,
+                     viewport_pos.y + ImGui::GetFrameHeight() + 8.0f, true);
+  }
   FileBrowser& browser = app.session.browser;
   std::string chosen;
   if (browser.draw(app.session.recent.of(recent_kind(browser.purpose)), chosen)) {

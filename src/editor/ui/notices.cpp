@@ -38,7 +38,7 @@ double Notices::expire(double now_s) {
   return next;
 }
 
-void Notices::draw(float right, float top) const {
+void Notices::draw(float right, float y, bool from_top) const {
   if (items.empty()) return;
   // The window's size from the wrapped texts themselves: an auto-resized window takes its size
   // from the frame before, and a screenshot of the frame a notice arrived cut its last line.
@@ -50,7 +50,8 @@ void Notices::draw(float right, float top) const {
     content.x = std::max(content.x, std::ceil(size.x) + 1.0f);  // no wrap from rounding
     content.y += size.y + (content.y > 0.0f ? style.ItemSpacing.y : 0.0f);
   }
-  ImGui::SetNextWindowPos(ImVec2(right - 12.0f, top), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+  ImGui::SetNextWindowPos(ImVec2(right - 12.0f, y), ImGuiCond_Always,
+                          ImVec2(1.0f, from_top ? 0.0f : 1.0f));
   ImGui::SetNextWindowSize(
       ImVec2(content.x + 2.0f * style.WindowPadding.x, content.y + 2.0f * style.WindowPadding.y));
   ImGui::SetNextWindowBgAlpha(0.85f);

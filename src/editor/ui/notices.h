@@ -1,8 +1,8 @@
 #pragma once
 // Short messages shown over the top-right corner of the viewport: saved files (with their path),
 // errors from panels and dialogs. Each stays for a few seconds; errors stay longer. The top
-// right, because the pixel inspector, the term sheet's total and the lobe view's notes sit at the
-// bottom, where they were covered.
+// right, because the pixel inspector, the term sheet's total sit at the bottom, where they were
+// covered; in the lobe view, whose controls are at the top, the bottom right.
 #include <string>
 #include <vector>
 
@@ -23,8 +23,9 @@ struct Notices {
   // Drops expired notices; returns seconds until the next expiry (for the event-loop timeout),
   // or a negative value when none is shown.
   double expire(double now_s);
-  // Draws the shown notices stacked below (right, top) (screen coordinates), right-aligned.
-  void draw(float right, float top) const;
+  // Draws the notices right-aligned at `right`, stacked down from y (from_top) or up from it
+  // (screen coordinates).
+  void draw(float right, float y, bool from_top) const;
 };
 
 }  // namespace gloss

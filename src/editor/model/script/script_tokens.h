@@ -34,7 +34,10 @@ struct Tokens {
     const std::string& w = word(what);
     char* end = nullptr;
     const float value = std::strtof(w.c_str(), &end);
-    if (end == w.c_str() || *end != '\0') {
+    // No hexadecimal ("0x10" read as 16): a scene file's JSON has none. inf and nan pass on to
+    // the fields' own checks, which name the field.
+    const bool hexadecimal = w.find_first_of("xX") != std::string::npos;
+    if (end == w.c_str() || *end != '\0' || hexadecimal) {
       throw std::runtime_error(std::string("expected a number for ") + what + ", got '" + w + "'");
     }
     return value;

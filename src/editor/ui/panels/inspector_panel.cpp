@@ -204,6 +204,11 @@ void draw_inspector(InspectorState& state, ViewSettings& view, const CommandLaye
                 scene.render.height);
   }
   ImGui::TextDisabled("hover the image; click to pin, click the pinned pixel to unpin");
+  if (view.uv_checker) {
+    // The checker is a view, not the document: the values below are the material's.
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f),
+                       "UV checker on: the values are the material's, not the checker's");
+  }
   if (x < 0 || y < 0 || x >= scene.render.width || y >= scene.render.height) {
     ImGui::TextUnformatted("no pixel: hover the render, a term view or the A/B view");
     ImGui::End();
