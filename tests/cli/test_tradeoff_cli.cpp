@@ -93,7 +93,7 @@ TEST_F(TradeoffCli, BadSceneExitsWith2NamingTheFile) {
 // said (exit 2), not an empty table, nor the plot script's TypeError; a plot not named .png is
 // refused before anything runs.
 TEST_F(TradeoffCli, NothingMeasuredAndAPlotNamedForAnotherFormatExitTwo) {
-  const TradeoffRun none = run(scene() + kSmall + " --knobs tessellation --plot p.png");
+  const TradeoffRun none = run(scene() + kSmall + " --knobs tessellation --csv rows.csv");
   EXPECT_EQ(none.status, 2);
   EXPECT_NE(none.err.find("nothing measured: no knob asked for applies to this scene"),
             std::string::npos)

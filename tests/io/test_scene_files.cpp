@@ -78,6 +78,17 @@ TEST(SceneFiles, AnUntitledScenesNamesAreRelativeToTheCurrentFolder) {
             (here.parent_path() / "environments" / "studio.exr").lexically_normal().string());
 }
 
+TEST(SceneFiles, AFileIsNamedRelativeToTheScenesFolder) {
+  EXPECT_EQ(name_for_scene("/data/models/cup.obj", "/data/scenes/room.json"), "../models/cup.obj");
+  EXPECT_EQ(name_for_scene("/data/scenes/maps/../maps/wood.png", "/data/scenes/room.json"),
+            "maps/wood.png");
+  // Untitled: relative to the current folder, as the loader reads an untitled scene's names.
+  const std::filesystem::path here = std::filesystem::current_path();
+  EXPECT_EQ(name_for_scene((here / "models" / "cup.obj").string(), ""), "models/cup.obj");
+  EXPECT_EQ(name_for_scene("models/cup.obj", (here / "scenes" / "room.json").string()),
+            "../models/cup.obj");
+}
+
 TEST(SceneFiles, MovingTheSceneLeavesTheSharedMapsOfItsCopiesAlone) {
   const Scene original = scene_naming_files();
   Scene moved = original;  // shares the maps (material.h)
@@ -89,8 +100,9 @@ TEST(SceneFiles, MovingTheSceneLeavesTheSharedMapsOfItsCopiesAlone) {
   EXPECT_EQ(same.materials[0].map_storage, original.materials[0].map_storage);
 }
 
-// The shipped environment scene names "../environments/studio.exr": saved elsewhere it used to
-// keep that name, and the copy did not open.
+// The shipped environment scene names "../environments/studio.exr": saved elsewhere (the editor's
+// Save As kept that name; save_scene itself rebased it) and carried by a PNG written elsewhere
+// (the PNG kept it relative), it opens again.
 TEST(SceneFiles, TheShippedEnvironmentSceneSavedElsewhereOpensAgain) {
   const Scene scene = load_scene(std::string(GLOSS_ASSETS_DIR) + "/scenes/studio-metals.json");
   ScratchFolder folder;

@@ -60,7 +60,7 @@ void renderer_texts(const Viewport& viewport, const ViewSettings& view, std::str
     if (info.env_target > 0) {
       const std::string environment =
           info.env_steps == 0
-              ? std::string(" | environment: fast preview, no shadows yet")
+              ? format(" | environment: fast preview, 0/%d directions", info.env_target)
               : format(" | environment %d/%d directions", info.env_steps, info.env_target);
       full += environment;
       brief += environment;

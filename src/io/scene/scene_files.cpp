@@ -69,6 +69,13 @@ void rebase_scene_files(Scene& scene, const std::string& new_path) {
   scene.path = new_path;
 }
 
+std::string name_for_scene(const std::string& file, const std::string& scene_path) {
+  const fs::path target = absolute_of(fs::path(file).parent_path()) / fs::path(file).filename();
+  const fs::path relative =
+      target.lexically_relative(absolute_of(fs::path(scene_path).parent_path()));
+  return relative.empty() ? target.generic_string() : relative.generic_string();
+}
+
 void make_scene_files_absolute(Scene& scene, const std::string& folder) {
   const fs::path base = absolute_of(folder);
   for_each_scene_file(scene, [&](std::string& file) {

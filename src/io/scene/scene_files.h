@@ -15,6 +15,11 @@ namespace gloss {
 // no relative name exists), then sets scene.path to new_path. Absolute names stay.
 void rebase_scene_files(Scene& scene, const std::string& new_path);
 
+// How a scene at scene_path names `file` (any path, relative to the current folder or absolute):
+// relative to the scene's folder, or absolute where no relative name exists; an untitled scene
+// (scene_path "") names it relative to the current folder, as the loader then reads it.
+std::string name_for_scene(const std::string& file, const std::string& scene_path);
+
 // Makes every relative file the scene names absolute against `folder` (the current folder when
 // empty): for a scene carried by a PNG, which may be copied anywhere.
 void make_scene_files_absolute(Scene& scene, const std::string& folder);

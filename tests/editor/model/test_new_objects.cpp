@@ -174,6 +174,21 @@ TEST(NewObjects, ATexturedModelsMapsAreFoundAgainWhenTheSavedSceneOpens) {
   EXPECT_EQ(back_maps, 4);
 }
 
+// A map held inside a model (an embedded image: MODEL#MATERIAL/SLOT) names the model as the
+// object does, so the loader's cache finds the model read once (the object's file was absolute
+// and the map's model relative: a saved scene read the model twice on opening).
+TEST(NewObjects, AModelsOwnMapsNameTheModelAsItsObjectDoes) {
+  const std::string file = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << "assimp-testmodels is not installed";
+  const Scene scene = shipped("spheres");
+  const Scene after = with(scene, model_objects(scene, file));
+  const Object& box = after.objects.back();
+  EXPECT_FALSE(std::filesystem::path(box.params.file).is_absolute()) << box.params.file;
+  const TextureMap& map = after.materials[box.material].map(MapSlot::diffuse);
+  ASSERT_TRUE(map.present());
+  EXPECT_EQ(map.file.rfind(box.params.file + "#", 0), 0u) << map.file << " / " << box.params.file;
+}
+
 TEST(NewObjects, InAnEmptySceneAModelIsCentredOnTheTarget) {
   Scene scene;
   scene.camera.target = {1, 2, 3};

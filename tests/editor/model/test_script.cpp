@@ -87,7 +87,9 @@ TEST(Script, BadLinesNameTheLine) {
   expect_error_on_line("set 0 gloss 5\n", 1, "unknown material field 'gloss'");
   expect_error_on_line("set\n", 1, "missing object (an index or a name)");
   expect_error_on_line("model lambert\n", 1, "phong or blinn-phong");
-  expect_error_on_line("wait -1\n", 1, "the timeout must be > 0 seconds");
+  expect_error_on_line("wait -1\n", 1, "the timeout must be a finite number of seconds > 0");
+  expect_error_on_line("wait inf\n", 1, "the timeout must be a finite number of seconds > 0");
+  expect_error_on_line("render spp 0x10\n", 1, "expected a whole number");
   expect_error_on_line("set 0 diffuse 0x10\n", 1, "expected a number for");
   expect_error_on_line("set 0 shininess 0x1p4\n", 1, "expected a number for");
   expect_error_on_line("quit\nquit now\n", 2, "unexpected 'now'");

@@ -12,6 +12,7 @@
 #include "io/material/preset_table.h"
 #include "io/scene/environment_reader.h"
 #include "io/scene/material_maps.h"
+#include "io/scene/scene_files.h"
 #include "io/scene/scene_loader.h"
 #include "scene/fields/validation.h"
 #include "scene/geometry/placement.h"
@@ -233,11 +234,7 @@ void set_environment(const SetEnvironment& c, Scene& scene) {
   } catch (const InputError& e) {
     throw CommandError(e.what());
   }
-  const fs::path absolute = fs::absolute(path, error).lexically_normal();
-  const fs::path relative = scene_folder.empty()
-                                ? fs::path()
-                                : absolute.lexically_relative(fs::absolute(scene_folder, error));
-  scene.environment.file = relative.empty() ? absolute.string() : relative.generic_string();
+  scene.environment.file = name_for_scene(path.string(), scene.path);
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "engine/pick.h"
 #include "io/model/model_loader.h"
 #include "io/model/model_maps.h"
+#include "io/scene/scene_files.h"
 #include "io/scene/scene_loader.h"
 #include "scene/geometry/placement.h"
 #include "scene/geometry/shapes.h"
@@ -308,19 +309,10 @@ AddObjects model_objects(const Scene& scene, const std::string& path,
   // origin, then moved to its place; the transform stays the identity.
   const glm::vec3 position = placement_offset(scene, lo * scale, hi * scale);
   const glm::mat4 own = glm::scale(glm::translate(glm::mat4(1.0f), position), glm::vec3(scale));
-  const std::string absolute = std::filesystem::absolute(path).lexically_normal().string();
-  // The maps as the scene names files: relative to its folder (the model's folder in front), so
-  // a saved scene finds them; absolute in an untitled scene.
-  std::string from_scene;
-  if (!scene.path.empty()) {
-    std::error_code ec;
-    const std::filesystem::path folder =
-        std::filesystem::absolute(std::filesystem::path(scene.path).parent_path(), ec);
-    if (!ec) {
-      from_scene = std::filesystem::path(absolute).lexically_relative(folder.lexically_normal());
-    }
-  }
-  name_maps_for_scene(model.materials, from_scene.empty() ? absolute : from_scene);
+  // The model file and its maps named as the scene names files, both the same way (a map made
+  // from the model, MODEL#MATERIAL/SLOT, finds the model the object names in the loader's cache).
+  const std::string model_name = name_for_scene(path, scene.path);
+  name_maps_for_scene(model.materials, model_name);
   const std::string stem = std::filesystem::path(path).stem().string();
 
   AddObjects add;
@@ -332,7 +324,7 @@ AddObjects model_objects(const Scene& scene, const std::string& path,
     o.name = unique_object_name(named, model.parts.size() > 1 && !part.material_name.empty()
                                            ? stem + "/" + part.material_name
                                            : stem);
-    o.params.file = absolute;
+    o.params.file = model_name;
     o.params.group = part.material_name;
     o.params.position = position;
     o.params.scale = glm::vec3(scale);

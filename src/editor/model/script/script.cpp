@@ -294,7 +294,9 @@ ScriptAction parse_line(Tokens& t) {
   if (verb == "wait") {
     if (t.done()) return WaitAction{};
     const double seconds = t.number("timeout seconds");
-    if (!(seconds > 0.0)) throw std::runtime_error("wait: the timeout must be > 0 seconds");
+    if (!(seconds > 0.0) || !std::isfinite(seconds)) {
+      throw std::runtime_error("wait: the timeout must be a finite number of seconds > 0");
+    }
     return WaitAction{seconds};
   }
   if (verb == "screenshot") {

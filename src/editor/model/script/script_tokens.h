@@ -30,14 +30,16 @@ struct Tokens {
     if (done()) throw std::runtime_error(std::string("missing ") + what);
     return words[next++];
   }
+  // No hexadecimal ("0x10" read as 16 by strtof and strtod): a scene file's JSON has none. inf
+  // and nan pass on to the fields' own checks, which name the field.
+  static bool hexadecimal(const std::string& w) {
+    return w.find_first_of("xX") != std::string::npos;
+  }
   float number(const char* what) {
     const std::string& w = word(what);
     char* end = nullptr;
     const float value = std::strtof(w.c_str(), &end);
-    // No hexadecimal ("0x10" read as 16): a scene file's JSON has none. inf and nan pass on to
-    // the fields' own checks, which name the field.
-    const bool hexadecimal = w.find_first_of("xX") != std::string::npos;
-    if (end == w.c_str() || *end != '\0' || hexadecimal) {
+    if (end == w.c_str() || *end != '\0' || hexadecimal(w)) {
       throw std::runtime_error(std::string("expected a number for ") + what + ", got '" + w + "'");
     }
     return value;
@@ -46,7 +48,7 @@ struct Tokens {
     const std::string& w = word(what);
     char* end = nullptr;
     const double value = std::strtod(w.c_str(), &end);
-    if (end == w.c_str() || *end != '\0' || value != std::floor(value)) {
+    if (end == w.c_str() || *end != '\0' || value != std::floor(value) || hexadecimal(w)) {
       throw std::runtime_error(std::string("expected a whole number for ") + what + ", got '" + w +
                                "'");
     }
