@@ -9,8 +9,8 @@
 #include "base/error.h"
 #include "editor/model/measure/memory_report.h"
 #include "editor/model/measure/quality_measurement.h"
-#include "editor/model/script/script_runner.h"
 #include "editor/model/session/file_defaults.h"
+#include "editor/model/script/script_runner.h"
 #include "editor/ui/app.h"
 #include "editor/ui/panels/quality_parts.h"
 #include "editor/ui/shortcuts.h"
@@ -209,10 +209,6 @@ class ScriptPlayer::Host : public ScriptHost {
     return LineResult::go_on();
   }
   LineResult save(const SaveAction& a, const std::string& where) override {
-    if (const std::string refusal = shipped_scene_refusal(a.path); !refusal.empty()) {
-      std::fprintf(stderr, "error: %s%s\n", where.c_str(), refusal.c_str());
-      return LineResult::stop(2);  // bad input, as the core host says (script_runner.cpp)
-    }
     try {
       m_app.files.save_scene_as(a.path);
     } catch (const std::exception& e) {

@@ -183,22 +183,32 @@ std::string model_map_reference(const std::string& model, const std::string& mat
   return model + "#" + material + "/" + to_string(slot);
 }
 
-void name_maps_for_scene(std::vector<Material>& materials, const std::string& model_file) {
-  const fs::path folder = fs::path(model_file).parent_path();
+void rename_map_files(std::vector<Material>& materials,
+                      const std::function<void(std::string& name, bool model_part)>& rename) {
   for (Material& material : materials) {
     for (int s = 0; s < kMapSlots; ++s) {
       const auto slot = static_cast<MapSlot>(s);
-      if (!std::as_const(material).map(slot).named()) continue;
-      TextureMap& map = material.map(slot);
-      std::string inner_model, inner_material;
-      MapSlot inner_slot;
-      if (split_model_map_reference(map.file, inner_model, inner_material, inner_slot)) {
-        map.file = model_map_reference(model_file, inner_material, inner_slot);
+      const TextureMap& map = std::as_const(material).map(slot);  // reads without copying
+      if (!map.named()) continue;
+      std::string file = map.file;
+      std::string model, model_material;
+      MapSlot model_slot;
+      if (split_model_map_reference(file, model, model_material, model_slot)) {
+        rename(model, true);
+        file = model_map_reference(model, model_material, model_slot);
       } else {
-        map.file = (folder / map.file).lexically_normal().generic_string();
+        rename(file, false);
       }
+      if (file != map.file) material.map(slot).file = file;
     }
   }
+}
+
+void name_maps_for_scene(std::vector<Material>& materials, const std::string& model_file) {
+  const fs::path folder = fs::path(model_file).parent_path();
+  rename_map_files(materials, [&](std::string& name, bool model_part) {
+    name = model_part ? model_file : (folder / name).lexically_normal().generic_string();
+  });
 }
 
 bool split_model_map_reference(const std::string& file, std::string& model, std::string& material,

@@ -11,6 +11,7 @@
 // An image a model names that cannot be read is a warning naming it, and that map is left out:
 // the model still loads. Maps gloss makes from a model, or takes from inside it, are named
 // MODEL#MATERIAL/SLOT, which a scene reads back through model_map_cache.h.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,13 @@ void read_model_maps(const std::string& path, Model& model, const ModelOptions& 
 // The reference of a map made from or held in a model: MODEL#MATERIAL/SLOT.
 std::string model_map_reference(const std::string& model, const std::string& material,
                                 MapSlot slot);
+
+// Calls rename(name, model_part) on the file name of every map of materials: a plain image's
+// path (model_part false), or the MODEL of a map made from or held in a model (true; the
+// reference is rebuilt around the new MODEL). A map is written only when its name changed: the
+// maps are shared between copies of a scene until one changes (material.h).
+void rename_map_files(std::vector<Material>& materials,
+                      const std::function<void(std::string& name, bool model_part)>& rename);
 
 // Names the maps of a model's materials as a scene names files, for the model file as the scene
 // names it (model_file, relative to the scene's folder or absolute): an image named relative to

@@ -2,7 +2,6 @@
 
 #include <filesystem>
 #include <functional>
-#include <utility>
 
 #include "io/model/model_maps.h"
 
@@ -18,25 +17,7 @@ void for_each_scene_file(Scene& scene, const std::function<void(std::string&)>& 
   for (Object& object : scene.objects) {
     if (!object.params.file.empty()) rename(object.params.file);
   }
-  for (Material& material : scene.materials) {
-    for (int s = 0; s < kMapSlots; ++s) {
-      const auto slot = static_cast<MapSlot>(s);
-      // The const accessor reads: the non-const one makes the material's own copy of its maps
-      // (they are shared between copies of the scene, material.h).
-      const TextureMap& map = std::as_const(material).map(slot);
-      if (!map.named()) continue;
-      std::string file = map.file;
-      std::string model, model_material;
-      MapSlot model_slot;
-      if (split_model_map_reference(file, model, model_material, model_slot)) {
-        rename(model);
-        file = model_map_reference(model, model_material, model_slot);
-      } else {
-        rename(file);
-      }
-      if (file != map.file) material.map(slot).file = file;
-    }
-  }
+  rename_map_files(scene.materials, [&](std::string& name, bool) { rename(name); });
   if (!scene.environment.file.empty()) rename(scene.environment.file);
 }
 

@@ -261,7 +261,13 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
               return LineResult::go_on();
             },
             [&](const ObjectLineAction& a) { return object_line(host, a, where); },
-            [&](const SaveAction& a) { return host.save(a, where); },
+            [&](const SaveAction& a) {
+              // Every host: never over a scene gloss ships (bad input, exit 2).
+              if (const std::string refusal = shipped_scene_refusal(a.path); !refusal.empty()) {
+                return bad_line(where, refusal);
+              }
+              return host.save(a, where);
+            },
             [&](const BrowseAction& a) { return host.browse(a); },
             [&](const GizmoAction& a) {
               host.view().gizmo = a.mode;
@@ -279,9 +285,6 @@ LineResult run_script_line(const Script& script, const ScriptLine& line, ScriptH
 }
 
 LineResult ScriptHost::save(const SaveAction& a, const std::string& where) {
-  if (const std::string refusal = shipped_scene_refusal(a.path); !refusal.empty()) {
-    return bad_line(where, refusal);
-  }
   try {
     save_scene(layer().scene(), a.path);  // relative file names follow the new folder
   } catch (const std::exception& e) {

@@ -201,6 +201,11 @@ ObjectRef parse_object_ref(Tokens& t);
 // `assign OBJECT MATERIAL`, and `save PATH`, `browse WHAT`, `gizmo MODE`; t.words[0] is one of
 // object, material, assign, save, browse, gizmo.
 ScriptAction parse_object_line(Tokens& t);
+// viewport_lines.cpp: `mouse press X Y [left|right|middle]`, `mouse move X Y`, `mouse release`;
+// and `renderer cpu|gl|auto`, `shading pixel|vertex`, `shadow-map SIZE`, `shadow-bias TEXELS`
+// (parse_raster_line: false when verb is none of them).
+MouseAction parse_mouse(Tokens& t);
+bool parse_raster_line(Tokens& t, const std::string& verb, ScriptAction& out);
 // window_lines.cpp: `layout ...` and `lobe plot|overlay|turn ...` (issue 24).
 ScriptAction parse_layout(Tokens& t);
 ScriptAction parse_lobe(Tokens& t);
