@@ -41,7 +41,10 @@ std::vector<std::string> mtl_libraries(const std::string& obj_path, const std::s
     rest.erase(0, rest.find_first_not_of(" \t"));
     rest.erase(rest.find_last_not_of(" \t") + 1);
     rest = portable_path(rest);
-    if (fs::exists(fs::path(dir) / rest)) {
+    // The error_code form: a name the file system refuses (too long, say) is no file, not a
+    // throw out of the model's reading (found by fuzz_obj).
+    std::error_code error;
+    if (fs::exists(fs::path(dir) / rest, error)) {
       out.push_back(rest);
       continue;
     }
