@@ -169,8 +169,20 @@ uniform vec2 gloss_shadow_scale[GLOSS_LIGHT_COUNT];
 // p's direction, plus the bias. A texel spans `texel` world units across at p; a surface at
 // angle theta to the light changes depth by tan(theta) of that across it, so the bias grows
 // with the slope (capped at 10: at grazing light the diffuse term is near 0 anyway).
+// A mesh fragment's terminator lift (raster_mesh.frag sets it; 0 elsewhere), world units.
+float gloss_surface_lift = 0.0;
+
 float gloss_visibility(int light, vec3 p, vec3 n_g) {
   ivec2 layout_i = gloss_shadow_layout[light];
+  // As the ray tracer's shadow ray (src/shading/surface.h shadow_ray_origin): looked up from the
+  // smooth surface where the triangle faces away from the light, from the triangle where it
+  // faces it by dot(n_g, l) >= 0.1, blended between.
+  if (gloss_surface_lift > 0.0) {
+    vec3 l = layout_i.y == GLOSS_SHADOW_ORTHOGRAPHIC ? -gloss_shadow_forward[light]
+                                                     : gloss_light_position[light] - p;
+    float share = clamp(1.0 - dot(n_g, l) / max(0.1 * length(l), 1e-30), 0.0, 1.0);
+    p += n_g * (gloss_surface_lift * share);
+  }
   int kind = layout_i.y;
   vec2 uv;
   int layer = layout_i.x;
@@ -244,6 +256,7 @@ float gloss_visibility(int light, vec3 p, vec3 n_g) {
   return dist <= stored + bias ? 1.0 : 0.0;
 }
 #else
+float gloss_surface_lift = 0.0;  // unused without shadow maps
 float gloss_visibility(int light, vec3 p, vec3 n_g) {
   return 1.0;
 }

@@ -72,6 +72,17 @@ GlossMapValues gloss_fragment_maps(vec3 p, vec3 n_g, vec3 n, vec3 v, float side)
 void gloss_cut_out() {}
 #endif
 
+#if !defined(GLOSS_SHADOW_PASS)
+in vec3 gloss_terminator_heights, gloss_terminator_weights;  // raster_mesh.vert
+// The smooth surface's height over the triangle here (src/shading/surface.h terminator_lift):
+// sum_k b_k max(0, -side dot(p - P_k, n_k)) dot(n_k, n_g), which gloss_visibility takes in
+// part or whole (raster_common.glsl, gloss_surface_lift). side: -1 where n_g was turned.
+void gloss_set_terminator_lift(float side) {
+  vec3 below = max(vec3(0.0), -side * gloss_terminator_heights);
+  gloss_surface_lift = max(0.0, dot(below, gloss_terminator_weights));
+}
+#endif
+
 #if defined(GLOSS_SHADOW_PASS)
 in vec3 gloss_position;
 layout(location = 0) out float gloss_distance;
@@ -104,6 +115,7 @@ void main() {
     n_g = -n_g;
     side = -1.0;
   }
+  gloss_set_terminator_lift(side);
   vec3 ka = gloss_ka, kd = gloss_kd, ks = gloss_ks, ke = gloss_ke;
 #if GLOSS_MAPS
   // The colour maps per fragment; the weights (and so the exponent and the normal) are the
@@ -144,6 +156,8 @@ in vec3 gloss_position, gloss_normal;
 flat in vec3 gloss_face_normal;
 void main() {
   gloss_cut_out();
+  gloss_set_terminator_lift(
+      dot(gloss_face_normal, gloss_view_origin - gloss_position) < 0.0 ? -1.0 : 1.0);
   // The interpolated normal renormalised, as the ray tracer does with the barycentric blend of
   // the corner normals at its hit.
 #if GLOSS_MAPS

@@ -5,24 +5,36 @@
 layout(location = 0) in vec3 gloss_in_position;
 layout(location = 1) in vec3 gloss_in_normal;       // shading normal (= face normal when flat)
 layout(location = 2) in vec3 gloss_in_face_normal;  // n_g, as wound
+// The shadow terminator (src/shading/surface.h, terminator_lift), per corner of a smooth
+// triangle (zeros on flat ones): dot(P_j - P_k, n_k) for k = 0, 1, 2 at this corner j, and
+// dot(n_k, n_g) times this corner's barycentric weight (one-hot). Interpolated, they give the
+// fragment each corner plane's height over it and b_k dot(n_k, n_g).
+layout(location = 3) in vec3 gloss_in_terminator_heights;
+layout(location = 4) in vec3 gloss_in_terminator_weights;
+#if !defined(GLOSS_SHADOW_PASS)
+out vec3 gloss_terminator_heights, gloss_terminator_weights;
+void gloss_pass_terminator() {
+  gloss_terminator_heights = gloss_in_terminator_heights;
+  gloss_terminator_weights = gloss_in_terminator_weights;
+}
+#endif
 #if GLOSS_MAPS
 // The maps' attributes (raster_geometry.cpp): (u, v) of sets 0 and 1, set 0's tangent and
-// handedness, and per triangle (equal at its three corners) each set's density rho and set 0's
-// dp/du, dp/dv.
-layout(location = 3) in vec2 gloss_in_uv0;
-layout(location = 4) in vec2 gloss_in_uv1;
-layout(location = 5) in vec4 gloss_in_tangent;
-layout(location = 6) in vec2 gloss_in_density;
-layout(location = 7) in vec3 gloss_in_dpdu;
-layout(location = 8) in vec3 gloss_in_dpdv;
+// handedness, and per triangle (equal at its three corners) set 0's dp/du and dp/dv, each with
+// a set's density rho in w (set 0's with dp/du).
+layout(location = 5) in vec2 gloss_in_uv0;
+layout(location = 6) in vec2 gloss_in_uv1;
+layout(location = 7) in vec4 gloss_in_tangent;
+layout(location = 8) in vec4 gloss_in_dpdu_density0;
+layout(location = 9) in vec4 gloss_in_dpdv_density1;
 // The triangle's corners and their (u, v) (set 0's three, then set 1's), the same at each
 // corner: the fragment shader intersects its pixel's ray with them.
-layout(location = 9) in vec3 gloss_in_p0;
-layout(location = 10) in vec3 gloss_in_p1;
-layout(location = 11) in vec3 gloss_in_p2;
-layout(location = 12) in vec4 gloss_in_corner_uv_a;  // set 0: corner 0, corner 1
-layout(location = 13) in vec4 gloss_in_corner_uv_b;  // set 0: corner 2; set 1: corner 0
-layout(location = 14) in vec4 gloss_in_corner_uv_c;  // set 1: corner 1, corner 2
+layout(location = 10) in vec3 gloss_in_p0;
+layout(location = 11) in vec3 gloss_in_p1;
+layout(location = 12) in vec3 gloss_in_p2;
+layout(location = 13) in vec4 gloss_in_corner_uv_a;  // set 0: corner 0, corner 1
+layout(location = 14) in vec4 gloss_in_corner_uv_b;  // set 0: corner 2; set 1: corner 0
+layout(location = 15) in vec4 gloss_in_corner_uv_c;  // set 1: corner 1, corner 2
 out vec2 gloss_uv0, gloss_uv1;
 flat out vec3 gloss_p0, gloss_p1, gloss_p2;
 flat out vec4 gloss_corner_uv_a, gloss_corner_uv_b, gloss_corner_uv_c;
@@ -42,9 +54,9 @@ void gloss_pass_maps() {
   gloss_corner_uv_c = gloss_in_corner_uv_c;
 #if !defined(GLOSS_SHADOW_PASS)
   gloss_tangent = gloss_in_tangent;
-  gloss_density = gloss_in_density;
-  gloss_dpdu = gloss_in_dpdu;
-  gloss_dpdv = gloss_in_dpdv;
+  gloss_density = vec2(gloss_in_dpdu_density0.w, gloss_in_dpdv_density1.w);
+  gloss_dpdu = gloss_in_dpdu_density0.xyz;
+  gloss_dpdv = gloss_in_dpdv_density1.xyz;
 #endif
 }
 #else
@@ -97,6 +109,7 @@ void main() {
   gloss_position = p;
   gloss_face_normal = gloss_in_face_normal;
   gloss_pass_maps();
+  gloss_pass_terminator();
   gl_Position = gloss_project(p);
 }
 #else
@@ -107,6 +120,7 @@ void main() {
   gloss_normal = gloss_in_normal;
   gloss_face_normal = gloss_in_face_normal;
   gloss_pass_maps();
+  gloss_pass_terminator();
   gl_Position = gloss_project(gloss_in_position);
 }
 #endif

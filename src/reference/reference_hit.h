@@ -12,6 +12,7 @@
 #include <glm/vec3.hpp>
 
 #include "scene/scene.h"
+#include "shading/surface.h"
 
 namespace gloss {
 
@@ -23,8 +24,17 @@ struct ReferenceHit {
   glm::tvec3<T> v;       // unit direction to the eye
   T t = 0;               // hit distance along the unit direction
   T b[3] = {1, 0, 0};    // barycentric weights of the triangle's corners (meshes)
+  T lift = 0;            // the smooth surface's height above the triangle (surface.h)
   bool flipped = false;  // the normals were negated (the viewer sees the back side)
 };
+
+// The hit in float, as shadow_ray_origin (surface.h, shared with the fast renderer) takes it.
+template <class T>
+Surface float_surface(const ReferenceHit<T>& h) {
+  Surface s{glm::vec3(h.p), glm::vec3(h.n), glm::vec3(h.ng), glm::vec3(h.v)};
+  s.lift = static_cast<float>(h.lift);
+  return s;
+}
 
 namespace detail {
 // Nearest positive root of |o + t d - c| = r for unit d, without cancellation: |oc|^2 - r^2 as
@@ -123,8 +133,14 @@ ReferenceHit<T> triangle_reference_hit(const Mesh& mesh, std::uint32_t prim, con
                                        h.b[2] * glm::tvec3<T>(mesh.normals[tri.z]);
     const T len = glm::length(interpolated);
     // Opposite vertex normals can cancel; the geometric normal is then the only sane choice
-    // (the same threshold as surface.cpp).
-    if (len > T(1e-6)) h.n = interpolated / len;
+    // (the same threshold as surface.h).
+    if (len > T(1e-6)) {
+      h.n = interpolated / len;
+      const glm::tvec3<T> n0(mesh.normals[tri.x]), n1(mesh.normals[tri.y]), n2(mesh.normals[tri.z]);
+      const glm::tvec3<T> planes(glm::dot(p0, n0), glm::dot(p1, n1), glm::dot(p2, n2));
+      const T side = glm::dot(h.ng, h.v) < T(0) ? T(-1) : T(1);
+      h.lift = terminator_lift(h.p, h.ng, h.b, n0, n1, n2, planes, side);
+    }
   }
   detail::finish(h);
   return h;

@@ -90,10 +90,10 @@ template <class T>
 void shade_environment(const Job<T>& job, int object, const ReferenceHit<T>& h, const Material& m,
                        std::uint32_t seed, PixelSums<T>& sum, PixelBreakdown* record) {
   const Scene& scene = *job.scene;
-  const Surface s{glm::vec3(h.p), glm::vec3(h.n), glm::vec3(h.ng), glm::vec3(h.v)};
-  const glm::vec3 origin = shadow_ray_origin(s, static_cast<float>(h.t));
+  const Surface s = float_surface(h);
   const unsigned id = shadow_ray_id(scene, object, s);
   auto blocked = [&](const glm::dvec3& w) {
+    const glm::vec3 origin = shadow_ray_origin(s, static_cast<float>(h.t), glm::vec3(w));
     RTCRay ray;
     ray.org_x = origin.x;
     ray.org_y = origin.y;
@@ -139,10 +139,12 @@ void shade_environment(const Job<T>& job, int object, const ReferenceHit<T>& h, 
 template <class T>
 bool occluded(const Job<T>& job, int object, const ReferenceHit<T>& h,
               const LightSource<T>& light) {
-  const Surface s{glm::vec3(h.p), glm::vec3(h.n), glm::vec3(h.ng), glm::vec3(h.v)};
-  const glm::vec3 org = shadow_ray_origin(s, static_cast<float>(h.t));
+  const Surface s = float_surface(h);
   const bool directional = light.type == LightType::directional;
-  const glm::vec3 dir = directional ? -glm::vec3(light.direction) : glm::vec3(light.position) - org;
+  const glm::vec3 towards =
+      directional ? -glm::vec3(light.direction) : glm::vec3(light.position) - s.p;
+  const glm::vec3 org = shadow_ray_origin(s, static_cast<float>(h.t), towards);
+  const glm::vec3 dir = directional ? towards : glm::vec3(light.position) - org;
   RTCRay ray;
   ray.org_x = org.x;
   ray.org_y = org.y;

@@ -17,14 +17,18 @@ struct Surface {
   glm::vec3 n;   // unit shading normal, flipped to the viewer's side
   glm::vec3 ng;  // unit geometric normal, flipped to the viewer's side
   glm::vec3 v;   // unit direction to the eye (= -ray direction)
+  // World units, >= 0: how far the smooth surface the vertex normals describe lies above the flat
+  // triangle at p, along ng (terminator_lift). 0 for spheres, flat triangles and concave sides.
+  float lift = 0.0f;
 };
 
 // What a hit needs from its primitive (surface_table.h): the sphere's centre or the triangle's
-// unit face normal, the vertex normals of smooth triangles, and Embree's barycentrics
-// (n = (1 - u - v) n0 + u n1 + v n2).
+// unit face normal, the vertex normals of smooth triangles and their tangent planes, and
+// Embree's barycentrics (n = (1 - u - v) n0 + u n1 + v n2).
 struct HitGeometry {
   glm::vec3 a;           // sphere: centre; triangle: unit face normal
   glm::vec3 n0, n1, n2;  // smooth triangles only
+  glm::vec3 planes;      // smooth triangles only: dot(P_k, n_k) of corner k's position and normal
   float u, v;
   std::int32_t sphere, smooth;  // 0 or 1
 };
@@ -34,6 +38,31 @@ struct HitGeometry {
 struct LaneKinds {
   bool spheres, smooth;
 };
+
+// The shadow terminator (Hanika, "Hacking the Shadow Terminator", Ray Tracing Gems II, ch. 4):
+// where vertex normals bend the shading round a coarse mesh, a point the shading normal says
+// is lit can lie where the flat triangle faces away from the light, and its shadow ray then
+// meets the neighbouring triangles: dark steps along the triangles past the faceted terminator,
+// worst under normal maps. Hanika moves p onto the tangent plane of every corner whose plane
+// lies above it, p' = p - sum_k b_k min(0, dot(p - P_k, n_k)) n_k, a smooth surface through the
+// corners. This returns how far p' lies above the triangle along ng, the flat triangle's normal
+// on the viewer's side (side: -1 where the two-sided rule turned it); a shadow ray starts that
+// much further along ng where it needs to (shadow_ray_origin). A concave side
+// has every plane below p and gets 0. planes[k] = dot(P_k, n_k), so dot(p - P_k, n_k) is
+// dot(p, n_k) - planes[k]: float's error there is a few ulp of |p|, below the offset's own 4e-6.
+// Written with selects (vector code in sample_packet.cpp).
+template <class T>
+inline T terminator_lift(const glm::tvec3<T>& p, const glm::tvec3<T>& ng, const T (&b)[3],
+                         const glm::tvec3<T>& n0, const glm::tvec3<T>& n1, const glm::tvec3<T>& n2,
+                         const glm::tvec3<T>& planes, T side) {
+  auto raised = [&](const glm::tvec3<T>& n, T plane, T weight) {  // corner k's share
+    const T below = std::min(T(0), side * (glm::dot(p, n) - plane));
+    return -weight * below * glm::dot(n, ng);  // side n_k . side ng = n_k . ng
+  };
+  const T lift =
+      raised(n0, planes.x, b[0]) + raised(n1, planes.y, b[1]) + raised(n2, planes.z, b[2]);
+  return std::max(T(0), lift);
+}
 
 // dir must be unit length, in double: the hit point is rebuilt as origin + t dir in double and
 // rounded once, since a float direction alone moves the point by 1e-7 of the distance to the eye
@@ -61,6 +90,10 @@ inline Surface surface_from(const HitGeometry& g, const glm::vec3& origin, const
     const bool use_smooth = (g.smooth != 0) & (len > 1e-6f);
     const glm::vec3 n_smooth = interpolated * (1.0f / (use_smooth ? len : 1.0f));
     s.n = select(use_smooth, n_smooth, n_face);
+    const float b[3] = {1.0f - g.u - g.v, g.u, g.v};
+    const float lift = terminator_lift(s.p, n_face, b, g.n0, g.n1, g.n2, g.planes,
+                                       glm::dot(n_face, s.v) < 0.0f ? -1.0f : 1.0f);
+    s.lift = use_smooth ? lift : 0.0f;
   }
   if constexpr (Spheres) {
     // From the unrounded point; at shininess 1000 a float normal alone moves the highlight by
@@ -81,13 +114,29 @@ inline Surface surface_from(const HitGeometry& g, const glm::vec3& origin, const
 float refine_sphere_hit(const Object& sphere, const glm::vec3& origin, const glm::dvec3& dir,
                         float t_estimate);
 
-// Where a shadow ray starts: p pushed along ng, never p itself. p = eye + t dir carries a
-// rounding error of a few ulp of max(|p|, |eye|), and |eye| <= |p| + t; 4e-6 of that is some 30x
-// float epsilon: clear of self-intersection (no acne) yet far below any feature a scene of that
-// size can have. It scales with the scene (1e-3 or 1e4 alike).
-inline glm::vec3 shadow_ray_origin(const Surface& s, float t) {
+// Where a shadow ray towards `towards` (any length; l for a light) starts: p pushed along ng,
+// never p itself. p = eye + t dir carries a rounding error of a few ulp of max(|p|, |eye|), and
+// |eye| <= |p| + t; 4e-6 of that is some 30x float epsilon: clear of self-intersection (no acne)
+// yet far below any feature a scene of that size can have. It scales with the scene (1e-3 or 1e4
+// alike). On a smooth triangle the ray leaves from the smooth surface (s.lift further along ng)
+// where the triangle faces away from `towards`, and from the triangle where it faces it by
+// dot(ng, l) >= kTerminatorCutoff, with a linear blend between: a convex mesh's neighbours lie
+// below each triangle's plane, so only rays into that plane need the lift, and the lift kept off
+// elsewhere lets no light through a concave crease (a teapot's rim under its lid did, lifted
+// always). Blender's Cycles gates its terminator offset by the same angle (its "geometry
+// offset", 0.1 by default).
+inline constexpr float kTerminatorCutoff = 0.1f;
+
+inline float surface_offset(const Surface& s, float t) {
   const float magnitude = std::max(std::max(std::abs(s.p.x), std::abs(s.p.y)), std::abs(s.p.z)) + t;
-  return s.p + s.ng * (4e-6f * std::max(magnitude, 1e-30f));
+  return 4e-6f * std::max(magnitude, 1e-30f);
+}
+
+inline glm::vec3 shadow_ray_origin(const Surface& s, float t, const glm::vec3& towards) {
+  const float reach = kTerminatorCutoff * std::sqrt(glm::dot(towards, towards));
+  const float share =
+      std::clamp(1.0f - glm::dot(s.ng, towards) / std::max(reach, 1e-30f), 0.0f, 1.0f);
+  return s.p + s.ng * (surface_offset(s, t) + s.lift * share);
 }
 
 }  // namespace gloss

@@ -6,11 +6,11 @@
 
 #include <embree3/rtcore.h>
 
+#include "engine/adaptive/refined_samples.h"
 #include "engine/environment/environment_sampling.h"
 #include "engine/environment/scrambled_sobol.h"
 #include "engine/simd/lane_mask.h"
 #include "engine/trace/ray_packet.h"
-#include "engine/adaptive/refined_samples.h"
 #include "engine/trace/sample_packet.h"
 #include "engine/trace/self_shadow.h"
 #include "engine/trace/texture_lanes.h"
@@ -52,7 +52,7 @@ long long packet_steps(const SamplePacket& packet, const SampleCache& cache,
     const int alpha_map = ctx.plan.textures.alpha_channel();
     EnvironmentHit hits[kLanes];
     bool active[kLanes];
-    glm::vec3 origin[kLanes];
+    Surface surface[kLanes];
     unsigned id[kLanes];
     for (int i = 0; i < kLanes; ++i) {
       active[i] = surfaces.hit[i] != 0 && packet.valid[i] != 0 && packet.object[i] >= 0;
@@ -69,7 +69,7 @@ long long packet_steps(const SamplePacket& packet, const SampleCache& cache,
       h.diffuse = env.diffuse[m] != 0;
       h.specular = env.specular[m] != 0;
       active[i] = h.diffuse || h.specular;
-      origin[i] = shadow_ray_origin(s, packet.t[i]);
+      surface[i] = s;
       id[i] = ctx.plan.spheres ? shadow_ray_id(scene, packet.object[i], s) : kNoOriginSphere;
     }
     StepNumbers numbers[kLanes];
@@ -94,7 +94,8 @@ long long packet_steps(const SamplePacket& packet, const SampleCache& cache,
         }
         RTCRay16 ray;
         for (int i = 0; i < kLanes; ++i) {
-          set_packet_ray(ray, i, origin[i], glm::vec3(draws[i].w[d]));
+          const glm::vec3 w(draws[i].w[d]);
+          set_packet_ray(ray, i, shadow_ray_origin(surface[i], packet.t[i], w), w);
           ray.id[i] = id[i];
         }
         RTCIntersectContext context;

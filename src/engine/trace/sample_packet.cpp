@@ -122,8 +122,9 @@ void load_hits(SamplePacket& packet, int width, const SamplePlane& plane) {
 namespace {
 // HitGeometry of the lanes, split by component.
 struct GeometryLanes {
-  alignas(64) float a[3][kLanes];  // centre or face normal
-  alignas(64) float n[9][kLanes];  // n0.xyz, n1.xyz, n2.xyz (smooth triangles)
+  alignas(64) float a[3][kLanes];       // centre or face normal
+  alignas(64) float n[9][kLanes];       // n0.xyz, n1.xyz, n2.xyz (smooth triangles)
+  alignas(64) float planes[3][kLanes];  // the corners' tangent planes (smooth triangles)
   alignas(64) std::int32_t kind[kLanes];
 };
 
@@ -144,6 +145,9 @@ LaneKinds gather_geometry(const SamplePacket& packet, const SurfaceTable& table,
   if (kinds.smooth) {  // else no lane reads the vertex normals (left unset)
     for (int c = 0; c < 9; ++c) {
       by_record(table.normals[static_cast<std::size_t>(c)].data(), records, out.n[c]);
+    }
+    for (int c = 0; c < 3; ++c) {
+      by_record(table.planes[static_cast<std::size_t>(c)].data(), records, out.planes[c]);
     }
   }
   return kinds;
@@ -166,6 +170,7 @@ void surfaces_of_kinds(const SamplePacket& packet, const GeometryLanes& geometry
       g.n0 = lane_vec(geometry.n, 0, i);
       g.n1 = lane_vec(geometry.n, 1, i);
       g.n2 = lane_vec(geometry.n, 2, i);
+      g.planes = {geometry.planes[0][i], geometry.planes[1][i], geometry.planes[2][i]};
     }
     g.u = packet.u[i];
     g.v = packet.v[i];
@@ -226,10 +231,11 @@ long long light_lanes(const SamplePacket& packet, const SurfaceLanes& surfaces,
   if (ctx.plan.shadow_rays) {
     RTCRay16 ray;
     for (int i = 0; i < kLanes; ++i) {  // vector code: no call, no branch
-      const glm::vec3 org = shadow_ray_origin(surfaces.get(i), packet.t[i]);
+      const Surface s = surfaces.get(i);
       if constexpr (Kind == LightType::directional) {  // no end: any surface blocks it
-        set_packet_ray(ray, i, org, towards);
+        set_packet_ray(ray, i, shadow_ray_origin(s, packet.t[i], towards), towards);
       } else {
+        const glm::vec3 org = shadow_ray_origin(s, packet.t[i], light.position - s.p);
         set_packet_ray(ray, i, org, light.position - org, kShadowRayEnd);
       }
     }

@@ -46,6 +46,7 @@ struct SurfaceLanes {
   alignas(64) float nx[kLanes], ny[kLanes], nz[kLanes];  // shading normal
   alignas(64) float gx[kLanes], gy[kLanes], gz[kLanes];  // geometric normal
   alignas(64) float vx[kLanes], vy[kLanes], vz[kLanes];  // to the eye
+  alignas(64) float lift[kLanes];                        // Surface::lift
 
   Surface get(int i) const {
     Surface s;
@@ -53,6 +54,7 @@ struct SurfaceLanes {
     s.n = {nx[i], ny[i], nz[i]};
     s.ng = {gx[i], gy[i], gz[i]};
     s.v = {vx[i], vy[i], vz[i]};
+    s.lift = lift[i];
     return s;
   }
   void set(int i, const Surface& s) {
@@ -60,6 +62,7 @@ struct SurfaceLanes {
     nx[i] = s.n.x, ny[i] = s.n.y, nz[i] = s.n.z;
     gx[i] = s.ng.x, gy[i] = s.ng.y, gz[i] = s.ng.z;
     vx[i] = s.v.x, vy[i] = s.v.y, vz[i] = s.v.z;
+    lift[i] = s.lift;
   }
 };
 

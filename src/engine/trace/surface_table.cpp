@@ -7,10 +7,12 @@
 namespace gloss {
 
 namespace {
-void push(SurfaceTable& t, const glm::vec3& a, const glm::vec3 (&n)[3]) {
+void push(SurfaceTable& t, const glm::vec3& a, const glm::vec3 (&n)[3],
+          const glm::vec3& planes = glm::vec3(0.0f)) {
   for (int c = 0; c < 3; ++c) t.a[static_cast<std::size_t>(c)].push_back(a[c]);
   for (int k = 0; k < 3; ++k) {
     for (int c = 0; c < 3; ++c) t.normals[static_cast<std::size_t>(3 * k + c)].push_back(n[k][c]);
+    t.planes[static_cast<std::size_t>(k)].push_back(planes[k]);
   }
 }
 }  // namespace
@@ -51,7 +53,12 @@ SurfaceTable make_surface_table(const Scene& scene) {
       const glm::uvec3& tri = mesh.triangles[k];
       if (mesh.smooth()) {
         const glm::vec3 n[3] = {mesh.normals[tri.x], mesh.normals[tri.y], mesh.normals[tri.z]};
-        push(t, faces[k], n);
+        glm::vec3 planes;  // in double, rounded once
+        for (int c = 0; c < 3; ++c) {
+          const glm::dvec3 corner(mesh.positions[tri[c]]);
+          planes[c] = static_cast<float>(glm::dot(corner, glm::dvec3(n[c])));
+        }
+        push(t, faces[k], n, planes);
       } else {
         push(t, faces[k], none);
       }

@@ -2,7 +2,8 @@
 // Per-primitive data that shading a hit needs, flattened over the scene into arrays so the
 // packet code (sample_packet.cpp) fetches a lane's with one index, not through object, mesh and
 // triangle indices: for a triangle its unit face normal and, on smooth meshes, its three vertex
-// normals; for a sphere its centre. Built with the Embree scene (embree_scene.h).
+// normals and their tangent planes (surface.h terminator_lift); for a sphere its centre. Built with
+// the Embree scene (embree_scene.h).
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -23,6 +24,7 @@ struct SurfaceTable {
   std::vector<std::int32_t> kind;             // PrimitiveKind of each object's primitives
   std::array<std::vector<float>, 3> a;        // sphere centre, or unit face normal (x, y, z)
   std::array<std::vector<float>, 9> normals;  // n0, n1, n2 of smooth triangles (x, y, z each)
+  std::array<std::vector<float>, 3> planes;   // dot(P_k, n_k) of smooth triangles' corners
 
   std::uint32_t record(std::int32_t object, std::uint32_t prim) const {
     const std::size_t k = static_cast<std::size_t>(object);

@@ -14,15 +14,33 @@ namespace gloss {
 
 namespace {
 
-// Per corner: position, shading normal, the triangle's geometric normal (9 floats). Corners are
-// not shared: each carries its triangle's n_g, which the two-sided rule and the shadow bias
-// need, and GL has no per-primitive attribute. A mesh with (u, v) also carries, per corner, the
-// maps' attributes of shaders/raster_mesh.vert: (u, v) of sets 0 and 1, the tangent and its
-// handedness, and its triangle's densities and dp/du, dp/dv, corner positions and corners' (u, v)
-// of both sets (37 floats more): the fragment shader finds the hit's barycentrics from its
-// pixel's ray, as the ray tracer does, rather than from the rasterizer's interpolation.
-constexpr int kFloatsPerVertex = 9;
-constexpr int kFloatsPerTexturedVertex = 46;
+// Per corner: position, shading normal, the triangle's geometric normal (9 floats), then the
+// shadow terminator's heights and weights (6; shaders/raster_mesh.vert). Corners are not shared:
+// each carries its triangle's n_g, which the two-sided rule and the shadow bias need, and GL has
+// no per-primitive attribute. A mesh with (u, v) also carries, per corner, the maps' attributes
+// of shaders/raster_mesh.vert: (u, v) of sets 0 and 1, the tangent and its handedness, and its
+// triangle's dp/du and dp/dv with the densities, corner positions and corners' (u, v) of both
+// sets (37 floats more): the fragment shader finds the hit's barycentrics from its pixel's ray,
+// as the ray tracer does, rather than from the rasterizer's interpolation.
+constexpr int kFloatsPerVertex = 15;
+constexpr int kFloatsPerTexturedVertex = 52;
+
+// Corner j's terminator attributes: dot(P_j - P_k, n_k) for each corner k (in double, rounded
+// once) and dot(n_j, n_g) in slot j (the barycentric weight one-hot). Zeros on flat triangles.
+void append_terminator_attributes(const Mesh& mesh, const glm::uvec3& tri, const glm::vec3& face,
+                                  int j, std::vector<float>& out) {
+  float heights[3] = {0.0f, 0.0f, 0.0f}, weights[3] = {0.0f, 0.0f, 0.0f};
+  if (mesh.smooth()) {
+    const glm::dvec3 corner(mesh.positions[tri[j]]);
+    for (int k = 0; k < 3; ++k) {
+      const glm::dvec3 n(mesh.normals[tri[k]]);
+      heights[k] = static_cast<float>(glm::dot(corner - glm::dvec3(mesh.positions[tri[k]]), n));
+    }
+    weights[j] = glm::dot(mesh.normals[tri[j]], face);
+  }
+  out.insert(out.end(), heights, heights + 3);
+  out.insert(out.end(), weights, weights + 3);
+}
 
 // The corner floats the maps add (shading/map_frame.h computes the same per hit).
 void append_map_attributes(const Mesh& mesh, const glm::uvec3& tri, int k,
@@ -41,9 +59,9 @@ void append_map_attributes(const Mesh& mesh, const glm::uvec3& tri, int k,
   if (mesh.tangents.size() == mesh.positions.size()) tangent = mesh.tangents[tri[k]];
   // The handedness of the triangle's first corner for all three, as the ray tracer takes it.
   if (mesh.tangents.size() == mesh.positions.size()) tangent.w = mesh.tangents[tri.x].w;
-  const float corner[16] = {uv0.x,     uv0.y,     uv1.x,      uv1.y,      tangent.x, tangent.y,
-                            tangent.z, tangent.w, density[0], density[1], dpdu.x,    dpdu.y,
-                            dpdu.z,    dpdv.x,    dpdv.y,     dpdv.z};
+  const float corner[16] = {uv0.x,     uv0.y,     uv1.x,  uv1.y,     tangent.x, tangent.y,
+                            tangent.z, tangent.w, dpdu.x, dpdu.y,    dpdu.z,    density[0],
+                            dpdv.x,    dpdv.y,    dpdv.z, density[1]};
   out.insert(out.end(), corner, corner + 16);
   for (const glm::vec3& q : p) out.insert(out.end(), {q.x, q.y, q.z});
   const std::vector<glm::vec2>&set0 = mesh.uv_set(0), &set1 = mesh.uv_set(1);
@@ -63,9 +81,9 @@ MeshBuffer upload(const Mesh& mesh) {
     const glm::vec3 face = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
     for (int k = 0; k < 3; ++k) {
       const glm::vec3 n = mesh.smooth() ? mesh.normals[tri[k]] : face;
-      const float corner[kFloatsPerVertex] = {p[k].x, p[k].y, p[k].z, n.x,   n.y,
-                                              n.z,    face.x, face.y, face.z};
-      data.insert(data.end(), corner, corner + kFloatsPerVertex);
+      const float corner[9] = {p[k].x, p[k].y, p[k].z, n.x, n.y, n.z, face.x, face.y, face.z};
+      data.insert(data.end(), corner, corner + 9);
+      append_terminator_attributes(mesh, tri, face, k, data);
       if (textured) append_map_attributes(mesh, tri, k, data);
     }
   }
@@ -79,21 +97,17 @@ MeshBuffer upload(const Mesh& mesh) {
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(),
                GL_STATIC_DRAW);
   const GLsizei stride = floats * sizeof(float);
-  for (GLuint a = 0; a < 3; ++a) {
-    glVertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, stride,
-                          reinterpret_cast<const void*>(a * 3 * sizeof(float)));
+  // Locations 0..4: position, normal, face normal, terminator heights and weights (vec3 each);
+  // with maps 5..15: uv0, uv1, tangent, dpdu and density 0, dpdv and density 1, p0, p1, p2, and
+  // the corners' (u, v) as three vec4. 16 in all: what GL 3.3 promises (GL_MAX_VERTEX_ATTRIBS).
+  const GLint sizes[16] = {3, 3, 3, 3, 3, 2, 2, 4, 4, 4, 3, 3, 3, 4, 4, 4};
+  const GLuint count = textured ? 16 : 5;
+  std::size_t offset = 0;
+  for (GLuint a = 0; a < count; ++a) {
+    glVertexAttribPointer(a, sizes[a], GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<const void*>(offset * sizeof(float)));
     glEnableVertexAttribArray(a);
-  }
-  if (textured) {  // locations 3..14: uv0, uv1, tangent, density, dpdu, dpdv, p0, p1, p2, and
-                   // the corners' (u, v) as three vec4
-    const GLint sizes[12] = {2, 2, 4, 2, 3, 3, 3, 3, 3, 4, 4, 4};
-    std::size_t offset = kFloatsPerVertex;
-    for (GLuint a = 0; a < 12; ++a) {
-      glVertexAttribPointer(3 + a, sizes[a], GL_FLOAT, GL_FALSE, stride,
-                            reinterpret_cast<const void*>(offset * sizeof(float)));
-      glEnableVertexAttribArray(3 + a);
-      offset += static_cast<std::size_t>(sizes[a]);
-    }
+    offset += static_cast<std::size_t>(sizes[a]);
   }
   glBindVertexArray(0);
   return b;
