@@ -89,6 +89,11 @@ TEST(ObjectFields, RefusalsNameTheField) {
       "material": "m", "transform": {"scale": [1, 0, 1]}})"))
                 .find("objects[0].transform.scale: must not be 0 on any axis"),
             std::string::npos);
+  // A sphere scaled by 0: the scale the user typed is named, not the placed radius (0).
+  EXPECT_NE(error_of(scene_with(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1,
+      "material": "m", "transform": {"scale": 0}})"))
+                .find("objects[0].transform.scale: must not be 0 on any axis"),
+            std::string::npos);
   EXPECT_NE(error_of(scene_with(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1,
       "material": "m", "transform": {"scale": [1, 2, 1]}})"))
                 .find("objects[0].transform.scale: a sphere takes a uniform scale only"),

@@ -94,18 +94,25 @@ void check_light(const std::string& file, const std::string& field, const Light&
   }
 }
 
-// The transform's fields, its scale's rules, and the placed geometry within the coordinate
-// limit (the object's own fields were checked as they were read).
+// The scale's rules, checked before the placed geometry: a sphere scaled by 0 has a placed radius
+// of 0, and the user typed the scale, not the radius.
+void check_scale(const std::string& file, const std::string& field, const Object& object) {
+  const glm::vec3& scale = object.transform.scale;
+  const std::string path = field + ".transform.scale";
+  for (int axis = 0; axis < 3; ++axis) {
+    if (scale[axis] == 0.0f) fail_field(file, path, "must not be 0 on any axis");
+  }
+  if (object.type == ObjectType::sphere && !(scale.x == scale.y && scale.y == scale.z)) {
+    fail_field(file, path, "a sphere takes a uniform scale only (one number)");
+  }
+}
+
+// The transform's fields and the placed geometry within the coordinate limit (the object's own
+// fields were checked as they were read).
 void check_transform(const std::string& file, const std::string& field, const Object& object) {
   const ObjectTransform& t = object.transform;
   const std::string path = field + ".transform";
   check_fields(file, path, transform_fields(), t);
-  for (int axis = 0; axis < 3; ++axis) {
-    if (t.scale[axis] == 0.0f) fail_field(file, path + ".scale", "must not be 0 on any axis");
-  }
-  if (object.type == ObjectType::sphere && !(t.scale.x == t.scale.y && t.scale.y == t.scale.z)) {
-    fail_field(file, path + ".scale", "a sphere takes a uniform scale only (one number)");
-  }
   if (object.type == ObjectType::sphere || !object.mesh || object.mesh == object.shape) return;
   glm::vec3 lo, hi;
   if (!mesh_bounds(*object.mesh, lo, hi)) return;
@@ -127,6 +134,7 @@ void check_object(const Scene& scene, std::size_t index) {
     fail_field(file, field + ".material",
                "material index " + std::to_string(object.material) + " is out of range");
   }
+  check_scale(file, field, object);
   if (object.type == ObjectType::sphere) {
     for (int axis = 0; axis < 3; ++axis) {
       if (!(std::fabs(object.center[axis]) <= kMaxCoordinate)) {
