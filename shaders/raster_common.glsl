@@ -148,6 +148,9 @@ int gloss_cube_face(vec3 d, out vec2 right_up, out float major) {
 #define GLOSS_SHADOW_PERSPECTIVE 1
 #define GLOSS_SHADOW_ORTHOGRAPHIC 2
 
+// A mesh fragment's terminator lift (raster_mesh.frag sets it; 0 elsewhere), world units.
+float gloss_surface_lift = 0.0;
+
 #if GLOSS_SHADOWS && GLOSS_LIGHT_COUNT > 0
 // The layers of light i's maps (shadow_maps.h): six cube faces from gloss_shadow_layout[i].x
 // for a point light and a spot wider than 60 degrees, or one map: a spot's square frustum along
@@ -169,9 +172,6 @@ uniform vec2 gloss_shadow_scale[GLOSS_LIGHT_COUNT];
 // p's direction, plus the bias. A texel spans `texel` world units across at p; a surface at
 // angle theta to the light changes depth by tan(theta) of that across it, so the bias grows
 // with the slope (capped at 10: at grazing light the diffuse term is near 0 anyway).
-// A mesh fragment's terminator lift (raster_mesh.frag sets it; 0 elsewhere), world units.
-float gloss_surface_lift = 0.0;
-
 float gloss_visibility(int light, vec3 p, vec3 n_g) {
   ivec2 layout_i = gloss_shadow_layout[light];
   // As the ray tracer's shadow ray (src/shading/surface.h shadow_ray_origin): looked up from the
@@ -256,7 +256,6 @@ float gloss_visibility(int light, vec3 p, vec3 n_g) {
   return dist <= stored + bias ? 1.0 : 0.0;
 }
 #else
-float gloss_surface_lift = 0.0;  // unused without shadow maps
 float gloss_visibility(int light, vec3 p, vec3 n_g) {
   return 1.0;
 }

@@ -76,10 +76,12 @@ void gloss_cut_out() {}
 in vec3 gloss_terminator_heights, gloss_terminator_weights;  // raster_mesh.vert
 // The smooth surface's height over the triangle here (src/shading/surface.h terminator_lift):
 // sum_k b_k max(0, -side dot(p - P_k, n_k)) dot(n_k, n_g), which gloss_visibility takes in
-// part or whole (raster_common.glsl, gloss_surface_lift). side: -1 where n_g was turned.
-void gloss_set_terminator_lift(float side) {
+// part or whole (raster_common.glsl, gloss_surface_lift). side: -1 where n_g was turned;
+// has_normal: false where the corner normals cancel (the ray tracer then shades and shadows from the
+// face: surface.h), known per pixel only (per vertex takes true).
+void gloss_set_terminator_lift(float side, bool has_normal) {
   vec3 below = max(vec3(0.0), -side * gloss_terminator_heights);
-  gloss_surface_lift = max(0.0, dot(below, gloss_terminator_weights));
+  gloss_surface_lift = has_normal ? max(0.0, dot(below, gloss_terminator_weights)) : 0.0;
 }
 #endif
 
@@ -115,7 +117,7 @@ void main() {
     n_g = -n_g;
     side = -1.0;
   }
-  gloss_set_terminator_lift(side);
+  gloss_set_terminator_lift(side, true);
   vec3 ka = gloss_ka, kd = gloss_kd, ks = gloss_ks, ke = gloss_ke;
 #if GLOSS_MAPS
   // The colour maps per fragment; the weights (and so the exponent and the normal) are the
@@ -157,7 +159,8 @@ flat in vec3 gloss_face_normal;
 void main() {
   gloss_cut_out();
   gloss_set_terminator_lift(
-      dot(gloss_face_normal, gloss_view_origin - gloss_position) < 0.0 ? -1.0 : 1.0);
+      dot(gloss_face_normal, gloss_view_origin - gloss_position) < 0.0 ? -1.0 : 1.0,
+      length(gloss_normal) > 1e-6);
   // The interpolated normal renormalised, as the ray tracer does with the barycentric blend of
   // the corner normals at its hit.
 #if GLOSS_MAPS

@@ -6,14 +6,11 @@
 // move, the reference in both precisions. Without the lift (measured with it taken out of
 // shadow_ray_origin), 278 of the 1608 lit pixels of 12 x 6 faces at 128 x 128 lost more than 0.02
 // of their diffuse (kd 0.5) on each path.
-#include <cmath>
 #include <functional>
-#include <memory>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <glm/geometric.hpp>
 
 #include "engine/progressive_renderer.h"
 #include "engine/renderer.h"
@@ -44,55 +41,8 @@ std::vector<std::pair<std::string, Renderer>> renderers() {
           {"reference double", [](const Scene& s) { return render_reference<double>(s); }}};
 }
 
-// A unit UV sphere of `segments` around and `rings` from pole to pole, unit radial normals.
-Mesh uv_sphere(int segments, int rings) {
-  const double pi = 3.14159265358979323846;
-  Mesh m;
-  for (int r = 0; r <= rings; ++r) {
-    for (int s = 0; s <= segments; ++s) {
-      const double theta = pi * r / rings, phi = 2 * pi * s / segments;
-      const glm::vec3 p(static_cast<float>(std::sin(theta) * std::cos(phi)),
-                        static_cast<float>(std::cos(theta)),
-                        static_cast<float>(std::sin(theta) * std::sin(phi)));
-      m.positions.push_back(p);
-      m.normals.push_back(glm::normalize(p));
-    }
-  }
-  const auto at = [&](int r, int s) { return static_cast<unsigned>(r * (segments + 1) + s); };
-  for (int r = 0; r < rings; ++r) {
-    for (int s = 0; s < segments; ++s) {
-      // Outward winding; the pole rows' zero-area triangles left out.
-      if (r > 0) m.triangles.push_back({at(r, s), at(r, s + 1), at(r + 1, s)});
-      if (r < rings - 1) m.triangles.push_back({at(r, s + 1), at(r + 1, s + 1), at(r + 1, s)});
-    }
-  }
-  return m;
-}
-
-Scene faceted_sphere_scene() {
-  Scene scene;
-  scene.camera.eye = {0, 0.4f, 3.2f};
-  scene.camera.target = {0, 0, 0};
-  scene.camera.up = {0, 1, 0};
-  scene.camera.fov_y = 45;
-  scene.ambient = glm::vec3(0.0f);
-  test::add_material(
-      scene, "grey",
-      test::make_material(glm::vec3(0.0f), glm::vec3(0.5f), glm::vec3(0.0f), glm::vec3(0.0f), 1));
-  // From the right and a little behind: the terminator crosses the visible side.
-  scene.lights.push_back(test::make_light({30, 6, -12}));
-  Object o;
-  o.name = "faceted";
-  o.type = ObjectType::mesh;
-  o.shape = o.mesh = std::make_shared<const Mesh>(uv_sphere(12, 6));
-  scene.objects.push_back(o);
-  scene.render.width = 128;
-  scene.render.height = 128;
-  return scene;
-}
-
 TEST(ShadowTerminator, AConvexSmoothMeshIsItsUnshadowedSelfOnEveryPath) {
-  Scene shadowed = faceted_sphere_scene();
+  Scene shadowed = test::faceted_sphere_scene();
   shadowed.render.shadows = true;
   Scene open = shadowed;
   open.render.shadows = false;

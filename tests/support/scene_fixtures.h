@@ -1,6 +1,9 @@
 #pragma once
 // Small scenes built in code for the renderer's tests (no loader involved).
+#include <cmath>
 #include <memory>
+
+#include <glm/geometric.hpp>
 
 #include "scene/geometry/shapes.h"
 #include "scene/scene.h"
@@ -116,6 +119,57 @@ inline Scene shadowing_sphere_scene() {
   scene.render.width = 33;
   scene.render.height = 33;
   scene.render.spp = 1;
+  return scene;
+}
+
+// A unit UV sphere of `segments` around and `rings` from pole to pole, unit radial normals.
+inline Mesh uv_sphere(int segments, int rings) {
+  const double pi = 3.14159265358979323846;
+  Mesh m;
+  for (int r = 0; r <= rings; ++r) {
+    for (int s = 0; s <= segments; ++s) {
+      const double theta = pi * r / rings, phi = 2 * pi * s / segments;
+      const glm::vec3 p(static_cast<float>(std::sin(theta) * std::cos(phi)),
+                        static_cast<float>(std::cos(theta)),
+                        static_cast<float>(std::sin(theta) * std::sin(phi)));
+      m.positions.push_back(p);
+      m.normals.push_back(glm::normalize(p));
+    }
+  }
+  const auto at = [&](int r, int s) { return static_cast<unsigned>(r * (segments + 1) + s); };
+  for (int r = 0; r < rings; ++r) {
+    for (int s = 0; s < segments; ++s) {
+      // Outward winding; the pole rows' zero-area triangles left out.
+      if (r > 0) m.triangles.push_back({at(r, s), at(r, s + 1), at(r + 1, s)});
+      if (r < rings - 1) m.triangles.push_back({at(r, s + 1), at(r + 1, s + 1), at(r + 1, s)});
+    }
+  }
+  return m;
+}
+
+// A coarse smooth mesh, a unit UV sphere of 12 x 6 faces with radial normals, lit from the right
+// and a little behind (its terminator crosses the visible side), kd 0.5 matte, 128 x 128, shadows
+// on: the shadow terminator's scene (tests/reference/test_shadow_terminator.cpp, raster too).
+inline Scene faceted_sphere_scene() {
+  Scene scene;
+  scene.camera.eye = {0, 0.4f, 3.2f};
+  scene.camera.target = {0, 0, 0};
+  scene.camera.up = {0, 1, 0};
+  scene.camera.fov_y = 45;
+  scene.ambient = glm::vec3(0.0f);
+  add_material(
+      scene, "grey",
+      make_material(glm::vec3(0.0f), glm::vec3(0.5f), glm::vec3(0.0f), glm::vec3(0.0f), 1));
+  // From the right and a little behind: the terminator crosses the visible side.
+  scene.lights.push_back(make_light({30, 6, -12}));
+  Object o;
+  o.name = "faceted";
+  o.type = ObjectType::mesh;
+  o.shape = o.mesh = std::make_shared<const Mesh>(uv_sphere(12, 6));
+  scene.objects.push_back(o);
+  scene.render.width = 128;
+  scene.render.height = 128;
+  scene.render.shadows = true;
   return scene;
 }
 
