@@ -47,10 +47,10 @@ struct LaneKinds {
 // lies above it, p' = p - sum_k b_k min(0, dot(p - P_k, n_k)) n_k, a smooth surface through the
 // corners. This returns how far p' lies above the triangle along ng, the flat triangle's normal
 // on the viewer's side (side: -1 where the two-sided rule turned it); a shadow ray starts that
-// much further along ng where it needs to (shadow_ray_origin). A concave side
-// has every plane below p and gets 0. planes[k] = dot(P_k, n_k), so dot(p - P_k, n_k) is
-// dot(p, n_k) - planes[k]: float's error there is a few ulp of |p|, below the offset's own 4e-6.
-// Written with selects (vector code in sample_packet.cpp).
+// much further along ng where it needs to (shadow_ray_origin). Seen from a concave side every
+// corner's plane lies below p: 0. planes[k] = dot(P_k, n_k), so dot(p - P_k, n_k) is
+// dot(p, n_k) - planes[k]: float's error there is a few ulp of |p|, far below the offset's own
+// 4e-6 |p|. Written with selects (vector code in sample_packet.cpp).
 template <class T>
 inline T terminator_lift(const glm::tvec3<T>& p, const glm::tvec3<T>& ng, const T (&b)[3],
                          const glm::tvec3<T>& n0, const glm::tvec3<T>& n1, const glm::tvec3<T>& n2,
